@@ -1,0 +1,27 @@
+#include "geom/arc_length.hpp"
+
+#include <cmath>
+
+#include <boost/math/quadrature/gauss_kronrod.hpp>
+
+#include "geom/curvature.hpp"
+
+namespace gf {
+
+ArcLength arc_length(const Segment& s, double t0, double t1, double relative_tolerance) {
+  if (is_line(s)) {
+    const double length = distance(point_at(s, t0), point_at(s, t1));
+    return {length, 0.0, true};
+  }
+  const auto speed = [&s](double t) { return norm(derivatives_at(s, t).d1); };
+  double error = 0.0;
+  // A cusp makes |C'| non-smooth; the adaptive rule subdivides around it.
+  const double length = boost::math::quadrature::gauss_kronrod<double, 15>::integrate(
+      speed, t0, t1, 20, relative_tolerance, &error);
+  // The chord bounds the length from below, so it is a fair scale for the error.
+  const double scale = std::max(length, distance(point_at(s, t0), point_at(s, t1)));
+  const bool converged = std::isfinite(length) && error <= relative_tolerance * scale * 10.0 + 1e-300;
+  return {std::isfinite(length) ? length : 0.0, std::isfinite(error) ? error : 0.0, converged};
+}
+
+}  // namespace gf

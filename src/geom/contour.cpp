@@ -1,0 +1,42 @@
+#include "geom/contour.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace gf {
+
+namespace {
+
+// Green's theorem: A = 1/2 ∮ (x dy - y dx), integrated exactly on the power basis.
+double area_contribution(const Segment& s) {
+  const PolynomialCurve c = polynomial_of(s);
+  const PolynomialCurve d = c.derivative();
+  const Polynomial integrand = c.x * d.y - c.y * d.x;
+  double integral = 0.0;
+  for (int i = 0; i <= integrand.degree(); ++i) integral += integrand.coefficient(i) / (i + 1);
+  return 0.5 * integral;
+}
+
+}  // namespace
+
+double signed_area(const Contour& c) {
+  double area = 0.0;
+  for (const Segment& s : c.segments) area += area_contribution(s);
+  return area;
+}
+
+double extent(const Contour& c) {
+  double lo_x = std::numeric_limits<double>::infinity(), lo_y = lo_x;
+  double hi_x = -lo_x, hi_y = -lo_x;
+  for (const Segment& s : c.segments)
+    for_each_point(s, [&](Vec2 p) {
+      lo_x = std::min(lo_x, p.x);
+      lo_y = std::min(lo_y, p.y);
+      hi_x = std::max(hi_x, p.x);
+      hi_y = std::max(hi_y, p.y);
+    });
+  return c.segments.empty() ? 0.0 : std::max(hi_x - lo_x, hi_y - lo_y);
+}
+
+}  // namespace gf

@@ -1,0 +1,69 @@
+// The outline model: contours of segments between on-curve nodes, glyphs and font metrics.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "geom/segment.hpp"
+
+namespace gf {
+
+/// What the source said about an on-curve node, kept so writers reproduce it.
+struct NodeFlags {
+  /// A TrueType on-curve point implied between two off-curve points (not stored in the source).
+  bool implied = false;
+  /// The source's smooth flag (UFO `smooth="yes"`); nullopt when the source has none.
+  std::optional<bool> smooth;
+};
+
+/// A closed or open sequence of segments. Segment i starts at node i. A closed contour has as
+/// many nodes as segments (the last segment ends at node 0); an open one has one node more.
+struct Contour {
+  std::vector<Segment> segments;
+  std::vector<NodeFlags> nodes;
+  bool closed = true;
+
+  std::size_t node_count() const { return nodes.size(); }
+  Vec2 node_point(std::size_t i) const {
+    return i < segments.size() ? start_point(segments[i]) : end_point(segments.back());
+  }
+};
+
+/// The signed area enclosed by a closed contour (exact for Bézier segments);
+/// positive for counter-clockwise contours.
+double signed_area(const Contour& c);
+
+/// The larger side of the bounding box of all points: a scale for relative tolerances.
+double extent(const Contour& c);
+
+struct Outline {
+  std::vector<Contour> contours;
+};
+
+struct Glyph {
+  std::string name;
+  std::vector<char32_t> unicodes;
+  double advance_width = 0.0;
+  Outline outline;
+};
+
+/// Font-wide facts the writers and proofs need.
+struct FontInfo {
+  std::string source_path;
+  std::string family_name;
+  std::string style_name;
+  double units_per_em = 1000.0;
+  double ascender = 800.0;
+  double descender = -200.0;
+  std::optional<double> x_height;
+  std::optional<double> cap_height;
+};
+
+struct GlyphSet {
+  FontInfo font;
+  std::vector<Glyph> glyphs;
+};
+
+}  // namespace gf

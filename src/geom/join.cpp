@@ -1,0 +1,61 @@
+#include "geom/join.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "geom/curvature.hpp"
+
+namespace gf {
+
+namespace {
+
+Join join_between(const Segment& in, const Segment& out, std::size_t node, const NodeFlags& flags,
+                  const JoinThresholds& thresholds) {
+  Join j;
+  j.node = node;
+  j.point = start_point(out);
+  const EndCurvature kin = end_curvature(in, SegmentEnd::end);
+  const EndCurvature kout = end_curvature(out, SegmentEnd::start);
+  j.curvature_in = kin.curvature;
+  j.curvature_out = kout.curvature;
+  j.curvature_derivative_in = kin.curvature_derivative;
+  j.curvature_derivative_out = kout.curvature_derivative;
+  const std::optional<Vec2> tin = end_tangent(in, SegmentEnd::end);
+  const std::optional<Vec2> tout = end_tangent(out, SegmentEnd::start);
+  if (!tin || !tout) {
+    j.kind = JoinKind::degenerate;
+    return j;
+  }
+  j.angle_deg = turning_angle(*tin, *tout) * 180.0 / std::numbers::pi;
+  const double a = std::abs(j.angle_deg);
+  if (a <= thresholds.smooth_max_deg) j.kind = JoinKind::smooth;
+  else if (a < thresholds.kink_max_deg || flags.smooth.value_or(false)) j.kind = JoinKind::kink;
+  else j.kind = JoinKind::corner;
+  return j;
+}
+
+}  // namespace
+
+std::vector<Join> joins_of(const Contour& c, const JoinThresholds& thresholds) {
+  std::vector<Join> joins;
+  const std::size_t n = c.segments.size();
+  if (n == 0) return joins;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (i == 0 && !c.closed) continue;
+    const Segment& in = c.segments[(i + n - 1) % n];
+    joins.push_back(join_between(in, c.segments[i], i, c.nodes[i], thresholds));
+  }
+  return joins;
+}
+
+const char* to_string(JoinKind kind) {
+  switch (kind) {
+    case JoinKind::smooth: return "smooth";
+    case JoinKind::kink: return "kink";
+    case JoinKind::corner: return "corner";
+    case JoinKind::degenerate: return "degenerate";
+  }
+  return "corner";
+}
+
+}  // namespace gf

@@ -1,0 +1,40 @@
+// How a contour's segments meet at its on-curve nodes: tangent angle, curvature and dκ/ds on
+// both sides, and the kind of join that makes.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+#include "geom/contour.hpp"
+
+namespace gf {
+
+enum class JoinKind {
+  smooth,      ///< tangents agree (G1) to within JoinThresholds::smooth_max_deg
+  kink,        ///< meant smooth but broken: a small angle, or flagged smooth by the source
+  corner,      ///< a real corner
+  degenerate,  ///< a neighbouring segment has no direction (all its points coincide)
+};
+
+struct JoinThresholds {
+  double smooth_max_deg = 0.05;
+  double kink_max_deg = 3.0;
+};
+
+struct Join {
+  std::size_t node = 0;  ///< index of the node in its contour
+  Vec2 point;
+  JoinKind kind = JoinKind::corner;
+  /// Signed turning from the incoming to the outgoing tangent, degrees in (-180, 180].
+  double angle_deg = 0.0;
+  std::optional<double> curvature_in, curvature_out;
+  std::optional<double> curvature_derivative_in, curvature_derivative_out;
+};
+
+/// The joins of a contour: every node of a closed one, the interior nodes of an open one.
+std::vector<Join> joins_of(const Contour& c, const JoinThresholds& thresholds = {});
+
+const char* to_string(JoinKind kind);
+
+}  // namespace gf

@@ -1,0 +1,41 @@
+// One piece of a contour between two on-curve nodes: a line, a quadratic or a cubic Bézier.
+#pragma once
+
+#include <variant>
+
+#include "geom/bezier.hpp"
+
+namespace gf {
+
+using Segment = std::variant<Line, Quad, Cubic>;
+
+inline Vec2 start_point(const Segment& s) {
+  return std::visit([](const auto& b) { return b.start(); }, s);
+}
+inline Vec2 end_point(const Segment& s) {
+  return std::visit([](const auto& b) { return b.end(); }, s);
+}
+inline Vec2 point_at(const Segment& s, double t) {
+  return std::visit([t](const auto& b) { return b.point_at(t); }, s);
+}
+inline int degree_of(const Segment& s) {
+  return std::visit([](const auto& b) { return b.degree; }, s);
+}
+inline bool is_line(const Segment& s) { return std::holds_alternative<Line>(s); }
+inline PolynomialCurve polynomial_of(const Segment& s) {
+  return std::visit([](const auto& b) { return b.polynomial(); }, s);
+}
+/// All points of the segment, on- and off-curve, in order.
+template <typename F>
+void for_each_point(const Segment& s, F&& f) {
+  std::visit([&](const auto& b) { for (const Vec2& q : b.p) f(q); }, s);
+}
+/// True when every point of the segment coincides: it has no direction.
+inline bool is_degenerate(const Segment& s) {
+  const Vec2 a = start_point(s);
+  bool all_same = true;
+  for_each_point(s, [&](Vec2 q) { all_same = all_same && q == a; });
+  return all_same;
+}
+
+}  // namespace gf

@@ -1,0 +1,33 @@
+// A point or vector in the plane, in font units (y up).
+#pragma once
+
+#include <cmath>
+
+namespace gf {
+
+struct Vec2 {
+  double x = 0.0;
+  double y = 0.0;
+
+  friend constexpr Vec2 operator+(Vec2 a, Vec2 b) { return {a.x + b.x, a.y + b.y}; }
+  friend constexpr Vec2 operator-(Vec2 a, Vec2 b) { return {a.x - b.x, a.y - b.y}; }
+  friend constexpr Vec2 operator-(Vec2 a) { return {-a.x, -a.y}; }
+  friend constexpr Vec2 operator*(Vec2 a, double s) { return {a.x * s, a.y * s}; }
+  friend constexpr Vec2 operator*(double s, Vec2 a) { return {a.x * s, a.y * s}; }
+  friend constexpr Vec2 operator/(Vec2 a, double s) { return {a.x / s, a.y / s}; }
+  friend constexpr bool operator==(Vec2 a, Vec2 b) = default;
+  constexpr Vec2& operator+=(Vec2 b) { x += b.x; y += b.y; return *this; }
+  constexpr Vec2& operator-=(Vec2 b) { x -= b.x; y -= b.y; return *this; }
+};
+
+constexpr double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
+/// z-component of the 3-D cross product: positive when b turns left of a.
+constexpr double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
+constexpr Vec2 lerp(Vec2 a, Vec2 b, double t) { return a + (b - a) * t; }
+constexpr Vec2 perpendicular(Vec2 a) { return {-a.y, a.x}; }
+inline double norm(Vec2 a) { return std::hypot(a.x, a.y); }
+inline double distance(Vec2 a, Vec2 b) { return norm(a - b); }
+/// Signed angle in (-pi, pi] that turns direction a into direction b (left positive).
+inline double turning_angle(Vec2 a, Vec2 b) { return std::atan2(cross(a, b), dot(a, b)); }
+
+}  // namespace gf

@@ -1,0 +1,46 @@
+#include "io/variation_location.hpp"
+
+#include <charconv>
+#include <cmath>
+
+#include "io/input_error.hpp"
+
+namespace gf {
+
+std::vector<AxisValue> parse_variation_location(std::string_view spec) {
+  std::vector<AxisValue> location;
+  std::size_t i = 0;
+  while (i <= spec.size()) {
+    std::size_t j = spec.find(',', i);
+    if (j == std::string_view::npos) j = spec.size();
+    std::string_view entry = spec.substr(i, j - i);
+    while (!entry.empty() && entry.front() == ' ') entry.remove_prefix(1);
+    while (!entry.empty() && entry.back() == ' ') entry.remove_suffix(1);
+    i = j + 1;
+    if (entry.empty()) {
+      if (j == spec.size()) break;
+      throw InputError("--location: empty entry in '" + std::string(spec) + "'");
+    }
+    const std::size_t eq = entry.find('=');
+    const std::string where = "--location: '" + std::string(entry) + "' ";
+    if (eq == std::string_view::npos) throw InputError(where + "is not of the form TAG=VALUE");
+    const std::string_view tag = entry.substr(0, eq);
+    if (tag.empty() || tag.size() > 4) throw InputError(where + "has an axis tag that is not 1-4 characters");
+    for (const char ch : tag)
+      if (ch < 0x20 || ch > 0x7E) throw InputError(where + "has an axis tag with a non-ASCII character");
+    const std::string_view number = entry.substr(eq + 1);
+    double value = 0.0;
+    const auto [end, ec] = std::from_chars(number.data(), number.data() + number.size(), value);
+    if (ec != std::errc() || end != number.data() + number.size() || number.empty() || !std::isfinite(value))
+      throw InputError(where + "has a value that is not a number");
+    std::string padded(tag);
+    padded.resize(4, ' ');
+    for (const AxisValue& a : location)
+      if (a.tag == padded) throw InputError(where + "sets axis '" + std::string(tag) + "' twice");
+    location.push_back({padded, value});
+  }
+  if (location.empty()) throw InputError("--location: no axis values given");
+  return location;
+}
+
+}  // namespace gf

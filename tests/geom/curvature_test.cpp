@@ -1,0 +1,56 @@
+#include "geom/curvature.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace gf {
+namespace {
+
+// y = x² on x ∈ [0, 1] as a quadratic Bézier: κ = 2 / (1 + 4x²)^(3/2),
+// dκ/ds = dκ/dx / sqrt(1 + 4x²) = −24x / (1 + 4x²)^3.
+TEST(Curvature, ParabolaMatchesClosedForm) {
+  const Quad parabola{{{0, 0}, {0.5, 0}, {1, 1}}};
+  for (const double t : {0.0, 0.1, 0.5, 0.77, 1.0}) {
+    const Derivatives d = derivatives_at(parabola, t);
+    const double x = d.point.x;
+    ASSERT_NEAR(d.point.y, x * x, 1e-15);
+    EXPECT_NEAR(*curvature(d), 2.0 / std::pow(1 + 4 * x * x, 1.5), 1e-14);
+    EXPECT_NEAR(*curvature_derivative(d), -24.0 * x / std::pow(1 + 4 * x * x, 3.0), 1e-13);
+  }
+}
+
+TEST(Curvature, SignFollowsTheTurn) {
+  const Quad left{{{0, 0}, {1, 0}, {1, 1}}};
+  const Quad right{{{0, 0}, {1, 0}, {1, -1}}};
+  EXPECT_GT(*curvature(derivatives_at(left, 0.5)), 0.0);
+  EXPECT_LT(*curvature(derivatives_at(right, 0.5)), 0.0);
+}
+
+TEST(Curvature, CubicDerivativeOfCurvatureMatchesFiniteDifferenceInArcLength) {
+  const Cubic c{{{0, 0}, {30, 80}, {120, 90}, {160, 10}}};
+  const double t = 0.4, h = 1e-6;
+  const Derivatives a = derivatives_at(c, t - h), b = derivatives_at(c, t + h), m = derivatives_at(c, t);
+  const double ds = norm(m.d1) * 2 * h;
+  EXPECT_NEAR(*curvature_derivative(m), (*curvature(b) - *curvature(a)) / ds, 1e-9);
+}
+
+TEST(Curvature, RetractedHandleEndIsUnboundedUnlessStraight) {
+  const Cubic bent{{{0, 0}, {0, 0}, {1, 1}, {2, 0}}};
+  EXPECT_FALSE(end_curvature(bent, SegmentEnd::start).curvature.has_value());
+  EXPECT_TRUE(end_curvature(bent, SegmentEnd::end).curvature.has_value());
+  const Cubic straight{{{0, 0}, {0, 0}, {1, 1}, {1, 1}}};
+  EXPECT_EQ(end_curvature(straight, SegmentEnd::start).curvature, 0.0);
+  // The tangent of a retracted handle comes from the next distinct control point.
+  const auto t = end_tangent(bent, SegmentEnd::start);
+  ASSERT_TRUE(t);
+  EXPECT_NEAR(t->x, std::sqrt(0.5), 1e-15);
+  EXPECT_NEAR(t->y, std::sqrt(0.5), 1e-15);
+}
+
+TEST(Curvature, DegenerateSegmentHasNoTangent) {
+  EXPECT_FALSE(end_tangent(Line{{{3, 3}, {3, 3}}}, SegmentEnd::start).has_value());
+}
+
+}  // namespace
+}  // namespace gf

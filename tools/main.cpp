@@ -1,0 +1,37 @@
+// glyphfair: the command. Parses the subcommand, runs it, and turns every failure into one
+// line on stderr and an exit code (exit_codes.hpp).
+#include <iostream>
+
+#include "commands.hpp"
+#include "exit_codes.hpp"
+#include "io/input_error.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"glyphfair: fair glyph outlines with log-aesthetic curves, check them, and proof them"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "glyphfair 0.1.0");
+  gf::ConvertCommand convert;
+  gf::ProofCommand proof;
+  convert.add_to(app);
+  proof.add_to(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? gf::exit_code::ok : gf::exit_code::bad_input;
+  }
+  try {
+    if (convert.chosen()) return convert.run();
+    if (proof.chosen()) return proof.run();
+    return gf::exit_code::bad_input;
+  } catch (const gf::InputError& e) {
+    std::cerr << "glyphfair: error: " << e.what() << "\n";
+    return gf::exit_code::bad_input;
+  } catch (const gf::OutputError& e) {
+    std::cerr << "glyphfair: error: " << e.what() << "\n";
+    return gf::exit_code::cannot_write;
+  } catch (const std::exception& e) {
+    std::cerr << "glyphfair: internal error: " << e.what() << "\n";
+    return gf::exit_code::internal_error;
+  }
+}
