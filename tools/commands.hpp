@@ -7,31 +7,33 @@
 
 namespace gf {
 
-class ConvertCommand {
+/// What every subcommand has: a source, a selection and an output.
+class Subcommand {
  public:
-  void add_to(CLI::App& app);
   bool chosen() const { return command_ && command_->parsed(); }
-  int run() const;
 
- private:
+ protected:
+  CLI::App& add(CLI::App& app, const char* name, const char* description, const char* output_help);
+
   CLI::App* command_ = nullptr;
   std::string source_;
   std::string output_;
   SourceArguments selection_;
 };
 
-class ProofCommand {
+class ConvertCommand : public Subcommand {
  public:
   void add_to(CLI::App& app);
-  bool chosen() const { return command_ && command_->parsed(); }
+  int run() const;
+};
+
+class ProofCommand : public Subcommand {
+ public:
+  void add_to(CLI::App& app);
   int run() const;
 
  private:
-  CLI::App* command_ = nullptr;
-  std::string source_;
   std::string compare_;
-  std::string output_;
-  SourceArguments selection_;
 };
 
 }  // namespace gf

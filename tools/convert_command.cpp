@@ -14,10 +14,8 @@ namespace fs = std::filesystem;
 namespace gf {
 
 void ConvertCommand::add_to(CLI::App& app) {
-  command_ = app.add_subcommand("convert", "Write glyphs to UFO 3, SVG or JSON (with analysis) without changing a coordinate");
-  command_->add_option("SRC", source_, "Font (TTF/OTF, static or variable), UFO or SVG")->required();
-  command_->add_option("-o,--output", output_, "OUT.ufo, OUT.svg or OUT.json")->required();
-  selection_.add_to(*command_);
+  add(app, "convert", "Write glyphs to UFO 3, SVG or JSON (with analysis) without changing a coordinate",
+      "OUT.ufo, OUT.svg or OUT.json");
 }
 
 int ConvertCommand::run() const {

@@ -12,11 +12,9 @@ namespace fs = std::filesystem;
 namespace gf {
 
 void ProofCommand::add_to(CLI::App& app) {
-  command_ = app.add_subcommand("proof", "Draw proofs: outlines, points, curvature combs, marks and κ(s) plots");
-  command_->add_option("SRC", source_, "Font (TTF/OTF, static or variable), UFO or SVG")->required();
-  command_->add_option("--compare", compare_, "Overlay the same glyphs from this second source");
-  command_->add_option("-o,--output", output_, "FILE.pdf (a page per glyph), FILE.png or FILE.svg")->required();
-  selection_.add_to(*command_);
+  add(app, "proof", "Draw proofs: outlines, points, curvature combs, marks and κ(s) plots",
+      "FILE.pdf (a page per glyph), FILE.png or FILE.svg")
+      .add_option("--compare", compare_, "Overlay the same glyphs (by name) from this second source");
 }
 
 int ProofCommand::run() const {

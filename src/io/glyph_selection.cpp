@@ -5,6 +5,7 @@
 #include <unordered_set>
 
 #include "io/input_error.hpp"
+#include "io/text_list.hpp"
 
 namespace gf {
 
@@ -38,16 +39,8 @@ std::vector<std::uint32_t> resolve_selection(const GlyphSelection& selection, co
 
 std::vector<std::string> split_glyph_names(std::string_view list) {
   std::vector<std::string> names;
-  std::size_t i = 0;
-  while (i <= list.size()) {
-    std::size_t j = list.find(',', i);
-    if (j == std::string_view::npos) j = list.size();
-    std::string_view name = list.substr(i, j - i);
-    while (!name.empty() && name.front() == ' ') name.remove_prefix(1);
-    while (!name.empty() && name.back() == ' ') name.remove_suffix(1);
+  for (const std::string_view name : split_trimmed(list))
     if (!name.empty()) names.emplace_back(name);
-    i = j + 1;
-  }
   return names;
 }
 

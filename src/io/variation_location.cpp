@@ -4,21 +4,17 @@
 #include <cmath>
 
 #include "io/input_error.hpp"
+#include "io/text_list.hpp"
 
 namespace gf {
 
 std::vector<AxisValue> parse_variation_location(std::string_view spec) {
   std::vector<AxisValue> location;
-  std::size_t i = 0;
-  while (i <= spec.size()) {
-    std::size_t j = spec.find(',', i);
-    if (j == std::string_view::npos) j = spec.size();
-    std::string_view entry = spec.substr(i, j - i);
-    while (!entry.empty() && entry.front() == ' ') entry.remove_prefix(1);
-    while (!entry.empty() && entry.back() == ' ') entry.remove_suffix(1);
-    i = j + 1;
+  const std::vector<std::string_view> entries = split_trimmed(spec);
+  for (std::size_t k = 0; k < entries.size(); ++k) {
+    const std::string_view entry = entries[k];
     if (entry.empty()) {
-      if (j == spec.size()) break;
+      if (k + 1 == entries.size()) break;  // a trailing comma
       throw InputError("--location: empty entry in '" + std::string(spec) + "'");
     }
     const std::size_t eq = entry.find('=');
