@@ -25,6 +25,9 @@ class ConvertCommand : public Subcommand {
  public:
   void add_to(CLI::App& app);
   int run() const;
+
+ private:
+  bool cubic_ = false;
 };
 
 class ProofCommand : public Subcommand {

@@ -15,7 +15,10 @@ namespace gf {
 
 void ConvertCommand::add_to(CLI::App& app) {
   add(app, "convert", "Write glyphs to UFO 3, SVG or JSON (with analysis) without changing a coordinate",
-      "OUT.ufo, OUT.svg or OUT.json");
+      "OUT.ufo, OUT.svg or OUT.json")
+      .add_flag("--cubic", cubic_,
+                "Write quadratic curves as their exact cubics (for tools that take no quadratics, such as "
+                "fontmake's default overlap removal)");
 }
 
 int ConvertCommand::run() const {
@@ -24,7 +27,10 @@ int ConvertCommand::run() const {
   if (ext != ".ufo" && ext != ".svg" && ext != ".json")
     throw InputError(output_ + ": unknown output format (use .ufo, .svg or .json)");
   const GlyphSource source = GlyphSource::open(source_, selection_.parse());
-  const GlyphSet glyphs = source.load_all();
+  GlyphSet glyphs = source.load_all();
+  if (cubic_)
+    for (Glyph& g : glyphs.glyphs)
+      for (Contour& c : g.outline.contours) c = with_cubics(c);
   const fs::path inputs[] = {source_};
   if (ext == ".ufo") write_ufo(glyphs, output_, inputs);
   else if (ext == ".svg") write_svg(glyphs, output_, inputs);

@@ -26,6 +26,14 @@ double signed_area(const Contour& c) {
   return area;
 }
 
+Contour with_cubics(const Contour& c) {
+  Contour out = c;
+  for (Segment& s : out.segments)
+    if (const auto* q = std::get_if<Quad>(&s)) s = to_cubic(*q);
+  for (NodeFlags& n : out.nodes) n.implied = false;
+  return out;
+}
+
 double extent(const Contour& c) {
   double lo_x = std::numeric_limits<double>::infinity(), lo_y = lo_x;
   double hi_x = -lo_x, hi_y = -lo_x;

@@ -35,6 +35,10 @@ struct Contour {
 /// positive for counter-clockwise contours.
 double signed_area(const Contour& c);
 
+/// The same contour with every quadratic written as its exact cubic (degree elevation: the
+/// curve is unchanged, its new control points are the thirds); implied nodes become explicit.
+Contour with_cubics(const Contour& c);
+
 /// The larger side of the bounding box of all points: a scale for relative tolerances.
 double extent(const Contour& c);
 

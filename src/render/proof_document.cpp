@@ -10,7 +10,9 @@
 #include <cairo-svg.h>
 #include <cairo.h>
 
+#include "geom/critical_points.hpp"
 #include "geom/curvature_profile.hpp"
+#include "geom/join.hpp"
 #include "io/atomic_output.hpp"
 #include "io/input_error.hpp"
 #include "render/cairo_helpers.hpp"
@@ -141,6 +143,70 @@ void paint_page(cairo_t* cr, const ProofGlyph& pg, const FontInfo& font, const P
   paint_legend(cr, options);
 }
 
+// Counts a designer scans the overview for.
+struct GlyphSummary {
+  std::size_t inflections = 0, curvature_extrema = 0, hv_inside = 0, kinks = 0;
+};
+
+GlyphSummary summarise(const Outline& o) {
+  GlyphSummary s;
+  for (const Contour& c : o.contours) {
+    for (const Segment& seg : c.segments) {
+      const CriticalPoints cp = critical_points(seg);
+      s.inflections += cp.inflections.size();
+      s.curvature_extrema += cp.curvature_extrema.size();
+      s.hv_inside += cp.axis_extrema.size();
+    }
+    for (const Join& j : joins_of(c)) s.kinks += j.kind == JoinKind::kink;
+  }
+  return s;
+}
+
+constexpr std::size_t overview_columns = 6, overview_rows = 7;
+constexpr std::size_t overview_cells = overview_columns * overview_rows;
+
+// A contact sheet: every glyph small, with the counts that point at curve problems and the
+// page of its proof.
+void paint_overview(cairo_t* cr, std::span<const ProofGlyph> glyphs, const FontInfo& font, const ProofOptions& options,
+                    std::size_t sheet, std::size_t sheets) {
+  cairo_set_source_rgb(cr, 1, 1, 1);
+  cairo_paint(cr);
+  draw::set(cr, colour::ink);
+  draw::text(cr, {page::header.x0, page::header.y0 + 14}, "Overview", 16, true);
+  char facts[160];
+  std::snprintf(facts, sizeof facts, "%zu glyphs   UPM %g   per glyph: inflections, curvature extrema, H/V extrema inside segments, kinks",
+                glyphs.size(), font.units_per_em);
+  draw::text(cr, {page::header.x0, page::header.y0 + 28}, facts, 7.5);
+  const std::string right = options.title + "   " + std::to_string(sheet + 1) + " / " + std::to_string(sheets);
+  draw::set(cr, colour::metrics);
+  draw::text(cr, {page::header.x1 - draw::text_width(cr, right, 7.5), page::header.y0 + 14}, right, 7.5);
+
+  const Box area{page::header.x0, page::glyph_panel.y0, page::header.x1, page::legend.y1};
+  const double cw = area.width() / overview_columns, ch = area.height() / overview_rows;
+  const std::size_t first = sheet * overview_cells;
+  for (std::size_t k = 0; k < overview_cells && first + k < glyphs.size(); ++k) {
+    const Glyph& g = glyphs[first + k].glyph;
+    const double x0 = area.x0 + cw * double(k % overview_columns), y0 = area.y0 + ch * double(k / overview_columns);
+    const Box cell{x0 + 4, y0 + 4, x0 + cw - 4, y0 + ch - 26};
+    cairo_set_line_width(cr, 0.3);
+    draw::set(cr, colour::metrics);
+    cairo_rectangle(cr, x0 + 1, y0 + 1, cw - 2, ch - 2);
+    cairo_stroke(cr);
+    Box content{0.0, font.descender, std::max(g.advance_width, 1.0), font.ascender};
+    extend(content, g.outline);
+    const PanelMap map = fit(content, cell);
+    paint_outline(cr, map, g.outline, colour::ink, true);
+    const GlyphSummary s = summarise(g.outline);
+    draw::set(cr, colour::ink);
+    draw::text(cr, {x0 + 5, y0 + ch - 15}, g.name, 7.5, true);
+    char counts[96];
+    std::snprintf(counts, sizeof counts, "%zu  %zu  %zu  %zu   p. %zu", s.inflections, s.curvature_extrema, s.hv_inside,
+                  s.kinks, sheets + first + k + 1);
+    draw::set(cr, s.kinks || s.hv_inside ? colour::join_kink : colour::metrics);
+    draw::text(cr, {x0 + 5, y0 + ch - 5}, counts, 6.5);
+  }
+}
+
 struct SurfaceCloser {
   void operator()(cairo_surface_t* s) const { cairo_surface_destroy(s); }
 };
@@ -177,8 +243,14 @@ void write_proof(std::span<const ProofGlyph> glyphs, const FontInfo& font, const
   if (*format == ProofFormat::pdf) {
     std::unique_ptr<cairo_surface_t, SurfaceCloser> surface(cairo_pdf_surface_create(staging.c_str(), page::width, page::height));
     std::unique_ptr<cairo_t, ContextCloser> cr(cairo_create(surface.get()));
+    // Several glyphs open with contact sheets; each glyph then has its own page.
+    const std::size_t sheets = n > 1 ? (n + overview_cells - 1) / overview_cells : 0;
+    for (std::size_t k = 0; k < sheets; ++k) {
+      paint_overview(cr.get(), glyphs, font, options, k, sheets);
+      cairo_show_page(cr.get());
+    }
     for (std::size_t i = 0; i < n; ++i) {
-      paint_page(cr.get(), glyphs[i], font, options, i, n);
+      paint_page(cr.get(), glyphs[i], font, options, sheets + i, sheets + n);
       cairo_show_page(cr.get());
     }
     check(surface.get(), cr.get(), target);
