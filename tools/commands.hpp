@@ -1,6 +1,10 @@
 // The subcommands: each adds itself to the application and runs when chosen.
 #pragma once
 
+#include <optional>
+#include <string>
+#include <vector>
+
 #include <CLI/CLI.hpp>
 
 #include "source_options.hpp"
@@ -37,6 +41,22 @@ class ProofCommand : public Subcommand {
 
  private:
   std::string compare_;
+};
+
+class CurveCommand {
+ public:
+  void add_to(CLI::App& app);
+  bool chosen() const { return command_ && command_->parsed(); }
+  int run() const;
+
+ private:
+  CLI::App* command_ = nullptr;
+  std::optional<double> alpha_;
+  std::vector<std::string> points_;
+  bool inflection_start_ = false;
+  int samples_ = 64;
+  std::string format_ = "json";
+  std::string output_;
 };
 
 }  // namespace gf

@@ -12,8 +12,10 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "glyphfair 0.1.0");
   gf::ConvertCommand convert;
   gf::ProofCommand proof;
+  gf::CurveCommand curve;
   convert.add_to(app);
   proof.add_to(app);
+  curve.add_to(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -23,6 +25,7 @@ int main(int argc, char** argv) {
   try {
     if (convert.chosen()) return convert.run();
     if (proof.chosen()) return proof.run();
+    if (curve.chosen()) return curve.run();
     return gf::exit_code::bad_input;
   } catch (const gf::InputError& e) {
     std::cerr << "glyphfair: error: " << e.what() << "\n";
