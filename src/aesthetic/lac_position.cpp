@@ -17,12 +17,30 @@ constexpr std::array<double, 6> gl_weights{0.24914704581340269, 0.23349253653835
                                            0.16007832854334611, 0.10693932599531888, 0.047175336386512022};
 
 template <typename F>
-cplx gauss_legendre(F&& f, double a, double b) {
+auto gauss_legendre(F&& f, double a, double b) {
   const double mid = 0.5 * (a + b), half = 0.5 * (b - a);
-  cplx sum = 0.0;
+  decltype(f(a)) sum{};
   for (std::size_t k = 0; k < gl_nodes.size(); ++k)
     sum += gl_weights[k] * (f(mid - half * gl_nodes[k]) + f(mid + half * gl_nodes[k]));
   return half * sum;
+}
+
+// Panels from `start` toward `end` (either direction), each at most min(distance to the
+// singular angle, 1.5) long: ∫_start^end f.
+template <typename F>
+auto graded_panels(F&& f, double start, double end, double singular) {
+  const double dir = end > start ? 1.0 : -1.0;
+  decltype(f(start)) total{};
+  double cur = start;
+  while (cur != end) {
+    const double h = std::min(std::abs(cur - singular), 1.5);
+    double next = cur + dir * h;
+    if ((end - next) * dir <= 1e-3 * h) next = end;
+    const auto piece = gauss_legendre(f, std::min(cur, next), std::max(cur, next));
+    total += dir > 0 ? piece : -piece;
+    cur = next;
+  }
+  return total;
 }
 
 cplx unit(double angle) { return {std::cos(angle), std::sin(angle)}; }
@@ -46,6 +64,11 @@ cplx touching_series(double psi_star, double sigma, double abs_c, double p, doub
 
 cplx singular_power_integral(double psi_star, double sigma, double abs_c, double p, double delta0, double delta1) {
   const auto f = [&](double delta) { return unit(psi_star + sigma * delta) * std::exp(p * std::log(abs_c * delta)); };
+  // Near the singular angle the series from 0 covers the whole interval in a few dozen
+  // multiply-adds: ∫_{δ0}^{δ1} = J(δ1) − J(δ0), without cancellation while δ0 ≤ δ1/2.
+  if (p > -1.0 && delta1 <= 1.0 && delta0 <= 0.5 * delta1)
+    return touching_series(psi_star, sigma, abs_c, p, delta1) -
+           (delta0 > 0.0 ? touching_series(psi_star, sigma, abs_c, p, delta0) : cplx(0.0));
   cplx total = 0.0;
   double d = delta0;
   if (d == 0.0) {
@@ -54,14 +77,7 @@ cplx singular_power_integral(double psi_star, double sigma, double abs_c, double
     d = tau;
   }
   // Each panel keeps the singularity at least its own length away (Bernstein ratio ≥ 3 + √8).
-  while (d < delta1) {
-    const double h = std::min(d, 1.5);
-    double next = d + h;
-    if (next >= delta1 || delta1 - next < 1e-3 * h) next = delta1;
-    total += gauss_legendre(f, d, next);
-    d = next;
-  }
-  return total;
+  return total + graded_panels(f, d, delta1, 0.0);
 }
 
 cplx lac_position(const NormalisedLac& curve, double theta_a, double theta_b, std::optional<double> delta_b) {
@@ -77,29 +93,17 @@ cplx lac_position(const NormalisedLac& curve, double theta_a, double theta_b, st
   const double sigma = c > 0.0 ? 1.0 : -1.0;
   const double da = std::abs(theta_a - psi_star);
   const double db = delta_b ? *delta_b : std::abs(theta_b - psi_star);
-  if (std::abs(c) * std::min(da, db) < 0.5) {
-    // An end within half of u = 1 + cψ of ψ*: work by the distance δ, ψ = ψ* + σδ, dψ = σ dδ,
-    // so ρ = (|c|δ)^p keeps its accuracy as δ → 0. ψ* is then of the order of the ends, so
-    // the phase ψ* + σδ loses nothing to rounding.
+  if (std::abs(psi_star) <= 8.0 * (1.0 + std::abs(theta_a) + std::abs(theta_b))) {
+    // ψ* is of the order of the ends: work by the distance δ, ψ = ψ* + σδ, dψ = σ dδ, so that
+    // ρ = (|c|δ)^p keeps its accuracy as δ → 0 while the phase ψ* + σδ loses nothing to
+    // rounding, and near ψ* the series does the whole interval.
     const cplx integral = singular_power_integral(psi_star, sigma, std::abs(c), p, std::min(da, db), std::max(da, db));
     return sigma * (db >= da ? integral : -integral);
   }
-  // Otherwise in θ, with panels graded by the distance to ψ* (at most 1.5 rad each).
+  // ψ* is far: in θ, with panels graded by the distance to ψ* (at most 1.5 rad each),
+  // marching from the end nearer to it.
   const auto f = [&](double psi) { return unit(psi) * std::exp(p * std::log1p(c * psi)); };
-  const bool a_near = da <= db;
-  const double near = a_near ? theta_a : theta_b, far = a_near ? theta_b : theta_a;
-  const double dir = far > near ? 1.0 : -1.0;
-  cplx total = 0.0;
-  double cur = near;
-  while (cur != far) {
-    const double h = std::min(std::abs(cur - psi_star), 1.5);
-    double next = cur + dir * h;
-    if ((far - next) * dir <= 1e-3 * h) next = far;
-    total += dir * gauss_legendre(f, std::min(cur, next), std::max(cur, next));
-    cur = next;
-  }
-  // total = ∫_near^far; return ∫_a^b.
-  return a_near ? total : -total;
+  return da <= db ? graded_panels(f, theta_a, theta_b, psi_star) : -graded_panels(f, theta_b, theta_a, psi_star);
 }
 
 }  // namespace gf

@@ -66,9 +66,9 @@ std::optional<Triangle> triangle(Vec2 a, Vec2 b, Vec2 c, std::string& reason) {
   return Triangle{p0, p2, std::abs(turning), e, f, turning < 0};
 }
 
-LogAestheticSegment place(const NormalisedLac& curve, double theta_d, double x, const Triangle& t, bool reversed) {
-  // The similarity that takes the standard chord C(θ_d) onto P0 → P2 (§2.3).
-  const cplx c_end = standard_end(curve, theta_d, x);
+// The similarity that takes the standard chord C(θ_d) onto P0 → P2 (§2.3).
+LogAestheticSegment place(const NormalisedLac& curve, double theta_d, double x, const Triangle& t, bool reversed,
+                          cplx c_end) {
   const cplx z = (t.p2 - t.p0) / (t.mirrored ? std::conj(c_end) : c_end);
   return LogAestheticSegment(curve, theta_d, x, t.p0, z, t.mirrored, reversed, c_end);
 }
@@ -105,7 +105,6 @@ SegmentFit fit_three_point(Vec2 p0, Vec2 p1, Vec2 p2, double alpha) {
   const bool reversed = t->theta_e < t->theta_f;
   if (reversed) t = triangle(p2, p1, p0, fit.reason);
   const double td = t->theta_d, target = t->theta_e;
-  double x = 0.0;  // ln r; 0 is the circular arc
   if (target - t->theta_f > 1e-15 * td) {
     const double limit = drawable_limit(alpha, td);
     if (target >= limit) {
@@ -113,23 +112,36 @@ SegmentFit fit_three_point(Vec2 p0, Vec2 p1, Vec2 p2, double alpha) {
                    std::to_string(target / td) + " of the turning, the limit is " + std::to_string(limit / td);
       return fit;
     }
-    // The chord angle E falls from θ_d/2 (x = 0) toward its limit as x → −∞ (§2.1).
+    // The chord angle E falls from θ_d/2 (x = 0) toward its limit as x → −∞ (§2.1): solve
+    // E(x) = θ_e with TOMS 748 in a bracket grown from [−1, 0]. Each evaluation is a
+    // quadrature: the bracket's values are passed on, and the last C(θ_d) is kept.
+    cplx last_end = 0.0;
+    double last_x = 1.0;
     const auto excess = [&](double xx) {
-      return target - std::arg(standard_end(NormalisedLac{alpha, lambda_of(alpha, td, xx)}, td, xx));
+      last_x = xx;
+      last_end = standard_end(NormalisedLac{alpha, lambda_of(alpha, td, xx)}, td, xx);
+      return target - std::arg(last_end);
     };
-    double lo = -1.0, hi = 0.0;
-    while (excess(lo) > 0.0) {
-      hi = lo;
+    double lo = -1.0, hi = 0.0, f_lo = excess(lo), f_hi = target - 0.5 * td;  // E(0) = θ_d/2: the arc
+    while (f_lo > 0.0) {
+      hi = lo, f_hi = f_lo;
       lo *= 2.0;
       if (lo < -32.0) {
         fit.reason = "too close to the edge of α's drawable region: the end curvature ratio would be below 1e-14";
         return fit;
       }
+      f_lo = excess(lo);
     }
-    x = solve_increasing(excess, lo, hi);
+    std::uintmax_t iterations = 100;
+    const auto [a, b] = boost::math::tools::toms748_solve(excess, lo, hi, f_lo, f_hi,
+                                                          boost::math::tools::eps_tolerance<double>(50), iterations);
+    const double x = 0.5 * (a + b);
+    const NormalisedLac curve{alpha, lambda_of(alpha, td, x)};
+    fit.segment = place(curve, td, x, *t, reversed, x == last_x ? last_end : standard_end(curve, td, x));
+    return fit;
   }
-  const NormalisedLac curve{alpha, lambda_of(alpha, td, x)};
-  fit.segment = place(curve, td, x, *t, reversed);
+  const NormalisedLac curve{alpha, 0.0};  // the circular arc
+  fit.segment = place(curve, td, 0.0, *t, reversed, standard_end(curve, td, 0.0));
   return fit;
 }
 
@@ -165,7 +177,8 @@ SegmentFit fit_inflection_start(Vec2 p0, Vec2 p1, Vec2 p2) {
   // segment ends there (ratio 0), so the user's P0 is its end.
   const NormalisedLac curve{alpha, 1.0 / ((1.0 - alpha) * big)};
   const std::optional<Triangle> from_p2 = triangle(p2, p1, p0, fit.reason);
-  fit.segment = place(curve, big, -std::numeric_limits<double>::infinity(), *from_p2, true);
+  const double x = -std::numeric_limits<double>::infinity();
+  fit.segment = place(curve, big, x, *from_p2, true, standard_end(curve, big, x));
   return fit;
 }
 

@@ -1,0 +1,47 @@
+// The aesthetic engine's hot paths: the 3-point construction (issue bar: ≤ 10 µs median at
+// 1e-12 accuracy) and dense sampling.
+#include <benchmark/benchmark.h>
+
+#include "aesthetic/lcg_slope.hpp"
+#include "aesthetic/segment_fit.hpp"
+
+namespace gf {
+namespace {
+
+void three_point_construction(benchmark::State& state) {
+  const double alpha = static_cast<double>(state.range(0)) / 2.0;
+  for (auto _ : state) benchmark::DoNotOptimize(fit_three_point({0, 0}, {1, 0}, {2, 0.8}, alpha));
+}
+BENCHMARK(three_point_construction)->DenseRange(-4, 6, 2)->ArgName("alpha_x2");
+
+void three_point_glyph_like(benchmark::State& state) {
+  // A bowl quarter of a 1000-unit glyph, α = 1 (a log spiral), no closed form for the fit.
+  for (auto _ : state) benchmark::DoNotOptimize(fit_three_point({589, 1147}, {874, 1147}, {1069, 639}, 0.7));
+}
+BENCHMARK(three_point_glyph_like);
+
+void inflection_start_construction(benchmark::State& state) {
+  for (auto _ : state) benchmark::DoNotOptimize(fit_inflection_start({0, 0}, {1.8, 0}, {2.414, 1}));
+}
+BENCHMARK(inflection_start_construction);
+
+void sampling(benchmark::State& state) {
+  const LogAestheticSegment s = *fit_three_point({0, 0}, {1, 0}, {2, 0.8}, 1.5).segment;
+  const int n = static_cast<int>(state.range(0));
+  for (auto _ : state) benchmark::DoNotOptimize(s.sample(n));
+  state.SetItemsProcessed(state.iterations() * n);
+}
+BENCHMARK(sampling)->Arg(16)->Arg(256)->Arg(4096);
+
+void evaluate_at_arc_length(benchmark::State& state) {
+  const LogAestheticSegment s = *fit_three_point({0, 0}, {1, 0}, {2, 0.8}, -1.0).segment;
+  double sigma = 0.0;
+  for (auto _ : state) {
+    sigma = sigma > s.length() ? 0.0 : sigma + 0.01;
+    benchmark::DoNotOptimize(s.at(sigma));
+  }
+}
+BENCHMARK(evaluate_at_arc_length);
+
+}  // namespace
+}  // namespace gf
