@@ -1,7 +1,8 @@
 #include "aesthetic/lac_position.hpp"
 
+#include "aesthetic/gauss_legendre.hpp"
+
 #include <algorithm>
-#include <array>
 #include <cmath>
 
 namespace gf {
@@ -9,21 +10,6 @@ namespace gf {
 namespace {
 
 using cplx = std::complex<double>;
-
-// 12-point Gauss–Legendre rule on [-1, 1] (lac-math.md §8.2): ± nodes, weights.
-constexpr std::array<double, 6> gl_nodes{0.12523340851146891, 0.36783149899818018, 0.58731795428661748,
-                                         0.76990267419430469, 0.9041172563704748,  0.98156063424671924};
-constexpr std::array<double, 6> gl_weights{0.24914704581340269, 0.23349253653835464, 0.20316742672306565,
-                                           0.16007832854334611, 0.10693932599531888, 0.047175336386512022};
-
-template <typename F>
-auto gauss_legendre(F&& f, double a, double b) {
-  const double mid = 0.5 * (a + b), half = 0.5 * (b - a);
-  decltype(f(a)) sum{};
-  for (std::size_t k = 0; k < gl_nodes.size(); ++k)
-    sum += gl_weights[k] * (f(mid - half * gl_nodes[k]) + f(mid + half * gl_nodes[k]));
-  return half * sum;
-}
 
 // Panels from `start` toward `end` (either direction), each at most min(distance to the
 // singular angle, 1.5) long: ∫_start^end f.
@@ -36,7 +22,7 @@ auto graded_panels(F&& f, double start, double end, double singular) {
     const double h = std::min(std::abs(cur - singular), 1.5);
     double next = cur + dir * h;
     if ((end - next) * dir <= 1e-3 * h) next = end;
-    const auto piece = gauss_legendre(f, std::min(cur, next), std::max(cur, next));
+    const auto piece = gauss_legendre_12(f, std::min(cur, next), std::max(cur, next));
     total += dir > 0 ? piece : -piece;
     cur = next;
   }
