@@ -1,8 +1,5 @@
 #include "geom/contour.hpp"
 
-#include <algorithm>
-#include <cmath>
-#include <limits>
 
 namespace gf {
 
@@ -32,19 +29,6 @@ Contour with_cubics(const Contour& c) {
     if (const auto* q = std::get_if<Quad>(&s)) s = to_cubic(*q);
   for (NodeFlags& n : out.nodes) n.implied = false;
   return out;
-}
-
-double extent(const Contour& c) {
-  double lo_x = std::numeric_limits<double>::infinity(), lo_y = lo_x;
-  double hi_x = -lo_x, hi_y = -lo_x;
-  for (const Segment& s : c.segments)
-    for_each_point(s, [&](Vec2 p) {
-      lo_x = std::min(lo_x, p.x);
-      lo_y = std::min(lo_y, p.y);
-      hi_x = std::max(hi_x, p.x);
-      hi_y = std::max(hi_y, p.y);
-    });
-  return c.segments.empty() ? 0.0 : std::max(hi_x - lo_x, hi_y - lo_y);
 }
 
 }  // namespace gf

@@ -39,9 +39,6 @@ double signed_area(const Contour& c);
 /// curve is unchanged, its new control points are the thirds); implied nodes become explicit.
 Contour with_cubics(const Contour& c);
 
-/// The larger side of the bounding box of all points: a scale for relative tolerances.
-double extent(const Contour& c);
-
 struct Outline {
   std::vector<Contour> contours;
 };

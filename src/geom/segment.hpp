@@ -30,12 +30,4 @@ template <typename F>
 void for_each_point(const Segment& s, F&& f) {
   std::visit([&](const auto& b) { for (const Vec2& q : b.p) f(q); }, s);
 }
-/// True when every point of the segment coincides: it has no direction.
-inline bool is_degenerate(const Segment& s) {
-  const Vec2 a = start_point(s);
-  bool all_same = true;
-  for_each_point(s, [&](Vec2 q) { all_same = all_same && q == a; });
-  return all_same;
-}
-
 }  // namespace gf

@@ -9,12 +9,6 @@ std::optional<std::uint16_t> read_u16(std::span<const std::uint8_t> b, std::size
   return static_cast<std::uint16_t>(b[o] << 8 | b[o + 1]);
 }
 
-std::optional<std::int16_t> read_i16(std::span<const std::uint8_t> b, std::size_t o) {
-  const auto v = read_u16(b, o);
-  if (!v) return std::nullopt;
-  return static_cast<std::int16_t>(*v);
-}
-
 std::optional<std::uint32_t> read_u32(std::span<const std::uint8_t> b, std::size_t o) {
   if (o + 4 > b.size()) return std::nullopt;
   return static_cast<std::uint32_t>(b[o]) << 24 | static_cast<std::uint32_t>(b[o + 1]) << 16 |

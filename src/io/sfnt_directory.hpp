@@ -1,6 +1,5 @@
 // The table directory of an OpenType/TrueType file, read from its bytes, so that truncated
-// files are refused with a precise message before any table is used, and so that tables
-// FreeType does not expose (glyf headers, hmtx) can be read.
+// files are refused with a precise message before any table is used.
 #pragma once
 
 #include <cstdint>
@@ -28,7 +27,6 @@ std::optional<SfntDirectory> read_sfnt_directory(std::span<const std::uint8_t> b
 
 /// Big-endian readers that return nullopt past the end instead of reading out of bounds.
 std::optional<std::uint16_t> read_u16(std::span<const std::uint8_t> bytes, std::size_t offset);
-std::optional<std::int16_t> read_i16(std::span<const std::uint8_t> bytes, std::size_t offset);
 std::optional<std::uint32_t> read_u32(std::span<const std::uint8_t> bytes, std::size_t offset);
 
 }  // namespace gf

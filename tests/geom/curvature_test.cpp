@@ -48,6 +48,18 @@ TEST(Curvature, RetractedHandleEndIsUnboundedUnlessStraight) {
   EXPECT_NEAR(t->y, std::sqrt(0.5), 1e-15);
 }
 
+TEST(Bezier, SplitAndSubsegmentKeepTheCurve) {
+  const Cubic c{{0, 0}, {30, 80}, {120, 90}, {160, 10}};
+  const auto [a, b] = c.split(0.3);
+  EXPECT_EQ(a.p[0], c.p[0]);
+  EXPECT_EQ(b.p[3], c.p[3]);
+  for (const double u : {0.0, 0.25, 0.5, 1.0}) {
+    EXPECT_NEAR(distance(a.point_at(u), c.point_at(0.3 * u)), 0.0, 1e-12);
+    EXPECT_NEAR(distance(b.point_at(u), c.point_at(0.3 + 0.7 * u)), 0.0, 1e-12);
+    EXPECT_NEAR(distance(c.subsegment(0.2, 0.6).point_at(u), c.point_at(0.2 + 0.4 * u)), 0.0, 1e-12);
+  }
+}
+
 TEST(Curvature, DegenerateSegmentHasNoTangent) {
   EXPECT_FALSE(end_tangent(Line{{{3, 3}, {3, 3}}}, SegmentEnd::start).has_value());
 }
