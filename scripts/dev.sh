@@ -9,7 +9,7 @@ cd "$(dirname "$0")/.."
 packages=(
   g++ cmake make pkg-config
   libfreetype-dev libharfbuzz-dev libcairo2-dev libeigen3-dev libboost-dev
-  libcli11-dev nlohmann-json3-dev libpugixml-dev
+  libcli11-dev nlohmann-json3-dev libpugixml-dev libtbb-dev
   libgtest-dev libbenchmark-dev
   # independent checkers used by the tests: fontTools' ufoLib, fontmake
   python3-fonttools fontmake python3-jsonschema

@@ -59,4 +59,21 @@ class CurveCommand {
   std::string output_;
 };
 
+class CheckCommand {
+ public:
+  void add_to(CLI::App& app);
+  bool chosen() const { return command_ && command_->parsed(); }
+  int run() const;
+
+ private:
+  CLI::App* command_ = nullptr;
+  std::vector<std::string> sources_;
+  SourceArguments selection_;
+  std::string format_ = "text";
+  std::string profile_ = "text";
+  std::string fail_on_ = "error";
+  int jobs_ = 0;
+  std::string output_;
+};
+
 }  // namespace gf

@@ -13,9 +13,11 @@ int main(int argc, char** argv) {
   gf::ConvertCommand convert;
   gf::ProofCommand proof;
   gf::CurveCommand curve;
+  gf::CheckCommand check;
   convert.add_to(app);
   proof.add_to(app);
   curve.add_to(app);
+  check.add_to(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -26,6 +28,7 @@ int main(int argc, char** argv) {
     if (convert.chosen()) return convert.run();
     if (proof.chosen()) return proof.run();
     if (curve.chosen()) return curve.run();
+    if (check.chosen()) return check.run();
     return gf::exit_code::bad_input;
   } catch (const gf::InputError& e) {
     std::cerr << "glyphfair: error: " << e.what() << "\n";

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include <boost/math/quadrature/gauss.hpp>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 
 #include "geom/curvature.hpp"
@@ -22,6 +23,12 @@ ArcLength arc_length(const Segment& s, double t0, double t1, double relative_tol
   const double scale = std::max(length, distance(point_at(s, t0), point_at(s, t1)));
   const bool converged = std::isfinite(length) && error <= relative_tolerance * scale * 10.0 + 1e-300;
   return {std::isfinite(length) ? length : 0.0, std::isfinite(error) ? error : 0.0, converged};
+}
+
+double arc_length_estimate(const Segment& s, double t0, double t1) {
+  if (is_line(s)) return distance(point_at(s, t0), point_at(s, t1));
+  return boost::math::quadrature::gauss<double, 16>::integrate(
+      [&s](double t) { return norm(derivatives_at(s, t).d1); }, t0, t1);
 }
 
 }  // namespace gf

@@ -17,4 +17,8 @@ struct ArcLength {
 ArcLength arc_length(const Segment& s, double t0 = 0.0, double t1 = 1.0,
                      double relative_tolerance = 1e-12);
 
+/// A fast estimate for checks and layout: 16-point Gauss–Legendre on t0..t1, no error
+/// control (about 1e-7 relative on font curves; worse across a cusp).
+double arc_length_estimate(const Segment& s, double t0 = 0.0, double t1 = 1.0);
+
 }  // namespace gf

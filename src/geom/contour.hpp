@@ -60,6 +60,10 @@ struct FontInfo {
   double descender = -200.0;
   std::optional<double> x_height;
   std::optional<double> cap_height;
+  double italic_angle = 0.0;  ///< degrees, counter-clockwise from vertical (post table)
+  /// The format's convention for outer contours: clockwise for TrueType (glyf), counter-
+  /// clockwise for PostScript outlines (CFF, CFF2) and UFO.
+  bool outer_contours_clockwise = false;
 };
 
 struct GlyphSet {

@@ -9,6 +9,7 @@
 
 #include <ft2build.h>
 #include FT_FREETYPE_H
+#include FT_FONT_FORMATS_H
 #include FT_MULTIPLE_MASTERS_H
 #include FT_SFNT_NAMES_H
 #include FT_TRUETYPE_IDS_H
@@ -169,6 +170,10 @@ struct FreetypeFont::Impl {
     info.units_per_em = face->units_per_EM;
     info.ascender = face->ascender;
     info.descender = face->descender;
+    const char* format = FT_Get_Font_Format(face);
+    info.outer_contours_clockwise = format && std::string(format) == "TrueType";
+    if (const auto* post = static_cast<const TT_Postscript*>(FT_Get_Sfnt_Table(face, FT_SFNT_POST)))
+      info.italic_angle = post->italicAngle / 65536.0;
     if (const auto* os2 = static_cast<const TT_OS2*>(FT_Get_Sfnt_Table(face, FT_SFNT_OS2));
         os2 && os2->version >= 2 && os2->version != 0xFFFF) {
       if (os2->sxHeight > 0) info.x_height = os2->sxHeight;

@@ -1,0 +1,50 @@
+#include "check/check_profile.hpp"
+
+namespace gf {
+
+const char* to_string(Severity s) {
+  switch (s) {
+    case Severity::info: return "info";
+    case Severity::warning: return "warning";
+    case Severity::error: return "error";
+  }
+  return "info";
+}
+
+const std::vector<std::string>& check_ids() {
+  static const std::vector<std::string> ids{
+      "open-contour", "wrong-direction", "duplicate-point", "kink", "g2-jump", "missing-extremum", "wobble",
+      "inflection-in-segment", "short-segment", "zero-handle", "collinear-handles", "semi-horizontal", "semi-vertical"};
+  return ids;
+}
+
+Severity CheckProfile::severity_of(const std::string& check) const {
+  const auto it = severity.find(check);
+  return it == severity.end() ? Severity::warning : it->second;
+}
+
+std::optional<CheckProfile> check_profile(const std::string& name) {
+  CheckProfile p;
+  p.name = name;
+  p.severity = {{"open-contour", Severity::error},      {"wrong-direction", Severity::error},
+                {"duplicate-point", Severity::error},   {"kink", Severity::error},
+                {"g2-jump", Severity::warning},         {"missing-extremum", Severity::warning},
+                {"wobble", Severity::warning},          {"inflection-in-segment", Severity::info},
+                {"short-segment", Severity::warning},   {"zero-handle", Severity::warning},
+                {"collinear-handles", Severity::warning}, {"semi-horizontal", Severity::warning},
+                {"semi-vertical", Severity::warning}};
+  if (name == "text") return p;
+  if (name != "handwriting") return std::nullopt;
+  // Traced and pen-drawn letters break their curves at many joins and leave extrema between
+  // nodes by design; those become information, structural problems stay as they are.
+  for (const char* id : {"kink", "g2-jump", "missing-extremum", "short-segment", "zero-handle", "semi-horizontal",
+                         "semi-vertical"}) {
+    p.severity[id] = Severity::info;
+    p.relaxed.push_back(std::string(id) + " reported as info");
+  }
+  p.severity["duplicate-point"] = Severity::warning;
+  p.relaxed.push_back("duplicate-point reported as a warning");
+  return p;
+}
+
+}  // namespace gf

@@ -1,0 +1,117 @@
+// glyphfair check SRC... [selection] [--format text|json|markdown] [--profile text|handwriting]
+//                 [--fail-on error|warning|never] [--jobs N] [-o FILE]
+#include <algorithm>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <optional>
+
+#include <unistd.h>
+
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+
+#include "check/report_writer.hpp"
+#include "commands.hpp"
+#include "exit_codes.hpp"
+#include "io/atomic_output.hpp"
+#include "io/input_error.hpp"
+
+namespace gf {
+
+namespace {
+
+// Glyphs are read in order (FreeType faces are not thread-safe), checked in parallel, and
+// written in order, a chunk at a time, so memory stays flat however large the font.
+constexpr std::size_t chunk_size = 512;
+
+class Progress {
+ public:
+  explicit Progress(bool on) : on_(on) {}
+  void show(const std::string& what, std::size_t done, std::size_t total) const {
+    if (!on_ || total == 0) return;
+    const int width = 30, filled = static_cast<int>(width * done / total);
+    std::cerr << "\r" << what << " [" << std::string(static_cast<std::size_t>(filled), '=')
+              << std::string(static_cast<std::size_t>(width - filled), ' ') << "] " << done << "/" << total << std::flush;
+  }
+  void clear() const {
+    if (on_) std::cerr << "\r" << std::string(79, ' ') << "\r" << std::flush;
+  }
+
+ private:
+  bool on_;
+};
+
+}  // namespace
+
+void CheckCommand::add_to(CLI::App& app) {
+  command_ = app.add_subcommand("check", "Find every curve problem in whole fonts: curvature continuity, extrema, structure");
+  command_->add_option("SRC", sources_, "Fonts (TTF/OTF, static or variable), UFOs or SVGs")->required();
+  selection_.add_to(*command_);
+  command_->add_option("--format", format_, "text, json or markdown")->check(CLI::IsMember({"text", "json", "markdown"}));
+  command_->add_option("--profile", profile_, "text or handwriting (relaxes what handwriting does by design)")
+      ->check(CLI::IsMember({"text", "handwriting"}));
+  command_->add_option("--fail-on", fail_on_, "Exit 4 when a finding is at least: error, warning or never")
+      ->check(CLI::IsMember({"error", "warning", "never"}));
+  command_->add_option("--jobs", jobs_, "Glyphs checked in parallel (default: every core)")->check(CLI::PositiveNumber);
+  command_->add_option("-o,--output", output_, "Write the report here instead of standard output");
+}
+
+int CheckCommand::run() const {
+  const CheckProfile profile = *check_profile(profile_);
+  const ReportFormat format = *report_format(format_);
+  const SourceOptions options = selection_.parse();
+  std::vector<GlyphSource> sources;
+  for (const std::string& s : sources_) sources.push_back(GlyphSource::open(s, options));
+
+  std::optional<AtomicOutput> file;
+  std::ofstream file_stream;
+  if (!output_.empty()) {
+    std::vector<std::filesystem::path> inputs(sources_.begin(), sources_.end());
+    file.emplace(output_, AtomicOutput::Kind::file, inputs);
+    file_stream.open(file->staging_path());
+  }
+  std::ostream& out = output_.empty() ? std::cout : file_stream;
+  const std::unique_ptr<ReportWriter> writer = make_report_writer(format, out, profile);
+  std::optional<tbb::global_control> limit;
+  if (jobs_ > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(jobs_));
+  const Progress progress(isatty(STDERR_FILENO) && output_.empty() ? false : isatty(STDERR_FILENO));
+
+  CheckTotals all;
+  for (const GlyphSource& source : sources) {
+    const FontInfo& font = source.font();
+    writer->begin_source({source.path().string(), font.family_name + (font.style_name.empty() ? "" : " " + font.style_name),
+                          font.units_per_em});
+    CheckTotals totals;
+    std::vector<Glyph> glyphs;
+    std::vector<GlyphReport> reports;
+    for (std::size_t first = 0; first < source.size(); first += chunk_size) {
+      const std::size_t last = std::min(source.size(), first + chunk_size);
+      glyphs.clear();
+      for (std::size_t i = first; i < last; ++i)
+        if (auto g = source.load(i)) glyphs.push_back(std::move(*g));
+      reports.assign(glyphs.size(), {});
+      tbb::parallel_for(std::size_t{0}, glyphs.size(),
+                        [&](std::size_t k) { reports[k] = check_glyph(glyphs[k], font, profile); });
+      for (const GlyphReport& r : reports) {
+        writer->glyph(r);
+        totals.add(r);
+      }
+      progress.show(source.path().filename().string(), last, source.size());
+    }
+    progress.clear();
+    writer->end_source(totals);
+    all.add(totals);
+  }
+  writer->finish(all);
+  if (file) {
+    file_stream.close();
+    if (!file_stream) throw OutputError(output_ + ": write failed");
+    file->commit();
+  }
+  const bool failed = (fail_on_ == "error" && all.at_least(Severity::error) > 0) ||
+                      (fail_on_ == "warning" && all.at_least(Severity::warning) > 0);
+  return failed ? exit_code::findings : exit_code::ok;
+}
+
+}  // namespace gf
