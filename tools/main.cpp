@@ -21,8 +21,9 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? gf::exit_code::ok : gf::exit_code::bad_input;
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+    std::cerr << "glyphfair: error: " << e.what() << " (see glyphfair --help)\n";
+    return gf::exit_code::bad_input;
   }
   try {
     if (convert.chosen()) return convert.run();

@@ -309,7 +309,8 @@ struct GlyphChecker {
         if (opened != none && extrema > 1) {
           const Segment& s = c.segments[static_cast<std::size_t>(second.segment)];
           Finding& f = add("wobble", ci, second.segment, point_at(s, second.t));
-          f.segment = second.segment, f.t = second.t, f.value = extrema, f.threshold = 1, f.unit = "extrema";
+          f.segment = second.segment, f.value = extrema, f.threshold = 1, f.unit = "extrema";
+          if (second.t > 0.0) f.t = second.t;  // else the extremum is at the node itself
           f.message = std::to_string(extrema) + " curvature extrema between two inflections (one is fair)";
         }
         opened = k;

@@ -1,6 +1,8 @@
 #include "check/report_writer.hpp"
 
 #include <algorithm>
+#include <charconv>
+#include <cmath>
 #include <cstdio>
 
 #include <nlohmann/json.hpp>
@@ -100,37 +102,49 @@ class JsonWriter : public ReportWriter {
     first_source_ = false;
     first_glyph_ = true;
   }
+  // Written by hand: a whole font's findings go through here, and building a json value
+  // per finding costs more than the checks themselves.
   void glyph(const GlyphReport& r) override {
-    json findings = json::array();
-    for (const Finding& f : r.findings) {
-      json j{{"check", f.check}, {"severity", to_string(f.severity)}, {"contour", f.contour}};
-      j["node"] = f.node ? json(*f.node) : json(nullptr);
-      j["segment"] = f.segment ? json(*f.segment) : json(nullptr);
-      j["t"] = f.t ? json(*f.t) : json(nullptr);
-      j["point"] = f.point ? json::array({f.point->x, f.point->y}) : json(nullptr);
-      j["value"] = f.value ? json(*f.value) : json(nullptr);
-      j["threshold"] = f.threshold ? json(*f.threshold) : json(nullptr);
-      j["unit"] = f.unit;
-      j["message"] = f.message;
-      findings.push_back(std::move(j));
+    std::string& o = buffer_;
+    o.clear();
+    o += first_glyph_ ? "\n{\"name\":" : ",\n{\"name\":";
+    o += json(r.glyph).dump();
+    o += ",\"findings\":[";
+    for (std::size_t i = 0; i < r.findings.size(); ++i) {
+      const Finding& f = r.findings[i];
+      o += i ? ",{" : "{";
+      o += "\"check\":\"" + f.check + "\",\"severity\":\"" + to_string(f.severity) + "\",\"contour\":" +
+           std::to_string(f.contour);
+      o += ",\"node\":" + (f.node ? std::to_string(*f.node) : "null");
+      o += ",\"segment\":" + (f.segment ? std::to_string(*f.segment) : "null");
+      o += ",\"t\":" + number(f.t);
+      o += ",\"point\":" + (f.point ? "[" + number(f.point->x) + "," + number(f.point->y) + "]" : std::string("null"));
+      o += ",\"value\":" + number(f.value) + ",\"threshold\":" + number(f.threshold);
+      o += ",\"unit\":\"" + f.unit + "\",\"message\":" + json(f.message).dump() + "}";
     }
     const FairnessFigures& q = r.fairness;
-    const json g{{"name", r.glyph},
-                 {"findings", findings},
-                 {"fairness", {{"total_variation", q.total_variation},
-                               {"inflections", q.inflections},
-                               {"curvature_extrema", q.curvature_extrema},
-                               {"curve_segments", q.curve_segments},
-                               {"monotone_fraction", q.monotone_fraction}}}};
-    out_ << (first_glyph_ ? "\n" : ",\n") << g.dump();
+    o += "],\"fairness\":{\"total_variation\":" + number(q.total_variation) +
+         ",\"inflections\":" + std::to_string(q.inflections) +
+         ",\"curvature_extrema\":" + std::to_string(q.curvature_extrema) +
+         ",\"curve_segments\":" + std::to_string(q.curve_segments) +
+         ",\"monotone_fraction\":" + number(q.monotone_fraction) + "}}";
+    out_ << o;
     first_glyph_ = false;
   }
   void end_source(const CheckTotals& t) override { out_ << "],\"summary\":" << summary_json(t).dump() << "}"; }
   void finish(const CheckTotals& all) override { out_ << "],\n\"summary\":" << summary_json(all).dump() << "}\n"; out_.flush(); }
 
  private:
+  static std::string number(std::optional<double> v) {
+    if (!v || !std::isfinite(*v)) return "null";
+    char buf[32];
+    const auto r = std::to_chars(buf, buf + sizeof buf, *v);
+    return std::string(buf, r.ptr);
+  }
+
   std::ostream& out_;
   bool first_source_ = true, first_glyph_ = true;
+  std::string buffer_;
 };
 
 std::string markdown_cell(std::string s) {
