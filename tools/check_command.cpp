@@ -75,7 +75,8 @@ int CheckCommand::run() const {
   const std::unique_ptr<ReportWriter> writer = make_report_writer(format, out, profile);
   std::optional<tbb::global_control> limit;
   if (jobs_ > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(jobs_));
-  const Progress progress(isatty(STDERR_FILENO) && output_.empty() ? false : isatty(STDERR_FILENO));
+  // A bar on a terminal, unless the report itself is going to that terminal.
+  const Progress progress(isatty(STDERR_FILENO) && (!output_.empty() || !isatty(STDOUT_FILENO)));
 
   CheckTotals all;
   for (const GlyphSource& source : sources) {
