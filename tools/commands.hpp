@@ -11,15 +11,20 @@
 
 namespace gf {
 
-/// What every subcommand has: a source, a selection and an output.
-class Subcommand {
+/// A subcommand of the application, which knows whether it was chosen.
+class Command {
  public:
   bool chosen() const { return command_ && command_->parsed(); }
 
  protected:
+  CLI::App* command_ = nullptr;
+};
+
+/// What the outline subcommands share: a source, a selection and an output.
+class Subcommand : public Command {
+ protected:
   CLI::App& add(CLI::App& app, const char* name, const char* description, const char* output_help);
 
-  CLI::App* command_ = nullptr;
   std::string source_;
   std::string output_;
   SourceArguments selection_;
@@ -43,14 +48,12 @@ class ProofCommand : public Subcommand {
   std::string compare_;
 };
 
-class CurveCommand {
+class CurveCommand : public Command {
  public:
   void add_to(CLI::App& app);
-  bool chosen() const { return command_ && command_->parsed(); }
   int run() const;
 
  private:
-  CLI::App* command_ = nullptr;
   std::optional<double> alpha_;
   std::vector<std::string> points_;
   bool inflection_start_ = false;
@@ -59,14 +62,12 @@ class CurveCommand {
   std::string output_;
 };
 
-class CheckCommand {
+class CheckCommand : public Command {
  public:
   void add_to(CLI::App& app);
-  bool chosen() const { return command_ && command_->parsed(); }
   int run() const;
 
  private:
-  CLI::App* command_ = nullptr;
   std::vector<std::string> sources_;
   SourceArguments selection_;
   std::string format_ = "text";

@@ -21,41 +21,17 @@ import subprocess
 import sys
 import tempfile
 
-from fontTools.pens.basePen import decomposeQuadraticSegment
 from fontTools.pens.recordingPen import DecomposingRecordingPen
 from fontTools.ttLib import TTFont
 
+from compare_outlines import segments  # the same reading of fontTools' drawing as the UFO check
+
 
 def contours_of(glyphset, name):
+    """Explicit segments per contour (fonts' contours are all closed), zero-length ones dropped."""
     pen = DecomposingRecordingPen(glyphset)
     glyphset[name].draw(pen)
-    contours, cur, start, pos = [], None, None, None
-    for op, args in pen.value:
-        if op == "moveTo":
-            cur, start, pos = [], args[0], args[0]
-        elif op == "lineTo":
-            cur.append((pos, args[0]))
-            pos = args[0]
-        elif op == "qCurveTo":
-            pts = list(args)
-            if pts[-1] is None:
-                pts = pts[:-1]
-                cur = []
-                start = pos = ((pts[-1][0] + pts[0][0]) / 2, (pts[-1][1] + pts[0][1]) / 2)
-                pts.append(start)
-            for c, p in decomposeQuadraticSegment(pts):
-                cur.append((pos, c, p))
-                pos = p
-        elif op == "curveTo":
-            cur.append((pos,) + tuple(args))
-            pos = args[-1]
-        elif op in ("closePath", "endPath"):
-            if op == "closePath" and pos != start:
-                cur.append((pos, start))
-            cur = [s for s in cur if any(p != s[0] for p in s)]  # drop zero-length segments
-            if cur:
-                contours.append((cur, op == "closePath"))
-    return contours
+    return [([s for s in c if any(p != s[0] for p in s)], True) for c in segments(pen.value)]
 
 
 def sub(a, b):
