@@ -229,11 +229,8 @@ struct FreetypeFont::Impl {
       varied = true;
     }
     FT_Done_MM_Var(library, mm);
+    // The location itself is applied by HarfBuzz, which draws the instance (see `instance`).
     for (std::size_t i = 0; i < axes.size(); ++i) location.push_back({axes[i].tag, coords[i] / 65536.0});
-    if (!varied) return;
-    // FreeType still reports glyph formats and errors at the location.
-    if (const FT_Error e = FT_Set_Var_Design_Coordinates(face, static_cast<FT_UInt>(coords.size()), coords.data()))
-      throw InputError(file + ": cannot set the design location: " + hex_error(e));
   }
 
 };
