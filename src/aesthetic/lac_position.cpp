@@ -31,17 +31,25 @@ auto graded_panels(F&& f, double start, double end, double singular) {
 
 cplx unit(double angle) { return {std::cos(angle), std::sin(angle)}; }
 
-// ∫_0^T e^{i(ψ*+στ)} |c|^p τ^p dτ = |c|^p e^{iψ*} Σ (iσ)^n T^{n+p+1} / (n! (n+p+1))   (§8.2 step 3)
-cplx touching_series(double psi_star, double sigma, double abs_c, double p, double T) {
+// ∫_{δ0}^{δ1} e^{i(ψ*+σδ)} |c|^p δ^p dδ = |c|^p e^{iψ*} Σ (iσ)^n/n! ∫ δ^{n+p} dδ termwise
+// (§8.2 step 3, generalised to a lower limit): each term is (δ1^k − δ0^k)/k with k = n+p+1,
+// written with expm1 so k near 0 stays accurate, and ln(δ1/δ0) when k = 0. With δ0 = 0 it
+// needs p > −1 (a finite length); otherwise any p, so ends astronomically close to ψ* work.
+cplx power_series(double psi_star, double sigma, double abs_c, double p, double delta0, double delta1) {
   cplx sum = 0.0;
   cplx factor = 1.0;  // (iσ)^n / n!
-  double power = std::pow(T, p + 1.0);
-  for (int n = 0; n < 80; ++n) {
-    const cplx term = factor * (power / (n + p + 1.0));
+  const double log_ratio = delta0 > 0.0 ? std::log(delta1 / delta0) : 0.0;
+  for (int n = 0; n < 100; ++n) {
+    const double k = n + p + 1.0;
+    double integral;
+    if (delta0 == 0.0) integral = std::pow(delta1, k) / k;
+    else if (k == 0.0) integral = log_ratio;
+    else if (k > 0.0) integral = -std::pow(delta1, k) * std::expm1(-k * log_ratio) / k;  // scaled by the larger end
+    else integral = std::pow(delta0, k) * std::expm1(k * log_ratio) / k;
+    const cplx term = factor * integral;
     sum += term;
     if (n > 3 && std::abs(term) <= 1e-18 * std::abs(sum)) break;
     factor *= cplx(0.0, sigma) / double(n + 1);
-    power *= T;
   }
   return std::pow(abs_c, p) * unit(psi_star) * sum;
 }
@@ -50,20 +58,18 @@ cplx touching_series(double psi_star, double sigma, double abs_c, double p, doub
 
 cplx singular_power_integral(double psi_star, double sigma, double abs_c, double p, double delta0, double delta1) {
   const auto f = [&](double delta) { return unit(psi_star + sigma * delta) * std::exp(p * std::log(abs_c * delta)); };
-  // Near the singular angle the series from 0 covers the whole interval in a few dozen
-  // multiply-adds: ∫_{δ0}^{δ1} = J(δ1) − J(δ0), without cancellation while δ0 ≤ δ1/2.
-  if (p > -1.0 && delta1 <= 1.0 && delta0 <= 0.5 * delta1)
-    return touching_series(psi_star, sigma, abs_c, p, delta1) -
-           (delta0 > 0.0 ? touching_series(psi_star, sigma, abs_c, p, delta0) : cplx(0.0));
+  // Near the singular angle the series does [δ0, min(δ1, 0.75)] in a few dozen multiply-adds
+  // however close δ0 is to 0 (no cancellation while δ0 is at most half the upper limit);
+  // graded panels do the rest.
   cplx total = 0.0;
   double d = delta0;
-  if (d == 0.0) {
-    const double tau = std::min(0.75, delta1);
-    total += touching_series(psi_star, sigma, abs_c, p, tau);
-    d = tau;
+  const double near_end = std::min(0.75, delta1);
+  if (delta0 <= 0.5 * near_end && (delta0 > 0.0 || p > -1.0)) {
+    total = power_series(psi_star, sigma, abs_c, p, delta0, near_end);
+    d = near_end;
   }
   // Each panel keeps the singularity at least its own length away (Bernstein ratio ≥ 3 + √8).
-  return total + graded_panels(f, d, delta1, 0.0);
+  return d < delta1 ? total + graded_panels(f, d, delta1, 0.0) : total;
 }
 
 cplx lac_position(const NormalisedLac& curve, double theta_a, double theta_b, std::optional<double> delta_b) {

@@ -52,6 +52,10 @@ std::optional<Triangle> triangle(Vec2 a, Vec2 b, Vec2 c, std::string& reason) {
     reason = "P1 coincides with an end point, so a tangent is undefined";
     return std::nullopt;
   }
+  if (std::abs(chord) == 0.0) {
+    reason = "the end points coincide";
+    return std::nullopt;
+  }
   const double turning = wrap(std::arg(t1) - std::arg(t0));
   if (std::abs(turning) < 1e-14) {
     reason = "the control points are collinear: a straight line, not an aesthetic curve";
@@ -122,12 +126,16 @@ SegmentFit fit_three_point(Vec2 p0, Vec2 p1, Vec2 p2, double alpha) {
       last_end = standard_end(NormalisedLac{alpha, lambda_of(alpha, td, xx)}, td, xx);
       return target - std::arg(last_end);
     };
+    // The ratio r = e^x may be astronomically small near the edge (0 ≤ α ≤ 1 reach it only as
+    // r → 0): the exact end distance and the series keep E accurate until u_end = r^{1−α}
+    // would leave the range of double.
+    const double x_min = -700.0 / std::max(std::abs(1.0 - alpha), 1.0);
     double lo = -1.0, hi = 0.0, f_lo = excess(lo), f_hi = target - 0.5 * td;  // E(0) = θ_d/2: the arc
     while (f_lo > 0.0) {
       hi = lo, f_hi = f_lo;
-      lo *= 2.0;
-      if (lo < -32.0) {
-        fit.reason = "too close to the edge of α's drawable region: the end curvature ratio would be below 1e-14";
+      lo = std::max(2.0 * lo, x_min);
+      if (hi == x_min) {
+        fit.reason = "too close to the edge of α's drawable region: the end curvature ratio would be below 1e-300";
         return fit;
       }
       f_lo = excess(lo);

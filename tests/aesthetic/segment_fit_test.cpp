@@ -87,7 +87,8 @@ TEST(ThreePoint, UndrawableTrianglesHaveNoSolution) {
   EXPECT_TRUE(fit_three_point({0, 0}, {1, 0}, {1, 3}, 0.5).ok());
   EXPECT_FALSE(fit_three_point({0, 0}, {1, 0}, {2, 0}, 1).ok());   // collinear
   EXPECT_FALSE(fit_three_point({0, 0}, {0, 0}, {2, 1}, 1).ok());   // no tangent
-  EXPECT_FALSE(fit_three_point({0, 0}, {1, 0}, {-1, -0.01}, 1).ok());  // turns by more than π
+  EXPECT_FALSE(fit_three_point({0, 0}, {1, 0}, {-1, 0}, 1).ok());  // turns by π
+  EXPECT_FALSE(fit_three_point({0, 0}, {1, 0}, {0, 0}, 1).ok());   // the ends coincide
 }
 
 TEST(ThreePoint, DrawableLimitMatchesTheTable) {
@@ -96,6 +97,22 @@ TEST(ThreePoint, DrawableLimitMatchesTheTable) {
       {-5, 1.0, 0.5462}, {-2, 2.0, 0.6073}, {-1, 0.2, 0.6668}, {-0.5, 3.0, 0.7925}, {-0.2, 1.0, 0.8614},
       {0.5, 2.0, 1.0},   {1.5, 1.0, 0.7510}, {2, 3.0, 0.6791},  {3, 0.2, 0.6000},   {10, 2.0, 0.5278}};
   for (const auto& r : rows) EXPECT_NEAR(drawable_limit(r.alpha, r.theta_d) / r.theta_d, r.ratio, 6e-5) << r.alpha;
+}
+
+TEST(ThreePoint, NearTheEdgeOfTheDrawableRegionTheEndsStillMatch) {
+  // For 0 ≤ α ≤ 1 every triangle is drawable, but as the angle at P0 nears the turning the
+  // end curvature ratio r falls toward 0: here r reaches 1e-14 … 1e-40 (lac-math.md §2.3).
+  for (const double alpha : {0.0, 0.5, 0.9, 1.0})
+    for (const double share : {0.97, 0.99}) {
+      const double td = 1.0, te = share * td, tf = td - te;
+      const Vec2 p1{std::sin(tf) / std::sin(td), 0.0}, p2{std::cos(te), std::sin(te)};
+      const SegmentFit fit = fit_three_point({0, 0}, p1, p2, alpha);
+      ASSERT_TRUE(fit.ok()) << alpha << " " << share << ": " << fit.reason;
+      const LogAestheticSegment& s = *fit.segment;
+      EXPECT_NEAR(distance(s.end().point, p2), 0.0, 1e-14) << alpha << " " << share;
+      EXPECT_NEAR(std::atan2(s.end().tangent.y, s.end().tangent.x), td, 1e-13) << alpha << " " << share;
+      EXPECT_LT(s.end().curvature / s.start().curvature, 1e-3);
+    }
 }
 
 TEST(ThreePoint, NearCircleHasNoCancellation) {
