@@ -39,17 +39,20 @@ cplx power_series(double psi_star, double sigma, double abs_c, double p, double 
   cplx sum = 0.0;
   cplx factor = 1.0;  // (iσ)^n / n!
   const double log_ratio = delta0 > 0.0 ? std::log(delta1 / delta0) : 0.0;
+  double upper = std::pow(delta1, p + 1.0);                       // δ1^k, k = n + p + 1
+  double lower = delta0 > 0.0 ? std::pow(delta0, p + 1.0) : 0.0;  // δ0^k
   for (int n = 0; n < 100; ++n) {
     const double k = n + p + 1.0;
     double integral;
-    if (delta0 == 0.0) integral = std::pow(delta1, k) / k;
+    if (std::abs(k) >= 0.5) integral = (upper - lower) / k;
     else if (k == 0.0) integral = log_ratio;
-    else if (k > 0.0) integral = -std::pow(delta1, k) * std::expm1(-k * log_ratio) / k;  // scaled by the larger end
-    else integral = std::pow(delta0, k) * std::expm1(k * log_ratio) / k;
+    else integral = delta0 > 0.0 ? lower * std::expm1(k * log_ratio) / k : upper / k;
     const cplx term = factor * integral;
     sum += term;
     if (n > 3 && std::abs(term) <= 1e-18 * std::abs(sum)) break;
     factor *= cplx(0.0, sigma) / double(n + 1);
+    upper *= delta1;
+    lower *= delta0;
   }
   return std::pow(abs_c, p) * unit(psi_star) * sum;
 }
@@ -58,12 +61,12 @@ cplx power_series(double psi_star, double sigma, double abs_c, double p, double 
 
 cplx singular_power_integral(double psi_star, double sigma, double abs_c, double p, double delta0, double delta1) {
   const auto f = [&](double delta) { return unit(psi_star + sigma * delta) * std::exp(p * std::log(abs_c * delta)); };
-  // Near the singular angle the series does [δ0, min(δ1, 0.75)] in a few dozen multiply-adds
-  // however close δ0 is to 0 (no cancellation while δ0 is at most half the upper limit);
-  // graded panels do the rest.
+  // Near the singular angle the series does [δ0, δ1] (or [δ0, 0.75] when δ1 > 1) in a few
+  // dozen multiply-adds however close δ0 is to 0 (no cancellation while δ0 is at most half
+  // the upper limit); graded panels do the rest.
   cplx total = 0.0;
   double d = delta0;
-  const double near_end = std::min(0.75, delta1);
+  const double near_end = delta1 <= 1.0 ? delta1 : 0.75;
   if (delta0 <= 0.5 * near_end && (delta0 > 0.0 || p > -1.0)) {
     total = power_series(psi_star, sigma, abs_c, p, delta0, near_end);
     d = near_end;

@@ -1,5 +1,6 @@
 #include "aesthetic/segment_fit.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <cstdint>
@@ -129,7 +130,8 @@ SegmentFit fit_three_point(Vec2 p0, Vec2 p1, Vec2 p2, double alpha) {
     // The ratio r = e^x may be astronomically small near the edge (0 ≤ α ≤ 1 reach it only as
     // r → 0): the exact end distance and the series keep E accurate until u_end = r^{1−α}
     // would leave the range of double.
-    const double x_min = -700.0 / std::max(std::abs(1.0 - alpha), 1.0);
+    // (Also keeps δ_end^{p+1}, the size of the integral, finite: |(1−α)(p+1)| = |α|.)
+    const double x_min = -700.0 / std::max({std::abs(1.0 - alpha), std::abs(alpha), 1.0});
     double lo = -1.0, hi = 0.0, f_lo = excess(lo), f_hi = target - 0.5 * td;  // E(0) = θ_d/2: the arc
     while (f_lo > 0.0) {
       hi = lo, f_hi = f_lo;
@@ -139,6 +141,10 @@ SegmentFit fit_three_point(Vec2 p0, Vec2 p1, Vec2 p2, double alpha) {
         return fit;
       }
       f_lo = excess(lo);
+    }
+    if (!std::isfinite(f_lo)) {
+      fit.reason = "too close to the edge of α's drawable region for double precision";
+      return fit;
     }
     std::uintmax_t iterations = 100;
     const auto [a, b] = boost::math::tools::toms748_solve(excess, lo, hi, f_lo, f_hi,
