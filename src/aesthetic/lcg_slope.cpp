@@ -62,9 +62,9 @@ LcgSlope estimate_lcg_slope(std::span<const Segment> curve, const LcgOptions& op
     if (!k || !ks || *k == 0.0) continue;
     k_min = std::min(k_min, std::abs(*k));
     k_max = std::max(k_max, std::abs(*k));
+    if (*ks == 0.0) continue;
     // Along s, |κ| must change one way only for the LCG to exist.
     ((*k > 0) == (*ks > 0) ? rising : falling)++;
-    if (*ks == 0.0) continue;
     samples.push_back({-std::log(std::abs(*k)), std::log(std::abs(*k / *ks))});
   }
   if (k_max > 0.0 && k_max / k_min < options.arc_curvature_ratio) {

@@ -34,7 +34,6 @@ struct GlyphChecker {
     Finding f;
     f.check = check;
     f.severity = profile.severity_of(check);
-    f.glyph = glyph.name;
     f.contour = contour;
     f.node = node;
     f.point = point;
@@ -230,8 +229,9 @@ struct GlyphChecker {
       }
       if (angle > profile.kink_min_deg) continue;  // a corner
       // At a smooth join, line–curve joins included: κ should not jump.
-      const auto& [ki, ko] = std::pair{j.curvature_in, j.curvature_out};
+      const std::optional<double> ki = j.curvature_in, ko = j.curvature_out;
       const double upm_ = upm();
+      report.fairness.total_variation += std::abs(capped(ki) - capped(ko)) * upm_;
       if (!ki || !ko) {
         Finding& f = add("g2-jump", ci, node, j.point);
         f.unit = "ratio";
@@ -239,7 +239,6 @@ struct GlyphChecker {
         continue;
       }
       const double jump = std::abs(*ki - *ko), larger = std::max(std::abs(*ki), std::abs(*ko));
-      report.fairness.total_variation += std::abs(capped(ki) - capped(ko)) * upm_;
       if (larger * upm_ >= profile.g2_large_curvature_em) {
         if (jump / larger <= profile.g2_relative) continue;
         Finding& f = add("g2-jump", ci, node, j.point);

@@ -15,7 +15,6 @@ const char* to_string(Severity s);
 struct Finding {
   std::string check;  ///< the check id: "kink", "g2-jump", …
   Severity severity = Severity::warning;
-  std::string glyph;
   int contour = -1;                ///< -1: the whole glyph
   std::optional<int> node;         ///< on-curve node index in the contour
   std::optional<int> segment;      ///< segment index (starting at `node`)

@@ -28,13 +28,10 @@ std::string place(const Finding& f) {
 }
 
 std::string counts_line(const CheckTotals& t) {
-  std::string out = std::to_string(t.glyphs) + " glyphs checked, " + std::to_string(t.glyphs_with_findings) +
-                    " with findings: " + std::to_string(t.by_severity.count(Severity::error) ? t.by_severity.at(Severity::error) : 0) +
-                    " errors, " +
-                    std::to_string(t.by_severity.count(Severity::warning) ? t.by_severity.at(Severity::warning) : 0) +
-                    " warnings, " + std::to_string(t.by_severity.count(Severity::info) ? t.by_severity.at(Severity::info) : 0) +
-                    " info; median curvature total variation " + fixed(t.median_total_variation());
-  return out;
+  return std::to_string(t.glyphs) + " glyphs checked, " + std::to_string(t.glyphs_with_findings) +
+         " with findings: " + std::to_string(t.count(Severity::error)) + " errors, " +
+         std::to_string(t.count(Severity::warning)) + " warnings, " + std::to_string(t.count(Severity::info)) +
+         " info; median curvature total variation " + fixed(t.median_total_variation());
 }
 
 std::string per_check_line(const CheckTotals& t) {
@@ -50,9 +47,9 @@ json summary_json(const CheckTotals& t) {
   for (const std::string& id : check_ids()) by_check[id] = t.by_check.count(id) ? t.by_check.at(id) : 0;
   return {{"glyphs", t.glyphs},
           {"glyphs_with_findings", t.glyphs_with_findings},
-          {"errors", t.by_severity.count(Severity::error) ? t.by_severity.at(Severity::error) : 0},
-          {"warnings", t.by_severity.count(Severity::warning) ? t.by_severity.at(Severity::warning) : 0},
-          {"info", t.by_severity.count(Severity::info) ? t.by_severity.at(Severity::info) : 0},
+          {"errors", t.count(Severity::error)},
+          {"warnings", t.count(Severity::warning)},
+          {"info", t.count(Severity::info)},
           {"by_check", by_check},
           {"median_total_variation", t.median_total_variation()}};
 }
@@ -209,6 +206,11 @@ double CheckTotals::median_total_variation() const {
   std::vector<double> v = total_variations;
   std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());
   return v[v.size() / 2];
+}
+
+int CheckTotals::count(Severity s) const {
+  const auto it = by_severity.find(s);
+  return it == by_severity.end() ? 0 : it->second;
 }
 
 int CheckTotals::at_least(Severity s) const {

@@ -37,6 +37,7 @@ struct CheckTotals {
   void add(const GlyphReport& r);
   void add(const CheckTotals& other);
   double median_total_variation() const;
+  int count(Severity s) const;
   int at_least(Severity s) const;
 };
 

@@ -10,9 +10,8 @@
 #include <cairo-svg.h>
 #include <cairo.h>
 
-#include "geom/critical_points.hpp"
+#include "check/contour_checks.hpp"
 #include "geom/curvature_profile.hpp"
-#include "geom/join.hpp"
 #include "io/atomic_output.hpp"
 #include "io/input_error.hpp"
 #include "render/cairo_helpers.hpp"
@@ -143,21 +142,18 @@ void paint_page(cairo_t* cr, const ProofGlyph& pg, const FontInfo& font, const P
   paint_legend(cr, options);
 }
 
-// Counts a designer scans the overview for.
+// The counts a designer scans the overview for, from the same checks `glyphfair check` runs
+// (so a proof and a report never disagree).
 struct GlyphSummary {
-  std::size_t inflections = 0, curvature_extrema = 0, hv_inside = 0, kinks = 0;
+  int inflections = 0, curvature_extrema = 0, missing_extrema = 0, kinks = 0;
 };
 
-GlyphSummary summarise(const Outline& o) {
-  GlyphSummary s;
-  for (const Contour& c : o.contours) {
-    for (const Segment& seg : c.segments) {
-      const CriticalPoints cp = critical_points(seg);
-      s.inflections += cp.inflections.size();
-      s.curvature_extrema += cp.curvature_extrema.size();
-      s.hv_inside += cp.axis_extrema.size();
-    }
-    for (const Join& j : joins_of(c)) s.kinks += j.kind == JoinKind::kink;
+GlyphSummary summarise(const Glyph& g, const FontInfo& font) {
+  const GlyphReport r = check_glyph(g, font, *check_profile("text"));
+  GlyphSummary s{r.fairness.inflections, r.fairness.curvature_extrema, 0, 0};
+  for (const Finding& f : r.findings) {
+    s.missing_extrema += f.check == "missing-extremum";
+    s.kinks += f.check == "kink";
   }
   return s;
 }
@@ -174,7 +170,7 @@ void paint_overview(cairo_t* cr, std::span<const ProofGlyph> glyphs, const FontI
   draw::set(cr, colour::ink);
   draw::text(cr, {page::header.x0, page::header.y0 + 14}, "Overview", 16, true);
   char facts[160];
-  std::snprintf(facts, sizeof facts, "%zu glyphs   UPM %g   per glyph: inflections, curvature extrema, H/V extrema inside segments, kinks",
+  std::snprintf(facts, sizeof facts, "%zu glyphs   UPM %g   per glyph: inflections, curvature extrema, missing extrema, kinks",
                 glyphs.size(), font.units_per_em);
   draw::text(cr, {page::header.x0, page::header.y0 + 28}, facts, 7.5);
   const std::string right = options.title + "   " + std::to_string(sheet + 1) + " / " + std::to_string(sheets);
@@ -196,13 +192,13 @@ void paint_overview(cairo_t* cr, std::span<const ProofGlyph> glyphs, const FontI
     extend(content, g.outline);
     const PanelMap map = fit(content, cell);
     paint_outline(cr, map, g.outline, colour::ink, true);
-    const GlyphSummary s = summarise(g.outline);
+    const GlyphSummary s = summarise(g, font);
     draw::set(cr, colour::ink);
     draw::text(cr, {x0 + 5, y0 + ch - 15}, g.name, 7.5, true);
     char counts[96];
-    std::snprintf(counts, sizeof counts, "%zu  %zu  %zu  %zu   p. %zu", s.inflections, s.curvature_extrema, s.hv_inside,
+    std::snprintf(counts, sizeof counts, "%d  %d  %d  %d   p. %zu", s.inflections, s.curvature_extrema, s.missing_extrema,
                   s.kinks, sheets + first + k + 1);
-    draw::set(cr, s.kinks || s.hv_inside ? colour::join_kink : colour::metrics);
+    draw::set(cr, s.kinks || s.missing_extrema ? colour::join_kink : colour::metrics);
     draw::text(cr, {x0 + 5, y0 + ch - 5}, counts, 6.5);
   }
 }
