@@ -36,12 +36,15 @@ double LogAestheticSegment::length() const { return scale() * standard_end_lengt
 LacPoint LogAestheticSegment::at_standard(double theta, cplx c, bool exact_end) const {
   const double S = scale();
   const double a = curve_.alpha, L = curve_.lambda, x = log_end_ratio_;
-  double k_std = curve_.curvature_of_theta(theta);
-  std::optional<double> dk_std = curve_.curvature_derivative_of_theta(theta);
-  if (exact_end) {  // κ = r = e^x and dκ/ds = −Λ r^{α+1} at θ_d
+  double k_std;
+  std::optional<double> dk_std;
+  if (exact_end) {  // κ = r = e^x and dκ/ds = −Λ r^{α+1} at θ_d (α = −1 also where r = 0)
     k_std = std::exp(x);
     const double v = L == 0.0 ? 0.0 : a == -1.0 ? -L : -L * std::exp((a + 1.0) * x);
-    dk_std = std::isfinite(v) ? std::optional<double>(v) : std::nullopt;
+    if (std::isfinite(v)) dk_std = v;
+  } else {
+    k_std = curve_.curvature_of_theta(theta);
+    dk_std = curve_.curvature_derivative_of_theta(theta);
   }
   const double m = mirrored_ ? -1.0 : 1.0;
   const double g = m * (reversed_ ? -1.0 : 1.0);
