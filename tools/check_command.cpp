@@ -16,6 +16,7 @@
 #include "exit_codes.hpp"
 #include "io/atomic_output.hpp"
 #include "io/input_error.hpp"
+#include "progress.hpp"
 
 namespace gf {
 
@@ -25,22 +26,6 @@ namespace {
 // written in order, a chunk at a time, so memory stays flat however large the font.
 constexpr std::size_t chunk_size = 512;
 
-class Progress {
- public:
-  explicit Progress(bool on) : on_(on) {}
-  void show(const std::string& what, std::size_t done, std::size_t total) const {
-    if (!on_ || total == 0) return;
-    const int width = 30, filled = static_cast<int>(width * done / total);
-    std::cerr << "\r" << what << " [" << std::string(static_cast<std::size_t>(filled), '=')
-              << std::string(static_cast<std::size_t>(width - filled), ' ') << "] " << done << "/" << total << std::flush;
-  }
-  void clear() const {
-    if (on_) std::cerr << "\r" << std::string(79, ' ') << "\r" << std::flush;
-  }
-
- private:
-  bool on_;
-};
 
 }  // namespace
 

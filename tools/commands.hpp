@@ -62,6 +62,21 @@ class CurveCommand : public Command {
   std::string output_;
 };
 
+class FairCommand : public Subcommand {
+ public:
+  void add_to(CLI::App& app);
+  int run() const;
+
+ private:
+  std::string profile_ = "text";
+  std::string continuity_ = "g2";
+  std::optional<double> tolerance_;
+  std::optional<double> corner_angle_;
+  bool no_round_ = false;
+  std::string proof_;
+  int jobs_ = 0;
+};
+
 class CheckCommand : public Command {
  public:
   void add_to(CLI::App& app);

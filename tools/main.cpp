@@ -14,10 +14,12 @@ int main(int argc, char** argv) {
   gf::ProofCommand proof;
   gf::CurveCommand curve;
   gf::CheckCommand check;
+  gf::FairCommand fair;
   convert.add_to(app);
   proof.add_to(app);
   curve.add_to(app);
   check.add_to(app);
+  fair.add_to(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -30,6 +32,7 @@ int main(int argc, char** argv) {
     if (proof.chosen()) return proof.run();
     if (curve.chosen()) return curve.run();
     if (check.chosen()) return check.run();
+    if (fair.chosen()) return fair.run();
     return gf::exit_code::bad_input;
   } catch (const gf::InputError& e) {
     std::cerr << "glyphfair: error: " << e.what() << "\n";

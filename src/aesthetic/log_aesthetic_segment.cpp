@@ -89,4 +89,8 @@ std::vector<LacPoint> LogAestheticSegment::sample(int n) const {
   return out;
 }
 
+LogAestheticSegment LogAestheticSegment::reversed_direction() const {
+  return LogAestheticSegment(curve_, theta_d_, log_end_ratio_, origin_, z_, mirrored_, !reversed_, end_position_);
+}
+
 }  // namespace gf

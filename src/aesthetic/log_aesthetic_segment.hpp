@@ -46,6 +46,8 @@ class LogAestheticSegment {
   LacPoint at(double sigma) const;
   /// n + 1 points uniform in arc length from P0 to P2, accumulated piece by piece: O(n).
   std::vector<LacPoint> sample(int n) const;
+  /// The same curve traversed from P2 to P0.
+  LogAestheticSegment reversed_direction() const;
 
  private:
   LacPoint at_standard(double theta, std::complex<double> c, bool exact_end) const;

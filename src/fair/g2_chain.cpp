@@ -21,6 +21,10 @@ std::optional<Vec2> tangent_intersection(Vec2 q0, Vec2 d0, Vec2 q1, Vec2 d1) {
   return q0 + d0 * t;
 }
 
+constexpr double min_end_curvature_ratio = 1e-4;
+
+Vec2 direction(double angle) { return {std::cos(angle), std::sin(angle)}; }
+
 double max_abs(const std::vector<double>& v) {
   double m = 0.0;
   for (const double x : v) m = std::max(m, std::abs(x));
@@ -29,21 +33,47 @@ double max_abs(const std::vector<double>& v) {
 
 }  // namespace
 
+bool tangents_meet_in_front(const LacChain& chain, std::size_t i) {
+  const std::size_t j = (i + 1) % chain.points.size();
+  return tangent_intersection(chain.points[i], direction(chain.tangent_angles[i]), chain.points[j],
+                              direction(chain.tangent_angles[j]))
+      .has_value();
+}
+
+SegmentFit build_chain_segment(const LacChain& chain, std::size_t i) {
+  const std::size_t n = chain.points.size();
+  const std::size_t j = (i + 1) % n;
+  const Vec2 q0 = chain.points[i], q1 = chain.points[j];
+  const std::optional<Vec2> p1 =
+      tangent_intersection(q0, direction(chain.tangent_angles[i]), q1, direction(chain.tangent_angles[j]));
+  if (!p1) return {std::nullopt, "its tangents do not meet in front of both ends"};
+  const bool last = i + 1 == chain.segment_count();
+  if (!chain.closed && i == 0 && chain.zero_curvature_start) return fit_inflection_start(q0, *p1, q1);
+  if (!chain.closed && last && chain.zero_curvature_end) {
+    SegmentFit fit = fit_inflection_start(q1, *p1, q0);
+    if (fit.ok()) fit.segment = fit.segment->reversed_direction();
+    return fit;
+  }
+  SegmentFit fit = fit_three_point(q0, *p1, q1, chain.alphas[i]);
+  // Near the edge of the drawable region one end's curvature runs off towards 0 or ∞: a
+  // segment no glyph wants, and one that is slow and ill-conditioned to evaluate.
+  if (fit.ok()) {
+    const double a = std::abs(fit.segment->start().curvature), b = std::abs(fit.segment->end().curvature);
+    if (std::min(a, b) < min_end_curvature_ratio * std::max(a, b))
+      return {std::nullopt, "its end curvatures differ by more than a factor of 10^4"};
+  }
+  return fit;
+}
+
 ChainSegments build_chain(const LacChain& chain) {
   ChainSegments out;
-  const std::size_t n = chain.points.size();
-  for (std::size_t i = 0; i + 1 < n; ++i) {
-    const Vec2 d0{std::cos(chain.tangent_angles[i]), std::sin(chain.tangent_angles[i])};
-    const Vec2 d1{std::cos(chain.tangent_angles[i + 1]), std::sin(chain.tangent_angles[i + 1])};
-    const std::optional<Vec2> p1 = tangent_intersection(chain.points[i], d0, chain.points[i + 1], d1);
-    if (!p1) {
-      out.segments.clear();
-      out.reason = "segment " + std::to_string(i) + ": its tangents do not meet in front of both ends";
-      return out;
-    }
-    SegmentFit fit = fit_three_point(chain.points[i], *p1, chain.points[i + 1], chain.alphas[i]);
+  const std::size_t count = chain.segment_count();
+  out.segments.reserve(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    SegmentFit fit = build_chain_segment(chain, i);
     if (!fit.ok()) {
       out.segments.clear();
+      out.failed_segment = i;
       out.reason = "segment " + std::to_string(i) + ": " + fit.reason;
       return out;
     }
@@ -52,9 +82,13 @@ ChainSegments build_chain(const LacChain& chain) {
   return out;
 }
 
-std::vector<double> curvature_mismatch(const std::vector<LogAestheticSegment>& segments) {
+std::vector<double> curvature_mismatch(const LacChain& chain, const std::vector<LogAestheticSegment>& segments) {
   std::vector<double> d;
-  for (std::size_t j = 1; j < segments.size(); ++j) d.push_back(segments[j - 1].end().curvature - segments[j].start().curvature);
+  const std::size_t n = segments.size();
+  for (std::size_t k = 0; k < chain.free_junction_count(); ++k) {
+    const std::size_t j = chain.first_free_junction() + k;  // between segment j−1 and j
+    d.push_back(segments[(j + n - 1) % n].end().curvature - segments[j % n].start().curvature);
+  }
   return d;
 }
 
@@ -66,32 +100,43 @@ G2Result make_g2(LacChain chain, double tolerance, int max_iterations) {
     result.chain = std::move(chain);
     return result;
   }
-  std::vector<double> d = curvature_mismatch(built.segments);
-  const int m = static_cast<int>(d.size());  // interior junctions 1 … m
+  std::vector<double> d = curvature_mismatch(chain, built.segments);
+  const int m = static_cast<int>(d.size());
+  const std::size_t first = chain.first_free_junction();
   constexpr double h = 1e-7;
   for (result.iterations = 0; result.iterations < max_iterations && max_abs(d) > tolerance; ++result.iterations) {
     Eigen::MatrixXd jacobian = Eigen::MatrixXd::Zero(m, m);
     for (int c = 0; c < m; ++c) {
+      // Turning φ_j moves only the segments on either side of junction j.
       LacChain moved = chain;
-      moved.tangent_angles[static_cast<std::size_t>(c) + 1] += h;
-      const ChainSegments probe = build_chain(moved);
-      if (!probe.ok()) {
-        result.reason = "junction " + std::to_string(c + 1) + " sits at the edge of its feasible range";
-        break;
+      const std::size_t j = first + static_cast<std::size_t>(c), n = built.segments.size();
+      moved.tangent_angles[j] += h;
+      std::vector<LogAestheticSegment> probe = built.segments;
+      for (const std::size_t i : {(j + n - 1) % n, j % n}) {
+        SegmentFit fit = build_chain_segment(moved, i);
+        if (!fit.ok()) {
+          result.reason = "junction " + std::to_string(j) + " sits at the edge of its feasible range";
+          break;
+        }
+        probe[i] = std::move(*fit.segment);
       }
-      const std::vector<double> dp = curvature_mismatch(probe.segments);
-      // D_j depends on φ_{j−1}, φ_j, φ_{j+1} only: a tridiagonal Jacobian.
-      for (int r = std::max(0, c - 1); r <= std::min(m - 1, c + 1); ++r) jacobian(r, c) = (dp[r] - d[r]) / h;
+      if (!result.reason.empty()) break;
+      const std::vector<double> dp = curvature_mismatch(moved, probe);
+      // D_j depends on φ_{j−1}, φ_j, φ_{j+1} only (cyclically for a closed chain).
+      for (int r = 0; r < m; ++r) {
+        const int gap = std::abs(r - c);
+        if (gap <= 1 || (chain.closed && gap == m - 1)) jacobian(r, c) = (dp[r] - d[r]) / h;
+      }
     }
     if (!result.reason.empty()) break;
     const Eigen::VectorXd step = jacobian.fullPivLu().solve(-Eigen::Map<const Eigen::VectorXd>(d.data(), m));
     bool improved = false;
     for (double lambda = 1.0; lambda > 1e-6; lambda *= 0.5) {
       LacChain trial = chain;
-      for (int j = 0; j < m; ++j) trial.tangent_angles[static_cast<std::size_t>(j) + 1] += lambda * step(j);
+      for (int j = 0; j < m; ++j) trial.tangent_angles[first + static_cast<std::size_t>(j)] += lambda * step(j);
       ChainSegments attempt = build_chain(trial);
       if (!attempt.ok()) continue;
-      const std::vector<double> dt = curvature_mismatch(attempt.segments);
+      const std::vector<double> dt = curvature_mismatch(trial, attempt.segments);
       if (max_abs(dt) < max_abs(d)) {
         chain = std::move(trial);
         built = std::move(attempt);

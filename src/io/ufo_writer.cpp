@@ -105,11 +105,9 @@ void write_text(const fs::path& path, const std::string& text) {
 
 }  // namespace
 
-void write_ufo(const GlyphSet& glyphs, const fs::path& target, std::span<const fs::path> inputs) {
-  AtomicOutput out(target, AtomicOutput::Kind::directory, inputs);
-  const fs::path root = out.staging_path();
-  const FontInfo& f = glyphs.font;
-
+UfoWriter::UfoWriter(const fs::path& target, const FontInfo& f, std::span<const fs::path> inputs)
+    : target_(target), out_(target, AtomicOutput::Kind::directory, inputs) {
+  const fs::path root = out_.staging_path();
   write_text(root / "metainfo.plist",
              plist_to_xml(plist_dict({{"creator", {std::string("org.glyphfair")}}, {"formatVersion", {3LL}}})));
   PlistDict info{{"unitsPerEm", number(f.units_per_em)},
@@ -122,23 +120,32 @@ void write_ufo(const GlyphSet& glyphs, const fs::path& target, std::span<const f
   write_text(root / "fontinfo.plist", plist_to_xml(plist_dict(std::move(info))));
   write_text(root / "layercontents.plist",
              plist_to_xml(plist_array({plist_array({{std::string("public.default")}, {std::string("glyphs")}})})));
-
   std::error_code ec;
   fs::create_directory(root / "glyphs", ec);
   if (ec) throw OutputError(target.string() + ": cannot create glyphs/: " + ec.message());
-  std::set<std::string> taken;
-  PlistDict contents;
-  PlistArray order;
-  for (const Glyph& g : glyphs.glyphs) {
-    if (contents.count(g.name)) continue;  // a name can be written once
-    const std::string file = glif_file_name(g.name, taken);
-    write_text(root / "glyphs" / file, glif_xml(g));
-    contents[g.name] = {file};
-    order.push_back({g.name});
-  }
-  write_text(root / "glyphs" / "contents.plist", plist_to_xml(plist_dict(std::move(contents))));
-  write_text(root / "lib.plist", plist_to_xml(plist_dict({{"public.glyphOrder", plist_array(std::move(order))}})));
-  out.commit();
+}
+
+UfoWriter::~UfoWriter() = default;
+
+void UfoWriter::add(const Glyph& g) {
+  if (contents_.count(g.name)) return;  // a name can be written once
+  const std::string file = glif_file_name(g.name, taken_);
+  write_text(out_.staging_path() / "glyphs" / file, glif_xml(g));
+  contents_[g.name] = {file};
+  order_.push_back({g.name});
+}
+
+void UfoWriter::commit() {
+  const fs::path root = out_.staging_path();
+  write_text(root / "glyphs" / "contents.plist", plist_to_xml(plist_dict(std::move(contents_))));
+  write_text(root / "lib.plist", plist_to_xml(plist_dict({{"public.glyphOrder", plist_array(std::move(order_))}})));
+  out_.commit();
+}
+
+void write_ufo(const GlyphSet& glyphs, const fs::path& target, std::span<const fs::path> inputs) {
+  UfoWriter writer(target, glyphs.font, inputs);
+  for (const Glyph& g : glyphs.glyphs) writer.add(g);
+  writer.commit();
 }
 
 }  // namespace gf

@@ -5,9 +5,31 @@
 #include <filesystem>
 #include <span>
 
+#include <set>
+#include <string>
+
 #include "geom/contour.hpp"
+#include "io/atomic_output.hpp"
+#include "io/plist.hpp"
 
 namespace gf {
+
+/// A UFO written a glyph at a time (so a whole CJK font need not be in memory), into a staging
+/// directory that commit() renames into place; never over one of `inputs`. Throws OutputError.
+class UfoWriter {
+ public:
+  UfoWriter(const std::filesystem::path& target, const FontInfo& font, std::span<const std::filesystem::path> inputs = {});
+  ~UfoWriter();
+  void add(const Glyph& glyph);
+  void commit();
+
+ private:
+  std::filesystem::path target_;
+  AtomicOutput out_;
+  std::set<std::string> taken_;
+  PlistDict contents_;
+  PlistArray order_;
+};
 
 /// Writes atomically (a staging directory renamed into place); never over one of `inputs`.
 /// Throws OutputError.

@@ -1,0 +1,181 @@
+#include "fair/contour_fairing.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "fair/contour_plan.hpp"
+#include "fair/cubic_writeback.hpp"
+#include "fair/grid_rounding.hpp"
+#include "fair/run_fairing.hpp"
+#include "geom/polyline_distance.hpp"
+
+namespace gf {
+
+namespace {
+
+// Points along a contour, dense enough that chords stay within a small fraction of a unit of
+// the curve for glyph-sized curvature.
+std::vector<Vec2> contour_samples(const Contour& c) {
+  std::vector<Vec2> out;
+  for (const Segment& s : c.segments) {
+    if (is_line(s)) {
+      out.push_back(start_point(s));
+      continue;
+    }
+    double polygon = 0.0;
+    Vec2 last = start_point(s);
+    for_each_point(s, [&](Vec2 q) { polygon += distance(last, q), last = q; });
+    const int n = std::clamp(static_cast<int>(polygon / 3.0), 16, 256);
+    for (int k = 0; k < n; ++k) out.push_back(point_at(s, static_cast<double>(k) / n));
+  }
+  if (!c.segments.empty()) out.push_back(c.closed ? start_point(c.segments.front()) : end_point(c.segments.back()));
+  return out;
+}
+
+struct Budgets {
+  double chain, cubic;
+};
+
+// Assembles the faired pieces in order; nodes where two pieces meet are merged.
+class NodeAssembler {
+ public:
+  void append(std::vector<OutlineNode> piece, bool smooth_join) {
+    if (piece.empty()) return;
+    if (!nodes_.empty() && distance(nodes_.back().point, piece.front().point) < 1e-9) {
+      OutlineNode& joint = nodes_.back();
+      joint.out_handle = piece.front().out_handle;
+      joint.smooth = smooth_join;
+      if (piece.front().grid_step) joint.grid_step = piece.front().grid_step;
+      piece.erase(piece.begin());
+    }
+    for (OutlineNode& n : piece) nodes_.push_back(std::move(n));
+  }
+  /// A closed contour: the last node is the first one again.
+  void close(bool smooth_join) {
+    if (nodes_.size() > 1 && distance(nodes_.back().point, nodes_.front().point) < 1e-9) {
+      nodes_.front().in_handle = nodes_.back().in_handle;
+      nodes_.front().smooth = smooth_join;
+      nodes_.pop_back();
+    }
+  }
+  std::vector<OutlineNode>& nodes() { return nodes_; }
+
+ private:
+  std::vector<OutlineNode> nodes_;
+};
+
+struct Attempt {
+  std::vector<OutlineNode> nodes;
+  std::string failure;
+  double mismatch = 0.0;
+};
+
+Attempt fair_with_budgets(const ContourPlan& plan, const FairSettings& settings, Budgets budgets) {
+  Attempt a;
+  NodeAssembler assembler;
+  bool previous_ends_smooth = false;  // how the last piece ended: the join to the next piece
+  for (const auto& piece : plan.pieces) {
+    if (const Line* line = std::get_if<Line>(&piece)) {
+      OutlineNode start, end;
+      start.point = line->start(), end.point = line->end();
+      start.smooth = previous_ends_smooth;
+      assembler.append({start, end}, previous_ends_smooth);
+      previous_ends_smooth = false;
+      continue;
+    }
+    const SmoothRun& run = std::get<SmoothRun>(piece);
+    const FairedRun faired = fair_run(run, settings, budgets.chain);
+    if (!faired.ok) {
+      a.failure = faired.reason;
+      return a;
+    }
+    const bool start_smooth = !run.closed && run.start.kind == RunEndKind::line;
+    for (std::size_t k = 0; k < faired.chains.size(); ++k) {
+      const FairedChain& chain = faired.chains[k];
+      a.mismatch = std::max(a.mismatch, chain.max_mismatch_relative);
+      ChainCubics cubics = write_chain_as_cubics(chain, budgets.cubic);
+      if (chain.closed) {
+        a.nodes = std::move(cubics.nodes);
+        return a;
+      }
+      const bool join_smooth = k > 0 || start_smooth || previous_ends_smooth;
+      assembler.append(std::move(cubics.nodes), join_smooth);
+    }
+    previous_ends_smooth = !run.closed && run.end.kind == RunEndKind::line;
+    if (!assembler.nodes().empty()) assembler.nodes().back().smooth = previous_ends_smooth;
+  }
+  if (plan.closed) {
+    // The first node's join: the last piece's end kind, or, for a line first, the first run's start.
+    bool smooth = previous_ends_smooth;
+    if (const SmoothRun* first = std::get_if<SmoothRun>(&plan.pieces.front()))
+      smooth = first->start.kind == RunEndKind::line;
+    assembler.close(smooth);
+  }
+  a.nodes = std::move(assembler.nodes());
+  return a;
+}
+
+// Start where the source starts when that node survived, else at the nearest node.
+void rotate_to_start(std::vector<OutlineNode>& nodes, Vec2 source_start) {
+  if (nodes.empty()) return;
+  std::size_t best = 0;
+  for (std::size_t i = 1; i < nodes.size(); ++i)
+    if (distance(nodes[i].point, source_start) < distance(nodes[best].point, source_start)) best = i;
+  std::rotate(nodes.begin(), nodes.begin() + static_cast<std::ptrdiff_t>(best), nodes.end());
+}
+
+}  // namespace
+
+double contour_distance(const Contour& a, const Contour& b) {
+  const std::vector<Vec2> pa = contour_samples(a), pb = contour_samples(b);
+  if (pa.empty() || pb.empty()) return pa.size() == pb.size() ? 0.0 : 1e300;
+  const PolylineGrid ga(pa, 8.0), gb(pb, 8.0);
+  return std::max(directed_hausdorff(pa, gb), directed_hausdorff(pb, ga));
+}
+
+ContourFairing fair_contour(const Contour& source, const FairSettings& settings) {
+  ContourFairing out;
+  out.contour = source;
+  const ContourPlan plan = plan_contour(source, settings.corner_angle_deg);
+  if (plan.pieces.empty()) {
+    out.reason = "nothing to fair (every segment degenerate)";
+    return out;
+  }
+  const bool has_curve = std::any_of(plan.pieces.begin(), plan.pieces.end(),
+                                     [](const auto& p) { return std::holds_alternative<SmoothRun>(p); });
+  if (!has_curve) {
+    out.faired = true;  // lines only: already as fair as it gets
+    return out;
+  }
+  const double rounding = settings.round_to_integers ? 0.5 : 0.0;
+  double available = std::max(settings.tolerance_units - rounding, 0.25 * settings.tolerance_units);
+  for (int attempt = 0; attempt < 3; ++attempt, available *= 0.5) {
+    Attempt a = fair_with_budgets(plan, settings, {0.4 * available, 0.6 * available});
+    if (!a.failure.empty()) {
+      out.reason = a.failure;
+      continue;
+    }
+    rotate_to_start(a.nodes, source.node_point(0));
+    int inexact = 0;
+    if (settings.round_to_integers) {
+      RoundedNodes r = round_to_grid(a.nodes, source.closed);
+      a.nodes = std::move(r.nodes);
+      inexact = r.inexact_g1;
+    }
+    Contour faired = to_contour(a.nodes, source.closed);
+    const double d = contour_distance(faired, source);
+    if (d <= settings.tolerance_units) {
+      out.contour = std::move(faired);
+      out.faired = true;
+      out.reason.clear();
+      out.deviation = d;
+      out.max_curvature_mismatch = a.mismatch;
+      out.inexact_g1 = inexact;
+      return out;
+    }
+    out.reason = "the faired contour came out " + std::to_string(d) + " units from the source";
+  }
+  return out;
+}
+
+}  // namespace gf

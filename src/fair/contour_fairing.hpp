@@ -1,0 +1,28 @@
+// One contour faired end to end: planned into lines and smooth runs, every run rebuilt as G2
+// log-aesthetic chains, written back as cubics, rounded to the grid, and measured against the
+// source. A contour that cannot be faired within the tolerance is returned unchanged, with
+// the reason: the fairing never loses the source's shape.
+#pragma once
+
+#include <string>
+
+#include "fair/fair_options.hpp"
+#include "geom/contour.hpp"
+
+namespace gf {
+
+struct ContourFairing {
+  Contour contour;         ///< faired, or the source unchanged when `faired` is false
+  bool faired = false;
+  std::string reason;      ///< why the source was kept
+  double deviation = 0.0;  ///< two-sided Hausdorff distance to the source, font units (measured)
+  double max_curvature_mismatch = 0.0;  ///< of the log-aesthetic chains, relative
+  int inexact_g1 = 0;      ///< smooth nodes the grid could not keep exactly collinear
+};
+
+ContourFairing fair_contour(const Contour& source, const FairSettings& settings);
+
+/// Two-sided Hausdorff distance between two contours, from dense samples of both.
+double contour_distance(const Contour& a, const Contour& b);
+
+}  // namespace gf

@@ -1,0 +1,119 @@
+#include "fair/contour_plan.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "geom/curvature.hpp"
+
+namespace gf {
+
+namespace {
+
+struct Piece {
+  Segment segment;
+  std::size_t source_node;
+  bool straight;
+};
+
+bool all_points_equal(const Segment& s) {
+  bool equal = true;
+  const Vec2 p0 = start_point(s);
+  for_each_point(s, [&](Vec2 q) { equal = equal && q == p0; });
+  return equal;
+}
+
+}  // namespace
+
+bool is_straight(const Cubic& c) {
+  const Vec2 d = c.p[3] - c.p[0];
+  const double len = norm(d);
+  if (len == 0.0) return false;
+  for (const Vec2 q : {c.p[1], c.p[2]}) {
+    const Vec2 r = q - c.p[0];
+    if (std::abs(cross(d, r)) > 1e-9 * len * len) return false;
+    const double along = dot(d, r) / (len * len);
+    if (along < 0.0 || along > 1.0) return false;
+  }
+  return true;
+}
+
+ContourPlan plan_contour(const Contour& source, double corner_angle_deg) {
+  const Contour contour = with_cubics(source);
+  std::vector<Piece> pieces;
+  for (std::size_t i = 0; i < contour.segments.size(); ++i) {
+    const Segment& s = contour.segments[i];
+    if (all_points_equal(s)) continue;
+    const bool straight = is_line(s) || is_straight(std::get<Cubic>(s));
+    pieces.push_back({straight ? Segment{Line{start_point(s), end_point(s)}} : s, i, straight});
+  }
+  ContourPlan plan;
+  plan.closed = contour.closed;
+  const std::size_t n = pieces.size();
+  if (n == 0) return plan;
+  const double corner = corner_angle_deg * std::numbers::pi / 180.0;
+  const double tangential_line = 3.0 * std::numbers::pi / 180.0;
+
+  // The kind of the join in front of piece i (between piece i−1 and i); nullopt when smooth
+  // between two curves.
+  auto break_before = [&](std::size_t i) -> std::optional<RunEndKind> {
+    if (!contour.closed && i == 0) return RunEndKind::corner;
+    const Piece& a = pieces[(i + n - 1) % n];
+    const Piece& b = pieces[i];
+    if (a.straight && b.straight) return RunEndKind::corner;
+    const Vec2 ta = *end_tangent(a.segment, SegmentEnd::end), tb = *end_tangent(b.segment, SegmentEnd::start);
+    const std::optional<bool> flag = contour.nodes[b.source_node].smooth;
+    const double angle = std::abs(turning_angle(ta, tb));
+    // A curve meets a line tangentially only within the kink limit: bending a curve that leaves
+    // a line at 10° into the line's direction would put a bump where the designer drew none.
+    const bool line_join = a.straight || b.straight;
+    const bool is_corner = flag ? !*flag : angle > (line_join ? std::min(corner, tangential_line) : corner);
+    if (is_corner) return RunEndKind::corner;
+    if (line_join) return RunEndKind::line;
+    return std::nullopt;
+  };
+
+  std::size_t first = n;
+  for (std::size_t i = 0; i < n && first == n; ++i)
+    if (break_before(i)) first = i;
+  if (first == n) {  // one closed run
+    SmoothRun run;
+    run.closed = true;
+    for (const Piece& p : pieces) run.cubics.push_back(std::get<Cubic>(p.segment));
+    plan.first_source_node = pieces[0].source_node;
+    plan.pieces.emplace_back(std::move(run));
+    return plan;
+  }
+  plan.first_source_node = pieces[first].source_node;
+  const std::size_t count = contour.closed ? n : n - first;
+  for (std::size_t k = 0; k < count; ++k) {
+    const std::size_t i = (first + k) % n;
+    const Piece& p = pieces[i];
+    if (p.straight) {
+      plan.pieces.emplace_back(std::get<Line>(p.segment));
+      continue;
+    }
+    const std::optional<RunEndKind> before = break_before(i);
+    if (before) {
+      SmoothRun run;
+      const Piece& prev = pieces[(i + n - 1) % n];
+      run.start.kind = *before;
+      run.start.tangent = *before == RunEndKind::line && prev.straight && (contour.closed || i > 0)
+                              ? *end_tangent(prev.segment, SegmentEnd::end)
+                              : *end_tangent(p.segment, SegmentEnd::start);
+      plan.pieces.emplace_back(std::move(run));
+    }
+    SmoothRun& run = std::get<SmoothRun>(plan.pieces.back());
+    run.cubics.push_back(std::get<Cubic>(p.segment));
+    const std::size_t next = (i + 1) % n;
+    const bool ends = !contour.closed && i + 1 == n ? true : static_cast<bool>(break_before(next));
+    if (ends) {
+      const RunEndKind kind = !contour.closed && i + 1 == n ? RunEndKind::corner : *break_before(next);
+      run.end.kind = kind;
+      run.end.tangent = kind == RunEndKind::line && pieces[next].straight ? *end_tangent(pieces[next].segment, SegmentEnd::start)
+                                                                       : *end_tangent(p.segment, SegmentEnd::end);
+    }
+  }
+  return plan;
+}
+
+}  // namespace gf

@@ -1,0 +1,42 @@
+// A contour cut into what the fairing treats separately: straight lines, which stay as they
+// are, and smooth runs of curves between corners and lines. A run ends at a corner (its own
+// tangent there, curvature free) or where it meets a line without a corner (the line's
+// direction and κ = 0, so the line–curve join becomes G2). A closed contour with neither is
+// one closed run.
+#pragma once
+
+#include <variant>
+#include <vector>
+
+#include "geom/contour.hpp"
+
+namespace gf {
+
+enum class RunEndKind { corner, line };
+
+struct RunEnd {
+  RunEndKind kind = RunEndKind::corner;
+  Vec2 tangent;  ///< unit, along the run's direction
+};
+
+struct SmoothRun {
+  std::vector<Cubic> cubics;  ///< the source's pieces, in order, none degenerate
+  bool closed = false;        ///< the whole contour (no corner, no line)
+  RunEnd start, end;          ///< open runs only
+};
+
+struct ContourPlan {
+  std::vector<std::variant<Line, SmoothRun>> pieces;  ///< in order, each starting where the last ended
+  bool closed = true;
+  std::size_t first_source_node = 0;  ///< the source node the first piece starts at
+};
+
+/// A cubic whose control points lie on its chord, in order, is a line.
+bool is_straight(const Cubic& c);
+
+/// Corners: joins whose smooth flag says so where the source has flags, else joins turning by
+/// more than `corner_angle_deg` (and a curve meeting a line at 3° or more: only a tangential
+/// line join is made G2).
+ContourPlan plan_contour(const Contour& contour, double corner_angle_deg);
+
+}  // namespace gf

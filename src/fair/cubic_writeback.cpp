@@ -1,0 +1,248 @@
+#include "fair/cubic_writeback.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <numeric>
+
+#include "geom/g2_hermite.hpp"
+#include "geom/polyline_distance.hpp"
+
+namespace gf {
+
+namespace {
+
+constexpr int max_depth = 6;
+constexpr int cubic_samples = 48;
+
+// Short primitive integer directions in the first octant and their mirrors: where a span must be
+// cut, the cut goes where the tangent runs along one of them, so rounding keeps the node's
+// handles exactly collinear with it in steps of at most √13 units.
+std::vector<Vec2> grid_directions() {
+  std::vector<Vec2> out;
+  for (int p = -3; p <= 3; ++p)
+    for (int q = -3; q <= 3; ++q)
+      if (p * p + q * q <= 13 && std::gcd(std::abs(p), std::abs(q)) == 1) out.push_back({double(p), double(q)});
+  return out;
+}
+
+// The chain as one curve in arc length σ (σ past the end wraps round a closed chain), with a
+// dense table of its points for distances.
+class ChainPath {
+ public:
+  explicit ChainPath(const FairedChain& chain) : chain_(chain) {
+    double start = 0.0;
+    for (const LogAestheticSegment& seg : chain.segments) {
+      starts_.push_back(start);
+      const int n = std::clamp(static_cast<int>(std::ceil(seg.length() / 2.0)), 16, 256);
+      const std::vector<LacPoint> pts = seg.sample(n);
+      for (int k = 0; k < n; ++k) table_.push_back({start + seg.length() * k / n, pts[static_cast<std::size_t>(k)].point});
+      start += seg.length();
+    }
+    total_ = start;
+    const LacPoint end = chain.closed ? chain.segments.front().start() : chain.segments.back().end();
+    table_.push_back({total_, end.point});
+  }
+
+  double total() const { return total_; }
+  std::size_t segment_count() const { return starts_.size(); }
+  double segment_start(std::size_t i) const { return starts_[i]; }
+
+  /// At a junction, `prefer_next` takes the later segment's end values (equal under G2).
+  LacPoint at(double sigma, bool prefer_next = true) const {
+    if (sigma > total_) sigma -= total_;
+    std::size_t i = static_cast<std::size_t>(std::upper_bound(starts_.begin(), starts_.end(), sigma) - starts_.begin());
+    i = i == 0 ? 0 : i - 1;
+    if (!prefer_next && i > 0 && sigma == starts_[i]) --i;
+    const LogAestheticSegment& seg = chain_.segments[i];
+    const double local = sigma - starts_[i];
+    if (local <= 0.0) return seg.start();
+    if (local >= seg.length()) return seg.end();
+    return seg.at(local);
+  }
+
+  std::vector<Vec2> points(double a, double b) const {
+    std::vector<Vec2> out{at(a).point};
+    for (const double offset : {0.0, total_})
+      for (const auto& [sigma, p] : table_)
+        if (sigma + offset > a && sigma + offset < b) out.push_back(p);
+    out.push_back(at(b, false).point);
+    return out;
+  }
+
+  /// Where in (a, b) the tangent has turned by `turn` from its direction at a (the chain is
+  /// convex, so the turning grows monotonically).
+  double where_turned(double a, double b, double turn) const {
+    const Vec2 ta = at(a).tangent;
+    double lo = a, hi = b;
+    for (int it = 0; it < 60 && hi - lo > 1e-9; ++it) {
+      const double m = 0.5 * (lo + hi);
+      (std::abs(turning_angle(ta, at(m).tangent)) < std::abs(turn) ? lo : hi) = m;
+    }
+    return 0.5 * (lo + hi);
+  }
+
+ private:
+  const FairedChain& chain_;
+  std::vector<double> starts_;
+  std::vector<std::pair<double, Vec2>> table_;
+  double total_ = 0.0;
+};
+
+struct RequiredNode {
+  double sigma;
+  std::optional<Vec2> grid_step;
+};
+
+// Where the tangent is horizontal or vertical (each segment turns by less than π, monotonically).
+std::vector<RequiredNode> axis_extrema(const ChainPath& path, const FairedChain& chain) {
+  std::vector<RequiredNode> out;
+  const double quarter = std::numbers::pi / 2;
+  for (std::size_t i = 0; i < chain.segments.size(); ++i) {
+    const LogAestheticSegment& seg = chain.segments[i];
+    const Vec2 t0 = seg.start().tangent;
+    const double phi0 = std::atan2(t0.y, t0.x);
+    const double turn = turning_angle(t0, seg.end().tangent);
+    const double lo = std::min(phi0, phi0 + turn), hi = std::max(phi0, phi0 + turn);
+    for (double k = std::ceil(lo / quarter); k * quarter <= hi; k += 1.0) {
+      const double target = k * quarter - phi0;
+      if (std::abs(target) < 1e-12 && i > 0) continue;  // the previous segment's end has it
+      const double start = path.segment_start(i);
+      const double sigma = path.where_turned(start, start + seg.length(), target);
+      const Vec2 t = path.at(sigma).tangent;
+      const Vec2 step = std::abs(t.x) > std::abs(t.y) ? Vec2{t.x > 0 ? 1.0 : -1.0, 0.0} : Vec2{0.0, t.y > 0 ? 1.0 : -1.0};
+      out.push_back({sigma, step});
+    }
+  }
+  return out;
+}
+
+double cubic_deviation(const Cubic& c, const std::vector<Vec2>& lac) {
+  std::vector<Vec2> pts;
+  for (int k = 0; k <= cubic_samples; ++k) pts.push_back(c.point_at(static_cast<double>(k) / cubic_samples));
+  return std::max(directed_hausdorff(pts, lac).value, directed_hausdorff(lac, pts).value);
+}
+
+struct Piece {
+  Cubic cubic;
+  std::optional<Vec2> end_step;  ///< the grid direction of the node the cubic ends at
+};
+
+class SpanWriter {
+ public:
+  SpanWriter(const ChainPath& path, double budget, ChainCubics& out) : path_(path), budget_(budget), out_(out) {}
+
+  void fit(double a, double b, std::optional<Vec2> end_step, int depth, std::vector<Piece>& pieces) {
+    const LacPoint pa = path_.at(a), pb = path_.at(b, false);
+    const std::vector<Vec2> lac = path_.points(a, b);
+    std::optional<Cubic> best;
+    double best_dev = 1e300;
+    for (const Cubic& c : g2_hermite_cubics({pa.point, pa.tangent, pa.curvature}, {pb.point, pb.tangent, pb.curvature})) {
+      const double d = cubic_deviation(c, lac);
+      if (d < best_dev) best_dev = d, best = c;
+    }
+    if ((best && best_dev <= budget_) || depth >= max_depth) {
+      if (!best) {  // no G2 cubic at all: keep G1 with third-chord handles
+        const double h = distance(pa.point, pb.point) / 3.0;
+        best = Cubic{pa.point, pa.point + pa.tangent * h, pb.point - pb.tangent * h, pb.point};
+        best_dev = cubic_deviation(*best, lac);
+        ++out_.g1_fallbacks;
+      }
+      out_.deviation = std::max(out_.deviation, best_dev);
+      pieces.push_back({*best, end_step});
+      return;
+    }
+    const auto [cut, step] = cut_point(a, b, pa.tangent, pb.tangent);
+    fit(a, cut, step, depth + 1, pieces);
+    fit(cut, b, end_step, depth + 1, pieces);
+  }
+
+ private:
+  // Cut where the tangent runs along a short grid direction near the middle of the span's
+  // turning, else at the chain junction nearest the middle, else at the middle.
+  std::pair<double, std::optional<Vec2>> cut_point(double a, double b, Vec2 ta, Vec2 tb) const {
+    const double turn = turning_angle(ta, tb);
+    std::optional<Vec2> step;
+    double best = 0.3;  // |fraction − 0.5| must stay below this
+    double fraction_turn = 0.0;
+    if (std::abs(turn) > 1e-6)
+      for (const Vec2 d : directions_) {
+        const double rel = turning_angle(ta, d / norm(d));
+        const double f = rel / turn;
+        if (std::abs(f - 0.5) < best) best = std::abs(f - 0.5), step = d, fraction_turn = rel;
+      }
+    if (step) return {path_.where_turned(a, b, fraction_turn), step};
+    const double mid = 0.5 * (a + b), width = b - a;
+    double cut = mid, nearest = 0.3 * width;
+    for (std::size_t i = 1; i < path_.segment_count(); ++i)
+      for (const double offset : {0.0, path_.total()}) {
+        const double j = path_.segment_start(i) + offset;
+        if (std::abs(j - mid) < nearest) nearest = std::abs(j - mid), cut = j;
+      }
+    return {cut, std::nullopt};
+  }
+
+  const ChainPath& path_;
+  double budget_;
+  ChainCubics& out_;
+  std::vector<Vec2> directions_ = grid_directions();
+};
+
+}  // namespace
+
+ChainCubics write_chain_as_cubics(const FairedChain& chain, double budget) {
+  ChainCubics out;
+  const ChainPath path(chain);
+  const double total = path.total();
+  std::vector<RequiredNode> nodes;
+  if (!chain.closed) nodes.push_back({0.0, std::nullopt});
+  for (const RequiredNode& e : axis_extrema(path, chain)) nodes.push_back(e);
+  if (!chain.closed) nodes.push_back({total, std::nullopt});
+  std::sort(nodes.begin(), nodes.end(), [](const RequiredNode& a, const RequiredNode& b) { return a.sigma < b.sigma; });
+  // An extremum within half a unit of another node is on that node already.
+  std::vector<RequiredNode> distinct;
+  for (const RequiredNode& n : nodes) {
+    if (!distinct.empty() && n.sigma - distinct.back().sigma < 0.5) {
+      if (n.sigma == total) distinct.back() = n;  // the chain's end stays exact
+      continue;
+    }
+    distinct.push_back(n);
+  }
+  if (chain.closed && distinct.size() > 1 && distinct.front().sigma + total - distinct.back().sigma < 0.5) distinct.pop_back();
+  if (chain.closed && distinct.empty()) distinct.push_back({0.0, std::nullopt});
+
+  SpanWriter writer(path, budget, out);
+  std::vector<Piece> pieces;
+  const std::size_t n = distinct.size(), spans = chain.closed ? n : n - 1;
+  for (std::size_t i = 0; i < spans; ++i) {
+    const RequiredNode& next = distinct[(i + 1) % n];
+    const double b = i + 1 < n ? next.sigma : next.sigma + total;
+    writer.fit(distinct[i].sigma, b, next.grid_step, 0, pieces);
+  }
+  // Nodes: the start of every cubic (and an open chain's last end); a node's grid step is the
+  // end step of the cubic before it.
+  const std::size_t m = pieces.size();
+  for (std::size_t k = 0; k < m; ++k) {
+    const Piece& prev = pieces[(k + m - 1) % m];
+    OutlineNode node;
+    node.point = pieces[k].cubic.p[0];
+    node.out_handle = pieces[k].cubic.p[1];
+    if (chain.closed || k > 0) {
+      node.in_handle = prev.cubic.p[2];
+      node.grid_step = prev.end_step;
+    } else {
+      node.grid_step = distinct.front().grid_step;
+    }
+    out.nodes.push_back(node);
+  }
+  if (!chain.closed) {
+    OutlineNode last;
+    last.point = pieces.back().cubic.p[3];
+    last.in_handle = pieces.back().cubic.p[2];
+    last.grid_step = pieces.back().end_step;
+    out.nodes.push_back(last);
+  }
+  return out;
+}
+
+}  // namespace gf

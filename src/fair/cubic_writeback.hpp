@@ -1,0 +1,23 @@
+// A faired chain of log-aesthetic segments written back as cubic Béziers: on-curve nodes at
+// the chain's ends (corners, inflections, line joins) and at every horizontal and vertical
+// extremum; between them as few cubics as the budget allows, each the G2 Hermite cubic of its
+// ends (geom/g2_hermite.hpp), so curvature matches on both sides of every node. A span whose
+// best cubic strays too far is cut at its middle (a junction of the chain when one is near).
+#pragma once
+
+#include <vector>
+
+#include "fair/outline_nodes.hpp"
+#include "fair/run_fairing.hpp"
+
+namespace gf {
+
+struct ChainCubics {
+  std::vector<OutlineNode> nodes;  ///< an open chain's first and last nodes carry only their inner handle
+  double deviation = 0.0;          ///< largest distance between a cubic and its piece of the chain
+  int g1_fallbacks = 0;            ///< spans where no G2 Hermite cubic existed within the depth limit
+};
+
+ChainCubics write_chain_as_cubics(const FairedChain& chain, double budget_units);
+
+}  // namespace gf

@@ -1,0 +1,25 @@
+#include "fair/fair_options.hpp"
+
+namespace gf {
+
+FairSettings resolve_settings(const FairOptions& options, double units_per_em) {
+  FairSettings s;
+  s.profile = options.profile;
+  s.continuity = options.continuity;
+  s.round_to_integers = options.round_to_integers;
+  const bool hand = options.profile == FairProfile::handwriting;
+  s.tolerance_units = options.tolerance_units.value_or((hand ? 0.01 : 0.001) * units_per_em);
+  s.corner_angle_deg = options.corner_angle_deg.value_or(hand ? 30.0 : 3.0);
+  s.feature_window_units = hand ? 0.03 * units_per_em : 0.004 * units_per_em;
+  return s;
+}
+
+std::optional<FairProfile> parse_fair_profile(const std::string& name) {
+  if (name == "text") return FairProfile::text;
+  if (name == "handwriting") return FairProfile::handwriting;
+  return std::nullopt;
+}
+
+const char* to_string(FairProfile profile) { return profile == FairProfile::text ? "text" : "handwriting"; }
+
+}  // namespace gf

@@ -1,0 +1,43 @@
+// What the user asks of the fairing, and the defaults each profile resolves it to.
+#pragma once
+
+#include <optional>
+#include <string>
+
+namespace gf {
+
+enum class FairProfile { text, handwriting };
+enum class Continuity { g1, g2 };
+
+struct FairOptions {
+  FairProfile profile = FairProfile::text;
+  Continuity continuity = Continuity::g2;
+  std::optional<double> tolerance_units;   ///< two-sided Hausdorff bound, font units
+  std::optional<double> corner_angle_deg;  ///< joins turning more than this stay corners
+  bool round_to_integers = true;
+};
+
+/// The options with every default filled in for a font of `units_per_em`.
+///   text:        tolerance 0.1 % of the em; corners from 3° (the check's kink limit: a
+///                professional font's smooth joins are G1 to 0.05°, so anything at 3° or
+///                more was drawn as a corner);
+///   handwriting: tolerance 1 % of the em; corners from 30° (fonts traced from scans break
+///                their curves by 3–20° at many joins; a stroke end or a sharp turn of the pen
+///                turns by far more), and wobbles up to the tolerance smoothed away.
+struct FairSettings {
+  FairProfile profile = FairProfile::text;
+  Continuity continuity = Continuity::g2;
+  double tolerance_units = 1.0;
+  double corner_angle_deg = 3.0;
+  /// Length over which the source's tangent is averaged to find inflections and curvature
+  /// extrema: wobbles shorter than this are not features.
+  double feature_window_units = 5.0;
+  bool round_to_integers = true;
+};
+
+FairSettings resolve_settings(const FairOptions& options, double units_per_em);
+
+std::optional<FairProfile> parse_fair_profile(const std::string& name);
+const char* to_string(FairProfile profile);
+
+}  // namespace gf

@@ -1,0 +1,29 @@
+#include "fair/glyph_fairing.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+
+namespace gf {
+
+GlyphFairing fair_glyph(const Glyph& source, const FairSettings& settings) {
+  GlyphFairing out;
+  out.glyph = source;
+  out.glyph.outline.contours.clear();
+  if (std::getenv("GF_DEBUG")) fprintf(stderr, "glyph %s\n", source.name.c_str());
+  for (std::size_t i = 0; i < source.outline.contours.size(); ++i) {
+    ContourFairing c = fair_contour(source.outline.contours[i], settings);
+    if (c.faired) {
+      ++out.contours_faired;
+      out.deviation = std::max(out.deviation, c.deviation);
+      out.max_curvature_mismatch = std::max(out.max_curvature_mismatch, c.max_curvature_mismatch);
+      out.inexact_g1 += c.inexact_g1;
+    } else {
+      out.kept.push_back("contour " + std::to_string(i) + ": " + c.reason);
+    }
+    out.glyph.outline.contours.push_back(std::move(c.contour));
+  }
+  return out;
+}
+
+}  // namespace gf

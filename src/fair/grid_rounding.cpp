@@ -1,0 +1,231 @@
+#include "fair/grid_rounding.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <cmath>
+#include <numeric>
+
+#include "geom/g2_hermite.hpp"
+
+namespace gf {
+
+namespace {
+
+Vec2 rounded(Vec2 p) { return {std::round(p.x), std::round(p.y)}; }
+
+// A node's handles along the integer direction d: P − m_in d and P + m_out d.
+struct Choice {
+  Vec2 point;
+  std::optional<Vec2> in, out;
+  Vec2 step;  ///< the primitive direction both handles are multiples of
+  double cost = 1e300;
+};
+
+// The exact collinear choice nearest to (point, in, out): directions d = (dx, dy) primitive,
+// near the handles' direction, no longer than the shorter handle; the node itself may move by
+// one unit from its nearest grid point.
+Choice collinear_choice(Vec2 point, std::optional<Vec2> in, std::optional<Vec2> out) {
+  const Vec2 dir = out ? *out - point : point - *in;
+  const double shortest = std::min(in ? norm(point - *in) : 1e300, out ? norm(*out - point) : 1e300);
+  const int reach = std::clamp(static_cast<int>(shortest), 1, 64);
+  const bool steep = std::abs(dir.y) > std::abs(dir.x);
+  const Vec2 base = rounded(point);
+  Choice best;
+  for (int major = 1; major <= reach; ++major) {
+    const double minor_exact = major * (steep ? dir.x / std::abs(dir.y) : dir.y / std::abs(dir.x));
+    for (int delta = -1; delta <= 1; ++delta) {
+      const double minor = std::round(minor_exact) + delta;
+      const double sx = steep ? minor : (dir.x < 0 ? -major : major);
+      const double sy = steep ? (dir.y < 0 ? -major : major) : minor;
+      if (std::gcd(static_cast<long long>(std::abs(sx)), static_cast<long long>(std::abs(sy))) != 1) continue;
+      const Vec2 d{sx, sy};
+      if (dot(d, dir) <= 0.0) continue;
+      const double dd = dot(d, d);
+      for (int ox = -1; ox <= 1; ++ox)
+        for (int oy = -1; oy <= 1; ++oy) {
+          const Vec2 p = base + Vec2{double(ox), double(oy)};
+          Choice c;
+          c.point = p;
+          c.step = d;
+          c.cost = distance(p, point);
+          if (in) {
+            const double m = std::max(1.0, std::round(dot(point - *in, d) / dd));
+            c.in = p - d * m;
+            c.cost = std::max(c.cost, distance(*c.in, *in));
+          }
+          if (out) {
+            const double m = std::max(1.0, std::round(dot(*out - point, d) / dd));
+            c.out = p + d * m;
+            c.cost = std::max(c.cost, distance(*c.out, *out));
+          }
+          if (c.cost < best.cost) best = c;
+        }
+    }
+  }
+  return best;
+}
+
+// κ at the end of a cubic (a, h_a, h_b, b) where it leaves a: 2/3 · (d1 × d2) / |d1|³ with
+// d1 = h_a − a, d2 = h_b − h_a (lac-math.md §4.1 at t = 0).
+double leaving_curvature(Vec2 a, Vec2 ha, Vec2 hb) {
+  const Vec2 d1 = ha - a, d2 = hb - ha;
+  const double l = norm(d1);
+  return l > 0.0 ? (2.0 / 3.0) * cross(d1, d2) / (l * l * l) : 0.0;
+}
+
+double relative_jump(double k1, double k2) {
+  const double big = std::max(std::abs(k1), std::abs(k2));
+  return big > 0.0 ? std::abs(k1 - k2) / big : 0.0;
+}
+
+// Rounding moved the nodes and turned the handle directions onto grid vectors; for each cubic
+// the handle lengths that give back the curvature the fairing had at both ends (G2 Hermite on
+// the rounded ends), then rounded to whole steps along each handle's grid direction.
+void resolve_handle_lengths(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal,
+                            const std::vector<std::optional<Vec2>>& steps, bool closed) {
+  const std::size_t n = nodes.size();
+  std::vector<OutlineNode> updated = nodes;
+  for (std::size_t i = 0; i < (closed ? n : n - 1); ++i) {
+    const std::size_t j = (i + 1) % n;
+    const OutlineNode &a = nodes[i], &b = nodes[j], &fa = ideal[i], &fb = ideal[j];
+    if (!a.out_handle || !b.in_handle) continue;
+    const Vec2 ta = *a.out_handle - a.point, tb = b.point - *b.in_handle;
+    if (norm(ta) == 0.0 || norm(tb) == 0.0) continue;
+    const double ka = leaving_curvature(fa.point, *fa.out_handle, *fb.in_handle);
+    const double kb = -leaving_curvature(fb.point, *fb.in_handle, *fa.out_handle);
+    const HermiteEnd start{a.point, ta / norm(ta), ka}, end{b.point, tb / norm(tb), kb};
+    const double want_a = norm(*fa.out_handle - fa.point), want_b = norm(fb.point - *fb.in_handle);
+    std::optional<Cubic> best;
+    double closest = 1e300;
+    for (const Cubic& c : g2_hermite_cubics(start, end)) {
+      const double miss = std::abs(norm(c.p[1] - c.p[0]) - want_a) + std::abs(norm(c.p[3] - c.p[2]) - want_b);
+      if (miss < closest) closest = miss, best = c;
+    }
+    if (!best || closest > 0.25 * (want_a + want_b)) continue;
+    // Along the grid step where the node has one (G1 stays exact); a corner's handle rounds
+    // freely; a handle that must stay on a line keeps the rounding it has.
+    auto place = [&](std::size_t node, Vec2 exact, double sign) -> std::optional<Vec2> {
+      const OutlineNode& q = nodes[node];
+      if (steps[node]) {
+        const Vec2 d = *steps[node];
+        return q.point + d * (sign * std::max(1.0, std::round(sign * dot(exact - q.point, d) / dot(d, d))));
+      }
+      if (!q.smooth) return rounded(exact);
+      return std::nullopt;
+    };
+    if (const auto h = place(i, best->p[1], 1.0)) updated[i].out_handle = h;
+    if (const auto h = place(j, best->p[2], -1.0)) updated[j].in_handle = h;
+  }
+  nodes = std::move(updated);
+}
+
+// G2 as well as the grid allows: the handles of every smooth node move along their grid
+// direction by whole steps (which keeps G1 exact) where that brings the curvature on the two
+// sides closer, by at most two steps from where rounding put them.
+void restore_g2(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal,
+                const std::vector<std::optional<Vec2>>& steps, bool closed) {
+  const std::size_t n = nodes.size();
+  auto jump_at = [&](std::size_t i) -> double {
+    const OutlineNode& q = nodes[i];
+    if (!q.smooth || !q.in_handle || !q.out_handle) return 0.0;
+    if (!closed && (i == 0 || i + 1 == n)) return 0.0;
+    const OutlineNode &prev = nodes[(i + n - 1) % n], &next = nodes[(i + 1) % n];
+    if (!prev.out_handle || !next.in_handle) return 0.0;
+    const double k_out = leaving_curvature(q.point, *q.out_handle, *next.in_handle);
+    const double k_in = -leaving_curvature(q.point, *q.in_handle, *prev.out_handle);
+    return relative_jump(k_in, k_out);
+  };
+  auto cost_near = [&](std::size_t i) {
+    double c = 0.0;
+    for (const std::size_t j : {(i + n - 1) % n, i, (i + 1) % n}) c += jump_at(j) * jump_at(j);
+    return c;
+  };
+  if (std::getenv("GF_DEBUG")) { double t = 0; for (std::size_t i = 0; i < n; ++i) { t += jump_at(i); fprintf(stderr, " node %zu (%g,%g) smooth=%d grid=%d step=%d jump=%g\n", i, nodes[i].point.x, nodes[i].point.y, nodes[i].smooth, bool(nodes[i].grid_step), bool(steps[i]), jump_at(i)); } fprintf(stderr, "restore before %g\n", t); }
+  for (int sweep = 0; sweep < 3; ++sweep)
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!steps[i] || !nodes[i].in_handle || !nodes[i].out_handle) continue;
+      const Vec2 d = *steps[i];
+      for (const bool out : {false, true}) {
+        Vec2& h = out ? *nodes[i].out_handle : *nodes[i].in_handle;
+        const Vec2 start = h, want = out ? *ideal[i].out_handle : *ideal[i].in_handle;
+        const double sign = out ? 1.0 : -1.0;
+        double best_cost = cost_near(i);
+        Vec2 best = start;
+        for (int k = -2; k <= 2; ++k) {
+          const Vec2 trial = start + d * (sign * k);
+          if (k == 0 || dot(trial - nodes[i].point, d) * sign <= 0.0) continue;
+          if (distance(trial, want) > 2.0 * norm(d) + 1.0) continue;
+          h = trial;
+          const double c = cost_near(i);
+          if (c < best_cost - 1e-12) best_cost = c, best = trial;
+        }
+        h = best;
+      }
+    }
+  if (std::getenv("GF_DEBUG")) { double t = 0; for (std::size_t i = 0; i < n; ++i) t += jump_at(i); fprintf(stderr, "restore after %g\n", t); }
+}
+
+}  // namespace
+
+RoundedNodes round_to_grid(const std::vector<OutlineNode>& nodes, bool closed) {
+  RoundedNodes r;
+  r.nodes = nodes;
+  const std::size_t n = nodes.size();
+  auto open_end = [&](std::size_t i) { return !closed && (i == 0 || i + 1 == n); };
+  std::vector<std::optional<Vec2>> steps(n);  // smooth nodes: the grid direction of their handles
+  for (std::size_t i = 0; i < n; ++i) {
+    const OutlineNode& src = nodes[i];
+    OutlineNode& dst = r.nodes[i];
+    dst.point = rounded(src.point);
+    const bool both = src.in_handle && src.out_handle;
+    if (src.smooth && both && src.grid_step) {
+      // Steps along the exact direction: G1 exact on the grid, lengths within half a step.
+      const Vec2 d = *src.grid_step;
+      const double dd = dot(d, d);
+      dst.in_handle = dst.point - d * std::max(1.0, std::round(dot(src.point - *src.in_handle, d) / dd));
+      dst.out_handle = dst.point + d * std::max(1.0, std::round(dot(*src.out_handle - src.point, d) / dd));
+      steps[i] = d;
+    } else {
+      if (src.in_handle) dst.in_handle = rounded(*src.in_handle);
+      if (src.out_handle) dst.out_handle = rounded(*src.out_handle);
+    }
+  }
+  // Smooth nodes without a grid direction, once every node has its grid position (a line's
+  // direction needs its far end).
+  for (std::size_t i = 0; i < n; ++i) {
+    const OutlineNode& src = nodes[i];
+    OutlineNode& dst = r.nodes[i];
+    if (!src.smooth || steps[i] || open_end(i)) continue;
+    if (src.in_handle && src.out_handle) {
+      const Choice c = collinear_choice(src.point, src.in_handle, src.out_handle);
+      dst.point = c.point, dst.in_handle = c.in, dst.out_handle = c.out;
+      steps[i] = c.step;
+      continue;
+    }
+    if (!src.in_handle && !src.out_handle) continue;
+    // A curve meeting a line: the handle goes on the line through the two grid nodes.
+    const bool line_before = !src.in_handle;
+    const Vec2 far = r.nodes[(i + (line_before ? n - 1 : 1)) % n].point;
+    const Vec2 along = line_before ? dst.point - far : far - dst.point;  // direction of travel
+    const long long g = std::gcd(static_cast<long long>(std::abs(along.x)), static_cast<long long>(std::abs(along.y)));
+    if (g == 0) continue;
+    const Vec2 d = along / static_cast<double>(g);
+    const Vec2 h = line_before ? *src.out_handle : *src.in_handle;
+    const double m = std::max(1.0, std::round(std::abs(dot(h - src.point, d)) / dot(d, d)));
+    const Vec2 exact = line_before ? dst.point + d * m : dst.point - d * m;
+    if (distance(exact, h) <= 2.0) (line_before ? dst.out_handle : dst.in_handle) = exact;
+    else ++r.inexact_g1;
+  }
+  resolve_handle_lengths(r.nodes, nodes, steps, closed);
+  restore_g2(r.nodes, nodes, steps, closed);
+  auto note = [&](Vec2 a, Vec2 b) { r.largest_move = std::max(r.largest_move, distance(a, b)); };
+  for (std::size_t i = 0; i < n; ++i) {
+    note(nodes[i].point, r.nodes[i].point);
+    if (nodes[i].in_handle) note(*nodes[i].in_handle, *r.nodes[i].in_handle);
+    if (nodes[i].out_handle) note(*nodes[i].out_handle, *r.nodes[i].out_handle);
+  }
+  return r;
+}
+
+}  // namespace gf

@@ -1,0 +1,22 @@
+// Faired nodes rounded to integer coordinates so that G1 stays exact: a smooth node and its
+// two handles end up exactly collinear on the grid (both handle vectors integer multiples of
+// one primitive direction), a node at a horizontal or vertical extremum keeps axis-parallel
+// handles, and a curve meeting a line keeps its handle on the line. Among the exact choices
+// the one that moves the points least is taken, so G2 survives as well as the grid allows.
+#pragma once
+
+#include <vector>
+
+#include "fair/outline_nodes.hpp"
+
+namespace gf {
+
+struct RoundedNodes {
+  std::vector<OutlineNode> nodes;
+  double largest_move = 0.0;  ///< the farthest any point (node or handle) moved
+  int inexact_g1 = 0;         ///< smooth nodes where no exact choice was within reach
+};
+
+RoundedNodes round_to_grid(const std::vector<OutlineNode>& nodes, bool closed);
+
+}  // namespace gf

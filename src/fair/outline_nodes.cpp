@@ -1,0 +1,19 @@
+#include "fair/outline_nodes.hpp"
+
+namespace gf {
+
+Contour to_contour(const std::vector<OutlineNode>& nodes, bool closed) {
+  Contour c;
+  c.closed = closed;
+  const std::size_t n = nodes.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    c.nodes.push_back(NodeFlags{false, nodes[i].smooth});
+    if (!closed && i + 1 == n) break;
+    const OutlineNode &a = nodes[i], &b = nodes[(i + 1) % n];
+    if (a.out_handle && b.in_handle) c.segments.emplace_back(Cubic{a.point, *a.out_handle, *b.in_handle, b.point});
+    else c.segments.emplace_back(Line{a.point, b.point});
+  }
+  return c;
+}
+
+}  // namespace gf

@@ -1,0 +1,27 @@
+// The faired outline as on-curve nodes with their handles, before and after rounding to the
+// integer grid: what a type designer sees in the editor.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "geom/contour.hpp"
+
+namespace gf {
+
+struct OutlineNode {
+  Vec2 point;
+  std::optional<Vec2> in_handle, out_handle;  ///< absent on the side of a line
+  bool smooth = true;
+  /// A smooth node whose tangent runs exactly along this primitive integer vector, so that its
+  /// handles can sit on the grid collinear with it in steps of the vector's length: (±1, 0) or
+  /// (0, ±1) at horizontal and vertical extrema, short diagonals such as (2, 1) where a span
+  /// was cut.
+  std::optional<Vec2> grid_step;
+};
+
+/// Node i starts segment i: a cubic when node i has an out-handle and node i + 1 an in-handle,
+/// else a line. A closed contour's last segment returns to node 0.
+Contour to_contour(const std::vector<OutlineNode>& nodes, bool closed);
+
+}  // namespace gf

@@ -1,0 +1,151 @@
+#include "fair/run_reference.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "geom/curvature.hpp"
+
+namespace gf {
+
+namespace {
+
+Vec2 tangent_at(const Cubic& c, double t) {
+  if (t == 0.0) return *end_tangent(c, SegmentEnd::start);
+  if (t == 1.0) return *end_tangent(c, SegmentEnd::end);
+  const Vec2 d = derivatives_at(c, t).d1;
+  const double n = norm(d);
+  return n > 0.0 ? d / n : *end_tangent(c, t < 0.5 ? SegmentEnd::start : SegmentEnd::end);
+}
+
+}  // namespace
+
+RunReference::RunReference(const SmoothRun& run, int samples_per_cubic) : cubics_(run.cubics), closed_(run.closed) {
+  double s = 0.0, theta = 0.0;
+  Vec2 last_tangent;
+  for (std::size_t i = 0; i < cubics_.size(); ++i) {
+    const Cubic& c = cubics_[i];
+    for (int k = 0; k <= samples_per_cubic; ++k) {
+      const double t = static_cast<double>(k) / samples_per_cubic;
+      const Vec2 p = c.point_at(t), tangent = tangent_at(c, t);
+      if (samples_.empty()) {
+        theta = std::atan2(tangent.y, tangent.x);
+      } else {
+        s += distance(samples_.back().point, p);
+        theta += turning_angle(last_tangent, tangent);
+      }
+      last_tangent = tangent;
+      samples_.push_back({s, p, theta, i, t});
+    }
+  }
+  if (closed_) {  // close the loop: the seam's break and chord
+    const Vec2 p = cubics_.front().p[0], tangent = tangent_at(cubics_.front(), 0.0);
+    s += distance(samples_.back().point, p);
+    theta += turning_angle(last_tangent, tangent);
+    samples_.push_back({s, p, theta, 0, 0.0});
+  }
+  length_ = s;
+}
+
+double RunReference::wrap(double s) const {
+  if (!closed_) return std::clamp(s, 0.0, length_);
+  s = std::fmod(s, length_);
+  return s < 0.0 ? s + length_ : s;
+}
+
+std::size_t RunReference::index_before(double s) const {
+  const auto it = std::upper_bound(samples_.begin(), samples_.end(), s,
+                                   [](double v, const ReferenceSample& r) { return v < r.s; });
+  const std::size_t i = static_cast<std::size_t>(it - samples_.begin());
+  return std::min(i == 0 ? 0 : i - 1, samples_.size() - 2);
+}
+
+Vec2 RunReference::point_at(double s) const {
+  s = wrap(s);
+  const std::size_t i = index_before(s);
+  const ReferenceSample &a = samples_[i], &b = samples_[i + 1];
+  const double f = b.s > a.s ? (s - a.s) / (b.s - a.s) : 0.0;
+  if (a.cubic == b.cubic && b.t > a.t) return cubics_[a.cubic].point_at(a.t + f * (b.t - a.t));
+  return lerp(a.point, b.point, f);
+}
+
+double RunReference::theta_at(double s) const {
+  double turns = 0.0;
+  if (closed_) {
+    turns = std::floor(s / length_);
+    s -= turns * length_;
+  } else {
+    s = std::clamp(s, 0.0, length_);
+  }
+  const std::size_t i = index_before(s);
+  const ReferenceSample &a = samples_[i], &b = samples_[i + 1];
+  const double f = b.s > a.s ? (s - a.s) / (b.s - a.s) : 0.0;
+  return a.theta + f * (b.theta - a.theta) + turns * total_turning();
+}
+
+double RunReference::mean_curvature(double s, double window) const {
+  double lo = s - window / 2, hi = s + window / 2;
+  if (!closed_) lo = std::max(lo, 0.0), hi = std::min(hi, length_);
+  return hi > lo ? (theta_at(hi) - theta_at(lo)) / (hi - lo) : 0.0;
+}
+
+Vec2 RunReference::mean_point(double s, double window) const {
+  double half = window / 2;
+  if (!closed_) half = std::min({half, s, length_ - s});
+  if (!(half > 0.0)) return point_at(s);
+  // Simpson's rule on 9 points.
+  constexpr int n = 8;
+  Vec2 sum{0.0, 0.0};
+  for (int k = 0; k <= n; ++k) {
+    const double w = (k == 0 || k == n) ? 1.0 : (k % 2 ? 4.0 : 2.0);
+    sum = sum + point_at(s - half + 2.0 * half * k / n) * w;
+  }
+  return sum / (3.0 * n);
+}
+
+Vec2 RunReference::mean_tangent(double s, double window) const {
+  double lo = s - window / 2, hi = s + window / 2;
+  if (!closed_) lo = std::max(lo, 0.0), hi = std::min(hi, length_);
+  const Vec2 d = point_at(hi) - point_at(lo);
+  const double n = norm(d);
+  if (n > 0.0) return d / n;
+  const double a = theta_at(s);
+  return {std::cos(a), std::sin(a)};
+}
+
+std::vector<Vec2> RunReference::polyline(double s0, double s1) const {
+  std::vector<Vec2> out{point_at(s0)};
+  // Walk the samples strictly between s0 and s1, across the seam if needed.
+  const double base = closed_ ? std::floor(s0 / length_) * length_ : 0.0;
+  for (double offset = base; offset < s1; offset += length_) {
+    for (const ReferenceSample& r : samples_)
+      if (r.s + offset > s0 && r.s + offset < s1) out.push_back(r.point);
+    if (!closed_) break;
+  }
+  out.push_back(point_at(s1));
+  return out;
+}
+
+std::vector<Cubic> RunReference::cubics_between(double s0, double s1) const {
+  // The cubic and parameter at each end, by the sample table.
+  auto locate = [&](double s) {
+    s = wrap(s);
+    const std::size_t i = index_before(s);
+    const ReferenceSample &a = samples_[i], &b = samples_[i + 1];
+    const double f = b.s > a.s ? (s - a.s) / (b.s - a.s) : 0.0;
+    if (a.cubic == b.cubic) return std::pair{a.cubic, a.t + f * (b.t - a.t)};
+    return f < 0.5 ? std::pair{a.cubic, a.t} : std::pair{b.cubic, b.t};
+  };
+  auto [c0, t0] = locate(s0);
+  auto [c1, t1] = locate(s1);
+  std::vector<Cubic> out;
+  const std::size_t n = cubics_.size();
+  for (std::size_t c = c0, guard = 0; guard <= n; c = (c + 1) % n, ++guard) {
+    const double a = c == c0 ? t0 : 0.0;
+    const double b = c == c1 && (guard > 0 || t1 >= t0) ? t1 : 1.0;
+    if (b > a) out.push_back(cubics_[c].subsegment(a, b));
+    if (c == c1 && (guard > 0 || t1 >= t0)) break;
+  }
+  return out;
+}
+
+}  // namespace gf

@@ -1,0 +1,58 @@
+// A smooth run of the source sampled along its length: the reference the fairing measures
+// itself against. Positions are exact points of the source cubics; s is the arc length along
+// the run and θ the tangent angle, unwrapped, so that θ(s) carries the run's whole turning
+// (the small breaks at joins that are not corners included).
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "fair/contour_plan.hpp"
+
+namespace gf {
+
+struct ReferenceSample {
+  double s;
+  Vec2 point;
+  double theta;
+  std::size_t cubic;  ///< which source cubic, and where on it
+  double t;
+};
+
+class RunReference {
+ public:
+  explicit RunReference(const SmoothRun& run, int samples_per_cubic = 48);
+
+  bool closed() const { return closed_; }
+  double length() const { return length_; }
+  /// θ(end) − θ(start) of an open run; 2π × winding of a closed one.
+  double total_turning() const { return samples_.back().theta - samples_.front().theta; }
+  std::span<const ReferenceSample> samples() const { return samples_; }
+
+  /// The exact source point at arc length s (wrapped for a closed run).
+  Vec2 point_at(double s) const;
+  /// θ at s, continued across the seam of a closed run (θ(s + L) = θ(s) + total turning).
+  double theta_at(double s) const;
+  /// The mean curvature over [s − w/2, s + w/2]: (θ(s + w/2) − θ(s − w/2)) / w, the window
+  /// clipped to an open run's ends.
+  double mean_curvature(double s, double window) const;
+  /// The mean position over the same window (shrunk to stay inside an open run, so the ends
+  /// stay exact): the point with wobbles averaged out.
+  Vec2 mean_point(double s, double window) const;
+  /// The direction of the chord over the same window: the tangent with wobbles averaged out.
+  Vec2 mean_tangent(double s, double window) const;
+  /// The sample polyline over [s0, s1] (s1 may pass the seam of a closed run), ends included.
+  std::vector<Vec2> polyline(double s0, double s1) const;
+  /// The source between s0 and s1 as cubics (for the LCG estimate).
+  std::vector<Cubic> cubics_between(double s0, double s1) const;
+
+ private:
+  std::size_t index_before(double s) const;  ///< s within [0, L]
+  double wrap(double s) const;
+  std::vector<Cubic> cubics_;
+  std::vector<ReferenceSample> samples_;
+  double length_ = 0.0;
+  bool closed_ = false;
+};
+
+}  // namespace gf

@@ -1,0 +1,45 @@
+#include "geom/g2_hermite.hpp"
+
+#include <cmath>
+
+#include "geom/polynomial.hpp"
+
+namespace gf {
+
+namespace {
+
+Cubic with_handles(const HermiteEnd& s, const HermiteEnd& e, double a, double b) {
+  return Cubic{s.point, s.point + s.tangent * a, e.point - e.tangent * b, e.point};
+}
+
+}  // namespace
+
+std::vector<Cubic> g2_hermite_cubics(const HermiteEnd& start, const HermiteEnd& end, double max_handle) {
+  const Vec2 d = end.point - start.point;
+  const double chord = norm(d);
+  std::vector<Cubic> out;
+  if (!(chord > 0.0)) return out;
+  if (!(max_handle > 0.0)) max_handle = 2.0 * chord;
+  const double c = cross(start.tangent, end.tangent);
+  const double u = cross(start.tangent, d), v = cross(d, end.tangent);
+  const double k0 = 1.5 * start.curvature, k3 = 1.5 * end.curvature;
+  auto accept = [&](double a, double b) {
+    if (a > 0.0 && b > 0.0 && a <= max_handle && b <= max_handle) out.push_back(with_handles(start, end, a, b));
+  };
+  if (std::abs(c) < 1e-9) {
+    // Parallel end tangents: the two equations decouple, k0 a² = u and k3 b² = v.
+    if (k0 * u > 0.0 && k3 * v > 0.0) accept(std::sqrt(u / k0), std::sqrt(v / k3));
+    return out;
+  }
+  // a = A t, t ∈ [0, 1]; b(t) = (u − k0 A² t²)/c; f(t) = k3 b(t)² + c A t − v = 0.
+  const double A = max_handle;
+  const double b_coef[] = {u / c, 0.0, -k0 * A * A / c};
+  const Polynomial b_of_t(b_coef);
+  const double lin[] = {-v, c * A};
+  const Polynomial f = k3 * (b_of_t * b_of_t) + Polynomial(lin);
+  const double scale = std::abs(k3) * (u * u / (c * c) + k0 * k0 * A * A * A * A / (c * c)) + std::abs(c * A) + std::abs(v);
+  for (const SignChange& r : sign_changes_in_unit_interval(f, 1e-13 * scale)) accept(A * r.t, b_of_t(r.t));
+  return out;
+}
+
+}  // namespace gf

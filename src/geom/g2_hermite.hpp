@@ -1,0 +1,24 @@
+// Cubic Bézier G2 Hermite interpolation (de Boor, Höllig & Sabin 1987): the cubic from P0 to P3
+// with given unit tangents and signed curvatures at both ends. With P1 = P0 + a·T0,
+// P2 = P3 − b·T3, D = P3 − P0 and c = T0 × T3, the end curvatures of a cubic are
+//   κ0 = 2/3 · (T0 × D − b c) / a²,    κ3 = 2/3 · (D × T3 − a c) / b²,
+// so the handle lengths a, b > 0 solve a quartic; there may be none, one or several.
+#pragma once
+
+#include <vector>
+
+#include "geom/bezier.hpp"
+
+namespace gf {
+
+struct HermiteEnd {
+  Vec2 point;
+  Vec2 tangent;      ///< unit, along the direction of travel
+  double curvature;  ///< signed, left turns positive
+};
+
+/// Every cubic with both handle lengths in (0, max_handle] that meets the ends with their
+/// tangents and curvatures; empty when there is none. max_handle defaults to 2 |P3 − P0|.
+std::vector<Cubic> g2_hermite_cubics(const HermiteEnd& start, const HermiteEnd& end, double max_handle = 0.0);
+
+}  // namespace gf

@@ -1,0 +1,85 @@
+#include "geom/polyline_distance.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace gf {
+
+double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 d = b - a;
+  const double len2 = dot(d, d);
+  const double t = len2 > 0.0 ? std::clamp(dot(p - a, d) / len2, 0.0, 1.0) : 0.0;
+  return distance(p, a + d * t);
+}
+
+double distance_to_polyline(Vec2 p, std::span<const Vec2> polyline) {
+  if (polyline.size() == 1) return distance(p, polyline[0]);
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i + 1 < polyline.size(); ++i) best = std::min(best, distance_to_segment(p, polyline[i], polyline[i + 1]));
+  return best;
+}
+
+DirectedDistance directed_hausdorff(std::span<const Vec2> from, std::span<const Vec2> to_polyline) {
+  DirectedDistance out;
+  for (std::size_t i = 0; i < from.size(); ++i) {
+    const double d = distance_to_polyline(from[i], to_polyline);
+    if (d > out.value) out = {d, i};
+  }
+  return out;
+}
+
+PolylineGrid::PolylineGrid(std::vector<Vec2> polyline, double cell_size) : points_(std::move(polyline)), cell_(cell_size) {
+  if (points_.empty()) return;
+  Vec2 lo = points_[0], hi = points_[0];
+  for (const Vec2 p : points_) lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)}, hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+  origin_ = lo;
+  // No more than about 4096 cells, however small the cell asked for.
+  cell_ = std::max({cell_, (hi.x - lo.x) / 64.0, (hi.y - lo.y) / 64.0, 1e-9});
+  columns_ = static_cast<long>((hi.x - lo.x) / cell_) + 1;
+  rows_ = static_cast<long>((hi.y - lo.y) / cell_) + 1;
+  cells_.resize(static_cast<std::size_t>(columns_ * rows_));
+  for (std::size_t i = 0; i + 1 < points_.size(); ++i) {
+    const auto [c0, r0] = cell_of(points_[i]);
+    const auto [c1, r1] = cell_of(points_[i + 1]);
+    for (long r = std::min(r0, r1); r <= std::max(r0, r1); ++r)
+      for (long c = std::min(c0, c1); c <= std::max(c0, c1); ++c)
+        cells_[static_cast<std::size_t>(r * columns_ + c)].push_back(static_cast<std::uint32_t>(i));
+  }
+}
+
+std::pair<long, long> PolylineGrid::cell_of(Vec2 p) const {
+  const long c = std::clamp(static_cast<long>(std::floor((p.x - origin_.x) / cell_)), 0L, columns_ - 1);
+  const long r = std::clamp(static_cast<long>(std::floor((p.y - origin_.y) / cell_)), 0L, rows_ - 1);
+  return {c, r};
+}
+
+double PolylineGrid::distance_to(Vec2 p) const {
+  if (points_.size() == 1) return distance(p, points_[0]);
+  double best = std::numeric_limits<double>::infinity();
+  const auto [pc, pr] = cell_of(p);
+  // The query's own distance to the grid's box, so rings far outside start counting right.
+  const long extent = std::max(columns_, rows_);
+  for (long ring = 0; ring <= extent; ++ring) {
+    for (long r = pr - ring; r <= pr + ring; ++r) {
+      if (r < 0 || r >= rows_) continue;
+      for (long c = pc - ring; c <= pc + ring; ++c) {
+        if (c < 0 || c >= columns_) continue;
+        if (std::max(std::abs(r - pr), std::abs(c - pc)) != ring) continue;
+        for (const std::uint32_t i : cells_[static_cast<std::size_t>(r * columns_ + c)])
+          best = std::min(best, distance_to_segment(p, points_[i], points_[i + 1]));
+      }
+    }
+    // Cells beyond this ring are at least `ring` cells away from p's cell.
+    if (best <= static_cast<double>(ring) * cell_) break;
+  }
+  return best;
+}
+
+double directed_hausdorff(std::span<const Vec2> from, const PolylineGrid& to) {
+  double m = 0.0;
+  for (const Vec2 p : from) m = std::max(m, to.distance_to(p));
+  return m;
+}
+
+}  // namespace gf

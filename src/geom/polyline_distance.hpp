@@ -1,0 +1,43 @@
+// Distances between sampled curves: a point to a polyline, and the directed Hausdorff
+// distance max_{p ∈ from} min_{q ∈ to} |p − q| with `to` taken as the polyline through its
+// points (so the bound does not depend on how densely `to` was sampled along straight parts).
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "geom/vec2.hpp"
+
+namespace gf {
+
+double distance_to_segment(Vec2 p, Vec2 a, Vec2 b);
+double distance_to_polyline(Vec2 p, std::span<const Vec2> polyline);
+
+struct DirectedDistance {
+  double value = 0.0;
+  std::size_t worst = 0;  ///< index in `from` where it is reached
+};
+DirectedDistance directed_hausdorff(std::span<const Vec2> from, std::span<const Vec2> to_polyline);
+
+/// A polyline bucketed on a uniform grid, for nearest-distance queries on long polylines
+/// (whole contours): a query looks at rings of cells outwards until no nearer segment can be.
+class PolylineGrid {
+ public:
+  PolylineGrid(std::vector<Vec2> polyline, double cell_size);
+  double distance_to(Vec2 p) const;
+
+ private:
+  std::pair<long, long> cell_of(Vec2 p) const;
+  std::vector<Vec2> points_;
+  double cell_;
+  Vec2 origin_;
+  long columns_ = 1, rows_ = 1;
+  std::vector<std::vector<std::uint32_t>> cells_;  ///< segment indices per cell
+};
+
+/// max over `from` of the distance to the polyline in `to`.
+double directed_hausdorff(std::span<const Vec2> from, const PolylineGrid& to);
+
+}  // namespace gf

@@ -1,0 +1,275 @@
+#!/usr/bin/python3
+"""The fairing issue's bars, measured independently of glyphfair (fontTools, numpy, scipy; no
+code shared with glyphfair) on a source font and the UFO `glyphfair fair` wrote from it.
+
+Per glyph (a–z A–Z by default, through the font's cmap), both versions:
+  total variation  ∫|dκ/ds| ds over the segments plus |Δκ| at smooth joins (≤ 3°), κ in 1/em;
+  inflections      sign changes of κ along smooth stretches (within segments and across
+                   smooth joins), |κ|·UPM below 1e-6 counting as 0;
+  extrema          turning points of κ along smooth stretches, each rise or fall counted once
+                   it exceeds 1 % of the contour's largest |κ| (so float noise on an arc is
+                   not an extremum);
+  nodes            on-curve points;
+  kinks, g2-jumps, missing extrema   as tests/tools/independent_checks.py defines them;
+  distance         two-sided Hausdorff between the outlines, from samples 0.25 unit apart;
+  contours         count and each contour's direction (sign of its area), in order.
+
+Bars (--profile handwriting|text) as the issue states them; prints a line per glyph and a
+summary; exit 1 when a bar fails.
+
+usage: fairing_bars.py FONT FAIRED.ufo --profile handwriting|text [--glyphs a,b,...] [--json OUT]
+"""
+import argparse
+import json
+import math
+import statistics
+import sys
+
+import numpy as np
+from fontTools.pens.recordingPen import DecomposingRecordingPen, RecordingPen
+from fontTools.ttLib import TTFont
+from fontTools.ufoLib import UFOReader
+from scipy.spatial import cKDTree
+
+from compare_outlines import segments
+from independent_checks import cross, derivative_roots, dot, end_curvature, length, norm, point, sub, tangent
+
+SMOOTH_DEG, CORNER_DEG = 0.05, 3.0
+
+
+def bezier(seg, t):
+    """Points, first and second derivatives of a Bézier at the parameters t (numpy)."""
+    p = np.array(seg, dtype=float)
+    n = len(p) - 1
+    t = np.asarray(t)[:, None]
+    if n == 1:
+        d1 = np.repeat((p[1] - p[0])[None, :], len(t), axis=0)
+        return p[0] + t * (p[1] - p[0]), d1, np.zeros_like(d1)
+    if n == 2:
+        pt = (1 - t) ** 2 * p[0] + 2 * t * (1 - t) * p[1] + t ** 2 * p[2]
+        d1 = 2 * ((1 - t) * (p[1] - p[0]) + t * (p[2] - p[1]))
+        d2 = np.repeat((2 * (p[2] - 2 * p[1] + p[0]))[None, :], len(t), axis=0)
+        return pt, d1, d2
+    pt = (1 - t) ** 3 * p[0] + 3 * t * (1 - t) ** 2 * p[1] + 3 * t ** 2 * (1 - t) * p[2] + t ** 3 * p[3]
+    d1 = 3 * ((1 - t) ** 2 * (p[1] - p[0]) + 2 * t * (1 - t) * (p[2] - p[1]) + t ** 2 * (p[3] - p[2]))
+    d2 = 6 * ((1 - t) * (p[2] - 2 * p[1] + p[0]) + t * (p[3] - 2 * p[2] + p[1]))
+    return pt, d1, d2
+
+
+def curvature_samples(seg, n=64):
+    t = np.linspace(0, 1, n + 1)
+    pt, d1, d2 = bezier(seg, t)
+    speed = np.hypot(d1[:, 0], d1[:, 1])
+    with np.errstate(divide="ignore", invalid="ignore"):
+        k = (d1[:, 0] * d2[:, 1] - d1[:, 1] * d2[:, 0]) / speed ** 3
+    ok = np.isfinite(k)
+    return pt, k[ok], ok
+
+
+def join_angle(a, b):
+    tin, tout = tangent(a, True), tangent(b, False)
+    if tin is None or tout is None:
+        return None
+    return abs(math.degrees(math.atan2(cross(tin, tout), dot(tin, tout))))
+
+
+def stretches(segs):
+    """The contour's κ samples cut into smooth stretches (cut at joins over 3°), with the
+    |Δκ| at the smooth joins."""
+    n = len(segs)
+    breaks = [i for i in range(n) if (join_angle(segs[i - 1], segs[i]) or 180) > CORNER_DEG]
+    order = list(range(n))
+    if breaks:
+        order = order[breaks[0]:] + order[:breaks[0]]
+    out, current, jumps = [], [], 0.0
+    for i in order:
+        if i in breaks and current:
+            out.append(current)
+            current = []
+        _, k, _ = curvature_samples(segs[i])
+        if current and len(k):
+            jumps += abs(k[0] - current[-1])
+        current.extend(k.tolist())
+    if current:
+        if not breaks and current:  # a closed smooth contour: the seam joins too
+            jumps += abs(current[0] - current[-1])
+            current = current + current[:1]
+        out.append(current)
+    return out, jumps
+
+
+def measures(contours, upm):
+    tv = infl = ext = 0
+    tv = 0.0
+    for segs in contours:
+        if not segs:
+            continue
+        runs, jumps = stretches(segs)
+        tv += jumps * upm
+        kmax = max((abs(x) for r in runs for x in r), default=0.0)
+        for r in runs:
+            k = np.array(r) * upm
+            tv += float(np.sum(np.abs(np.diff(k))))
+            signs = np.sign(np.where(np.abs(k) < 1e-6, 0, k))
+            signs = signs[signs != 0]
+            infl += int(np.sum(signs[1:] != signs[:-1]))
+            # extrema with hysteresis
+            step = 0.01 * kmax * upm
+            direction, anchor = 0, k[0] if len(k) else 0
+            for x in k[1:]:
+                if direction >= 0 and x < anchor - step:
+                    ext += direction > 0
+                    direction, anchor = -1, x
+                elif direction <= 0 and x > anchor + step:
+                    ext += direction < 0
+                    direction, anchor = 1, x
+                elif (direction > 0 and x > anchor) or (direction < 0 and x < anchor) or direction == 0:
+                    anchor = x if direction != 0 else anchor
+    return tv, infl, ext
+
+
+def joins_report(contours, upm):
+    kinks = jumps = smooth = missing = 0
+    nodes = [s[0] for c in contours for s in c]
+    for segs in contours:
+        n = len(segs)
+        for i in range(n):
+            a, b = segs[i - 1], segs[i]
+            angle = join_angle(a, b)
+            if angle is None:
+                continue
+            if SMOOTH_DEG < angle < CORNER_DEG:
+                kinks += 1
+            elif angle <= SMOOTH_DEG:
+                smooth += 1
+                k1, k2 = end_curvature(a, True), end_curvature(b, False)
+                if math.isinf(k1) or math.isinf(k2):
+                    jumps += 1
+                    continue
+                big = max(abs(k1), abs(k2))
+                jumps += (abs(k1 - k2) / big > 0.05) if big * upm >= 0.5 else (abs(k1 - k2) * upm > 0.05)
+        for s in segs:
+            if len(s) == 2:
+                continue
+            total = length(s, 0, 1)
+            for axis in (0, 1):
+                for t in derivative_roots(s, axis):
+                    before = length(s, 0, t)
+                    if before <= 0.01 * total or total - before <= 0.01 * total:
+                        continue
+                    p = point(s, t)
+                    if min(norm(sub(p, q)) for q in nodes) > 0.5 * upm / 1000:
+                        missing += 1
+    return kinks, jumps, smooth, missing
+
+
+def dense(contours, spacing=0.25):
+    pts = []
+    for segs in contours:
+        for s in segs:
+            approx = sum(norm(sub(b, a)) for a, b in zip(s, s[1:]))
+            n = max(2, int(approx / spacing))
+            pt, _, _ = bezier(s, np.linspace(0, 1, n + 1))
+            pts.append(pt)
+    return np.vstack(pts) if pts else np.zeros((0, 2))
+
+
+def hausdorff(a, b):
+    pa, pb = dense(a), dense(b)
+    if len(pa) == 0 or len(pb) == 0:
+        return 0.0 if len(pa) == len(pb) else math.inf
+    return max(cKDTree(pb).query(pa)[0].max(), cKDTree(pa).query(pb)[0].max())
+
+
+def area(segs):
+    pts = dense([segs], 2.0)
+    x, y = pts[:, 0], pts[:, 1]
+    return 0.5 * float(np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y))
+
+
+def glyph_contours(glyphset, name, decompose):
+    pen = DecomposingRecordingPen(glyphset) if decompose else RecordingPen()
+    glyphset[name].draw(pen)
+    return [[s for s in c if any(p != s[0] for p in s)] for c in segments(pen.value)]
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("font")
+    ap.add_argument("ufo")
+    ap.add_argument("--profile", choices=["handwriting", "text"], required=True)
+    ap.add_argument("--glyphs", default="abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ")
+    ap.add_argument("--json")
+    args = ap.parse_args()
+    font = TTFont(args.font)
+    upm = font["head"].unitsPerEm
+    cmap = font.getBestCmap()
+    src_gs = font.getGlyphSet()
+    ufo_gs = UFOReader(args.ufo, validate=True).getGlyphSet()
+    rows = []
+    for ch in args.glyphs:
+        name = cmap.get(ord(ch))
+        if name is None or name not in ufo_gs:
+            continue
+        a = glyph_contours(src_gs, name, True)
+        b = glyph_contours(ufo_gs, name, True)
+        tv_a, infl_a, ext_a = measures(a, upm)
+        tv_b, infl_b, ext_b = measures(b, upm)
+        kinks, jumps, smooth, missing = joins_report(b, upm)
+        row = {
+            "glyph": name, "tv": [tv_a, tv_b], "inflections": [infl_a, infl_b], "extrema": [ext_a, ext_b],
+            "nodes": [sum(len(c) for c in a), sum(len(c) for c in b)],
+            "kinks": kinks, "g2_jumps": jumps, "smooth_joins": smooth, "missing_extrema": missing,
+            "distance": hausdorff(a, b),
+            "contours_kept": len(a) == len(b) and all((area(x) > 0) == (area(y) > 0) for x, y in zip(a, b)),
+        }
+        rows.append(row)
+        print(f"{name:12s} tv {tv_a:9.2f} -> {tv_b:8.2f}  infl {infl_a:3d} -> {infl_b:3d}  ext {ext_a:3d} -> {ext_b:3d}  "
+              f"nodes {row['nodes'][0]:3d} -> {row['nodes'][1]:3d}  kinks {kinks}  g2 {jumps}/{smooth}  "
+              f"missing {missing}  dist {row['distance']:.2f}{'' if row['contours_kept'] else '  CONTOURS CHANGED'}")
+
+    def ratio(key, f=statistics.median):
+        return f([r[key][1] / r[key][0] for r in rows if r[key][0] > 0])
+
+    def total_ratio(key):
+        a = sum(r[key][0] for r in rows)
+        return sum(r[key][1] for r in rows) / a if a else 0.0
+
+    jumps = sum(r["g2_jumps"] for r in rows)
+    smooth = sum(r["smooth_joins"] for r in rows)
+    worst = max(r["distance"] for r in rows) / upm
+    bars = []
+    if args.profile == "handwriting":
+        bars = [
+            ("median TV ratio <= 0.25", ratio("tv"), ratio("tv") <= 0.25),
+            ("inflections <= 0.4x", total_ratio("inflections"), total_ratio("inflections") <= 0.4),
+            ("curvature extrema <= 0.5x", total_ratio("extrema"), total_ratio("extrema") <= 0.5),
+            ("no missing extrema", sum(r["missing_extrema"] for r in rows), sum(r["missing_extrema"] for r in rows) == 0),
+            ("no kinks", sum(r["kinks"] for r in rows), sum(r["kinks"] for r in rows) == 0),
+            ("g2-jumps <= 2% of smooth joins", jumps / max(smooth, 1), jumps <= 0.02 * smooth),
+            ("every glyph within 1.5% UPM", worst, worst <= 0.015),
+            ("nodes <= 0.7x", total_ratio("nodes"), total_ratio("nodes") <= 0.7),
+            ("contour count and direction kept", sum(not r["contours_kept"] for r in rows), all(r["contours_kept"] for r in rows)),
+        ]
+    else:
+        bars = [
+            ("every glyph within 0.15% UPM", worst, worst <= 0.0015),
+            ("no g2-jump at smooth joins", jumps, jumps == 0),
+            ("no kinks", sum(r["kinks"] for r in rows), sum(r["kinks"] for r in rows) == 0),
+            ("TV <= 0.95x (median)", ratio("tv"), ratio("tv") <= 0.95),
+            ("inflections not increased", total_ratio("inflections"), total_ratio("inflections") <= 1.0),
+            ("nodes <= 1.3x", total_ratio("nodes"), total_ratio("nodes") <= 1.3),
+            ("contour count and direction kept", sum(not r["contours_kept"] for r in rows), all(r["contours_kept"] for r in rows)),
+        ]
+    failed = 0
+    for name, value, ok in bars:
+        failed += not ok
+        print(f"{'PASS' if ok else 'FAIL'}  {name:36s} {value:.4g}")
+    if args.json:
+        with open(args.json, "w") as f:
+            json.dump({"glyphs": rows, "bars": [{"bar": n, "value": v, "pass": ok} for n, v, ok in bars]}, f, indent=1)
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,131 @@
+// glyphfair fair SRC [selection] -o OUT.ufo|.svg|.json [--continuity g1|g2] [--tolerance UNITS]
+//                [--profile text|handwriting] [--corner-angle DEG] [--no-round] [--proof FILE.pdf]
+//                [--jobs N]
+#include <algorithm>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+
+#include <unistd.h>
+
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+
+#include "commands.hpp"
+#include "exit_codes.hpp"
+#include "fair/glyph_fairing.hpp"
+#include "io/input_error.hpp"
+#include "io/json_writer.hpp"
+#include "io/svg_writer.hpp"
+#include "io/ufo_writer.hpp"
+#include "progress.hpp"
+#include "render/proof_document.hpp"
+
+namespace fs = std::filesystem;
+
+namespace gf {
+
+namespace {
+
+// Glyphs are read in order (FreeType faces are not thread-safe), faired in parallel a chunk at
+// a time and written in order, so memory stays flat however large the font.
+constexpr std::size_t chunk_size = 256;
+
+std::string lower_extension(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext;
+}
+
+}  // namespace
+
+void FairCommand::add_to(CLI::App& app) {
+  CLI::App& c = add(app, "fair",
+                    "Fair outlines: G2 log-aesthetic curves within a stated distance of the source, written as cubics",
+                    "OUT.ufo, OUT.svg or OUT.json");
+  c.add_option("--profile", profile_, "text (professional fonts: tight) or handwriting (smooths scan noise)")
+      ->check(CLI::IsMember({"text", "handwriting"}));
+  c.add_option("--continuity", continuity_, "g2 (curvature matched at every smooth join) or g1")
+      ->check(CLI::IsMember({"g1", "g2"}));
+  c.add_option("--tolerance", tolerance_,
+               "Largest distance from the source, font units (default 0.1 % of the em for text, 1 % for handwriting)")
+      ->check(CLI::PositiveNumber);
+  c.add_option("--corner-angle", corner_angle_,
+               "Joins turning by more than this many degrees stay corners (default 3 for text, 30 for handwriting)")
+      ->check(CLI::Range(0.0, 180.0));
+  c.add_flag("--no-round", no_round_, "Keep fractional coordinates instead of rounding to the integer grid");
+  c.add_option("--proof", proof_, "Also draw a before/after proof of every faired glyph (PDF)");
+  c.add_option("--jobs", jobs_, "Glyphs faired in parallel (default: every core)")->check(CLI::PositiveNumber);
+}
+
+int FairCommand::run() const {
+  const std::string ext = lower_extension(output_);
+  if (ext != ".ufo" && ext != ".svg" && ext != ".json")
+    throw InputError(output_ + ": unknown output format (use .ufo, .svg or .json)");
+  if (!proof_.empty() && lower_extension(proof_) != ".pdf") throw InputError(proof_ + ": the proof must be a .pdf");
+  FairOptions options;
+  options.profile = *parse_fair_profile(profile_);
+  options.continuity = continuity_ == "g1" ? Continuity::g1 : Continuity::g2;
+  options.tolerance_units = tolerance_;
+  options.corner_angle_deg = corner_angle_;
+  options.round_to_integers = !no_round_;
+
+  const GlyphSource source = GlyphSource::open(source_, selection_.parse());
+  const FontInfo& font = source.font();
+  const FairSettings settings = resolve_settings(options, font.units_per_em);
+  const fs::path inputs[] = {source_};
+
+  std::optional<UfoWriter> ufo;
+  if (ext == ".ufo") ufo.emplace(output_, font, inputs);
+  GlyphSet whole{font, {}};  // for the single-document formats
+  std::vector<ProofGlyph> proof_pages;
+  std::optional<tbb::global_control> limit;
+  if (jobs_ > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(jobs_));
+  const Progress progress(isatty(STDERR_FILENO));
+  const std::string name = fs::path(source_).filename().string();
+
+  std::size_t glyphs_faired = 0, contours_kept = 0;
+  double deviation = 0.0;
+  std::vector<Glyph> glyphs;
+  std::vector<GlyphFairing> results;
+  for (std::size_t first = 0; first < source.size(); first += chunk_size) {
+    const std::size_t last = std::min(source.size(), first + chunk_size);
+    glyphs.clear();
+    for (std::size_t i = first; i < last; ++i)
+      if (auto g = source.load(i)) glyphs.push_back(std::move(*g));
+    results.assign(glyphs.size(), {});
+    tbb::parallel_for(std::size_t{0}, glyphs.size(), [&](std::size_t k) { results[k] = fair_glyph(glyphs[k], settings); });
+    for (std::size_t k = 0; k < glyphs.size(); ++k) {
+      GlyphFairing& r = results[k];
+      for (const std::string& why : r.kept) {
+        progress.clear();
+        std::cerr << "glyphfair: warning: " << name << ": glyph '" << r.glyph.name << "': " << why << " (kept unfaired)\n";
+      }
+      contours_kept += r.kept.size();
+      ++glyphs_faired;
+      deviation = std::max(deviation, r.deviation);
+      if (!proof_.empty()) proof_pages.push_back({r.glyph, std::move(glyphs[k])});
+      if (ufo) ufo->add(r.glyph);
+      else whole.glyphs.push_back(std::move(r.glyph));
+    }
+    progress.show(name, last, source.size());
+  }
+  progress.clear();
+  if (ufo) ufo->commit();
+  else if (ext == ".svg") write_svg(whole, output_, inputs);
+  else write_json(whole, output_, inputs);
+  if (!proof_.empty()) {
+    ProofOptions proof;
+    proof.title = name + " faired (" + to_string(options.profile) + ", tolerance " + std::to_string(settings.tolerance_units) + " units)";
+    proof.has_compare = true;
+    proof.compare_label = name + " (source)";
+    const fs::path proof_inputs[] = {source_, output_};
+    write_proof(proof_pages, font, proof, proof_, proof_inputs);
+  }
+  std::cerr << "glyphfair: " << name << ": " << glyphs_faired << " glyphs faired, " << contours_kept
+            << " contours kept as they were; largest distance from the source " << deviation << " units (tolerance "
+            << settings.tolerance_units << ")\n";
+  return exit_code::ok;
+}
+
+}  // namespace gf
