@@ -38,9 +38,9 @@ build() {
 demo() {
   local font=fonts/BecauseWeLearn/BecauseWeLearn-Regular-subset.otf
   mkdir -p out
-  build/glyphfair convert "$font" -o out/handwriting.ufo
-  build/glyphfair proof "$font" --text "Hamburgefonstiv" -o out/handwriting-proof.pdf
-  echo "wrote out/handwriting.ufo and out/handwriting-proof.pdf"
+  build/glyphfair fair "$font" --profile handwriting --text "Hamburgefonstiv" \
+    -o out/handwriting-faired.ufo --proof out/handwriting-proof.pdf
+  echo "wrote out/handwriting-faired.ufo and out/handwriting-proof.pdf (faired in black, the source in red)"
 }
 
 case "${1:-}" in

@@ -30,7 +30,7 @@ std::vector<Vec2> grid_directions() {
 // dense table of its points for distances.
 class ChainPath {
  public:
-  explicit ChainPath(const FairedChain& chain) : chain_(chain) {
+  explicit ChainPath(const FairedChain& chain) : chain_(chain), n_(chain.segments.size()) {
     double start = 0.0;
     for (const LogAestheticSegment& seg : chain.segments) {
       starts_.push_back(start);
@@ -56,9 +56,18 @@ class ChainPath {
     if (!prefer_next && i > 0 && sigma == starts_[i]) --i;
     const LogAestheticSegment& seg = chain_.segments[i];
     const double local = sigma - starts_[i];
-    if (local <= 0.0) return seg.start();
-    if (local >= seg.length()) return seg.end();
+    if (local <= 0.0) return with_mean_curvature(seg.start(), i == 0 ? (chain_.closed ? n_ - 1 : n_) : i - 1, false);
+    if (local >= seg.length()) return with_mean_curvature(seg.end(), i + 1 < n_ ? i + 1 : (chain_.closed ? 0 : n_), true);
     return seg.at(local);
+  }
+
+  // At a junction whose solve fell short of G2, both sides get the mean curvature, so the
+  // cubics meeting there agree.
+  LacPoint with_mean_curvature(LacPoint p, std::size_t other, bool other_starts) const {
+    if (other >= n_) return p;
+    const LogAestheticSegment& o = chain_.segments[other];
+    p.curvature = 0.5 * (p.curvature + (other_starts ? o.start().curvature : o.end().curvature));
+    return p;
   }
 
   std::vector<Vec2> points(double a, double b) const {
@@ -84,6 +93,7 @@ class ChainPath {
 
  private:
   const FairedChain& chain_;
+  std::size_t n_;
   std::vector<double> starts_;
   std::vector<std::pair<double, Vec2>> table_;
   double total_ = 0.0;

@@ -21,14 +21,68 @@ std::optional<Vec2> tangent_intersection(Vec2 q0, Vec2 d0, Vec2 q1, Vec2 d1) {
   return q0 + d0 * t;
 }
 
-constexpr double min_end_curvature_ratio = 1e-4;
+constexpr double min_end_curvature_ratio = 1e-2;
 
 Vec2 direction(double angle) { return {std::cos(angle), std::sin(angle)}; }
+
+double sum_squares(const std::vector<double>& v) {
+  double m = 0.0;
+  for (const double x : v) m += x * x;
+  return m;
+}
 
 double max_abs(const std::vector<double>& v) {
   double m = 0.0;
   for (const double x : v) m = std::max(m, std::abs(x));
   return m;
+}
+
+}  // namespace
+
+namespace {
+
+// D at free junction index k as a function of φ_j alone; nullopt where a neighbouring segment
+// does not exist.
+std::optional<double> junction_mismatch(LacChain& chain, std::size_t j, int k, double phi) {
+  const double saved = chain.tangent_angles[j];
+  chain.tangent_angles[j] = phi;
+  const std::size_t n = chain.segment_count();
+  const SegmentFit before = build_chain_segment(chain, (j + n - 1) % n);
+  const SegmentFit after = build_chain_segment(chain, j % n);
+  chain.tangent_angles[j] = saved;
+  (void)k;
+  if (!before.ok() || !after.ok()) return std::nullopt;
+  return before.segment->end().curvature - after.segment->start().curvature;
+}
+
+std::optional<double> solve_junction(LacChain chain, std::size_t j, int k) {
+  const double phi0 = chain.tangent_angles[j];
+  const std::optional<double> d0 = junction_mismatch(chain, j, k, phi0);
+  if (!d0) return std::nullopt;
+  // D_j grows with φ_j: walk towards the root until the sign changes or feasibility ends.
+  const double direction = *d0 > 0.0 ? -1.0 : 1.0;
+  double inside = phi0, step = 1e-3;
+  std::optional<double> outside;
+  for (int it = 0; it < 40 && !outside; ++it, step *= 1.6) {
+    const double trial = inside + direction * step;
+    const std::optional<double> dt = junction_mismatch(chain, j, k, trial);
+    if (!dt) {  // infeasible: shrink the step from the last feasible angle
+      if (step < 1e-9) return std::nullopt;
+      step /= 4.0;
+      continue;
+    }
+    if ((*dt > 0.0) != (*d0 > 0.0)) outside = trial;
+    else inside = trial;
+  }
+  if (!outside) return inside;
+  double lo = inside, hi = *outside;
+  for (int it = 0; it < 60; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    const std::optional<double> dm = junction_mismatch(chain, j, k, mid);
+    if (!dm) return std::nullopt;
+    ((*dm > 0.0) == (*d0 > 0.0) ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
 }
 
 }  // namespace
@@ -60,7 +114,7 @@ SegmentFit build_chain_segment(const LacChain& chain, std::size_t i) {
   if (fit.ok()) {
     const double a = std::abs(fit.segment->start().curvature), b = std::abs(fit.segment->end().curvature);
     if (std::min(a, b) < min_end_curvature_ratio * std::max(a, b))
-      return {std::nullopt, "its end curvatures differ by more than a factor of 10^4"};
+      return {std::nullopt, "its end curvatures differ by more than a factor of 100"};
   }
   return fit;
 }
@@ -137,7 +191,7 @@ G2Result make_g2(LacChain chain, double tolerance, int max_iterations) {
       ChainSegments attempt = build_chain(trial);
       if (!attempt.ok()) continue;
       const std::vector<double> dt = curvature_mismatch(trial, attempt.segments);
-      if (max_abs(dt) < max_abs(d)) {
+      if (sum_squares(dt) < sum_squares(d)) {
         chain = std::move(trial);
         built = std::move(attempt);
         d = dt;
@@ -149,6 +203,29 @@ G2Result make_g2(LacChain chain, double tolerance, int max_iterations) {
       result.reason = "the line search found no better feasible angles";
       break;
     }
+  }
+  if (max_abs(d) > tolerance) {
+    // The seeds' method where Newton stalls at the edge of the feasible region: junction by
+    // junction, the worst first, bisect D_j(φ_j) = 0 within φ_j's feasible run (D_j grows with φ_j,
+    // lac-math.md §6.1), the other angles fixed.
+    for (int sweep = 0; sweep < 30 && max_abs(d) > tolerance; ++sweep) {
+      std::vector<int> order(static_cast<std::size_t>(m));
+      for (int k = 0; k < m; ++k) order[static_cast<std::size_t>(k)] = k;
+      std::sort(order.begin(), order.end(), [&](int a, int b) { return std::abs(d[a]) > std::abs(d[b]); });
+      bool moved = false;
+      for (const int k : order) {
+        const std::size_t j = first + static_cast<std::size_t>(k);
+        if (const std::optional<double> phi = solve_junction(chain, j, k)) {
+          chain.tangent_angles[j] = *phi;
+          moved = true;
+        }
+      }
+      ChainSegments again = build_chain(chain);
+      if (!again.ok() || !moved) break;
+      built = std::move(again);
+      d = curvature_mismatch(chain, built.segments);
+    }
+    if (max_abs(d) <= tolerance) result.reason.clear();
   }
   result.max_mismatch = max_abs(d);
   result.converged = result.max_mismatch <= tolerance;

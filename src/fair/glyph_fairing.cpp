@@ -1,8 +1,6 @@
 #include "fair/glyph_fairing.hpp"
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 
 namespace gf {
 
@@ -10,7 +8,6 @@ GlyphFairing fair_glyph(const Glyph& source, const FairSettings& settings) {
   GlyphFairing out;
   out.glyph = source;
   out.glyph.outline.contours.clear();
-  if (std::getenv("GF_DEBUG")) fprintf(stderr, "glyph %s\n", source.name.c_str());
   for (std::size_t i = 0; i < source.outline.contours.size(); ++i) {
     ContourFairing c = fair_contour(source.outline.contours[i], settings);
     if (c.faired) {

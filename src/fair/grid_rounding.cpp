@@ -1,8 +1,6 @@
 #include "fair/grid_rounding.hpp"
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 #include <cmath>
 #include <numeric>
 
@@ -96,13 +94,15 @@ void resolve_handle_lengths(std::vector<OutlineNode>& nodes, const std::vector<O
     const double kb = -leaving_curvature(fb.point, *fb.in_handle, *fa.out_handle);
     const HermiteEnd start{a.point, ta / norm(ta), ka}, end{b.point, tb / norm(tb), kb};
     const double want_a = norm(*fa.out_handle - fa.point), want_b = norm(fb.point - *fb.in_handle);
+    // Only a small correction: each handle within 10 % (and 2 units) of its length.
     std::optional<Cubic> best;
     double closest = 1e300;
     for (const Cubic& c : g2_hermite_cubics(start, end)) {
-      const double miss = std::abs(norm(c.p[1] - c.p[0]) - want_a) + std::abs(norm(c.p[3] - c.p[2]) - want_b);
-      if (miss < closest) closest = miss, best = c;
+      const double da = std::abs(norm(c.p[1] - c.p[0]) - want_a), db = std::abs(norm(c.p[3] - c.p[2]) - want_b);
+      if (da > 0.1 * want_a + 2.0 || db > 0.1 * want_b + 2.0) continue;
+      if (da + db < closest) closest = da + db, best = c;
     }
-    if (!best || closest > 0.25 * (want_a + want_b)) continue;
+    if (!best) continue;
     // Along the grid step where the node has one (G1 stays exact); a corner's handle rounds
     // freely; a handle that must stay on a line keeps the rounding it has.
     auto place = [&](std::size_t node, Vec2 exact, double sign) -> std::optional<Vec2> {
@@ -122,7 +122,8 @@ void resolve_handle_lengths(std::vector<OutlineNode>& nodes, const std::vector<O
 
 // G2 as well as the grid allows: the handles of every smooth node move along their grid
 // direction by whole steps (which keeps G1 exact) where that brings the curvature on the two
-// sides closer, by at most two steps from where rounding put them.
+// sides closer: at most two steps, and no farther from the unrounded handle than 2 units or
+// 5 % of its length.
 void restore_g2(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal,
                 const std::vector<std::optional<Vec2>>& steps, bool closed) {
   const std::size_t n = nodes.size();
@@ -141,12 +142,14 @@ void restore_g2(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>&
     for (const std::size_t j : {(i + n - 1) % n, i, (i + 1) % n}) c += jump_at(j) * jump_at(j);
     return c;
   };
-  if (std::getenv("GF_DEBUG")) { double t = 0; for (std::size_t i = 0; i < n; ++i) { t += jump_at(i); fprintf(stderr, " node %zu (%g,%g) smooth=%d grid=%d step=%d jump=%g\n", i, nodes[i].point.x, nodes[i].point.y, nodes[i].smooth, bool(nodes[i].grid_step), bool(steps[i]), jump_at(i)); } fprintf(stderr, "restore before %g\n", t); }
   for (int sweep = 0; sweep < 3; ++sweep)
     for (std::size_t i = 0; i < n; ++i) {
       if (!steps[i] || !nodes[i].in_handle || !nodes[i].out_handle) continue;
       const Vec2 d = *steps[i];
       for (const bool out : {false, true}) {
+        // The curvature at a line join (κ = 0, set by where this handle sits) is not traded.
+        const OutlineNode& far = nodes[(i + (out ? 1 : n - 1)) % n];
+        if (far.smooth && (!far.in_handle || !far.out_handle)) continue;
         Vec2& h = out ? *nodes[i].out_handle : *nodes[i].in_handle;
         const Vec2 start = h, want = out ? *ideal[i].out_handle : *ideal[i].in_handle;
         const double sign = out ? 1.0 : -1.0;
@@ -155,7 +158,7 @@ void restore_g2(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>&
         for (int k = -2; k <= 2; ++k) {
           const Vec2 trial = start + d * (sign * k);
           if (k == 0 || dot(trial - nodes[i].point, d) * sign <= 0.0) continue;
-          if (distance(trial, want) > 2.0 * norm(d) + 1.0) continue;
+          if (distance(trial, want) > std::max(2.0, 0.05 * distance(want, nodes[i].point))) continue;
           h = trial;
           const double c = cost_near(i);
           if (c < best_cost - 1e-12) best_cost = c, best = trial;
@@ -163,7 +166,6 @@ void restore_g2(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>&
         h = best;
       }
     }
-  if (std::getenv("GF_DEBUG")) { double t = 0; for (std::size_t i = 0; i < n; ++i) t += jump_at(i); fprintf(stderr, "restore after %g\n", t); }
 }
 
 }  // namespace
@@ -191,31 +193,55 @@ RoundedNodes round_to_grid(const std::vector<OutlineNode>& nodes, bool closed) {
       if (src.out_handle) dst.out_handle = rounded(*src.out_handle);
     }
   }
-  // Smooth nodes without a grid direction, once every node has its grid position (a line's
-  // direction needs its far end).
+  // Smooth nodes between two curves without a grid direction: the nearest exact collinear choice.
   for (std::size_t i = 0; i < n; ++i) {
     const OutlineNode& src = nodes[i];
     OutlineNode& dst = r.nodes[i];
     if (!src.smooth || steps[i] || open_end(i)) continue;
-    if (src.in_handle && src.out_handle) {
-      const Choice c = collinear_choice(src.point, src.in_handle, src.out_handle);
-      dst.point = c.point, dst.in_handle = c.in, dst.out_handle = c.out;
-      steps[i] = c.step;
-      continue;
+    if (!src.in_handle || !src.out_handle) continue;
+    const Choice c = collinear_choice(src.point, src.in_handle, src.out_handle);
+    dst.point = c.point, dst.in_handle = c.in, dst.out_handle = c.out;
+    steps[i] = c.step;
+  }
+  // Lines with a curve meeting them tangentially: the curve's handle must lie on the line, in
+  // whole steps of the line's primitive direction. A diagonal line between nearest grid points
+  // may have a long primitive step (DejaVu's S spine: (122, −25)), so both ends may move to a
+  // neighbouring grid point where the step is short; the choice that moves least wins.
+  for (std::size_t i = 0; i < (closed ? n : n - 1); ++i) {
+    const std::size_t j = (i + 1) % n;
+    if (nodes[i].out_handle || nodes[j].in_handle) continue;  // not a line
+    const bool at_start = nodes[i].smooth && nodes[i].in_handle && !open_end(i);
+    const bool at_end = nodes[j].smooth && nodes[j].out_handle && !open_end(j);
+    if (!at_start && !at_end) continue;
+    const Vec2 a0 = r.nodes[i].point, b0 = r.nodes[j].point;
+    double best_cost = 1e300;
+    Vec2 best_a = a0, best_b = b0;
+    std::optional<Vec2> best_in, best_out;
+    for (int k = 0; k < 81; ++k) {
+      const Vec2 a = a0 + Vec2{double(k % 3 - 1), double(k / 3 % 3 - 1)};
+      const Vec2 b = b0 + Vec2{double(k / 9 % 3 - 1), double(k / 27 % 3 - 1)};
+      const Vec2 along = b - a;
+      const long long g = std::gcd(static_cast<long long>(std::abs(along.x)), static_cast<long long>(std::abs(along.y)));
+      if (g == 0) continue;
+      const Vec2 d = along / static_cast<double>(g);
+      double cost = std::max(distance(a, nodes[i].point), distance(b, nodes[j].point));
+      std::optional<Vec2> in, out;
+      if (at_start) {  // the curve arrives at a along d
+        const double m = std::max(1.0, std::round(dot(nodes[i].point - *nodes[i].in_handle, d) / dot(d, d)));
+        in = a - d * m;
+        cost = std::max(cost, distance(*in, *nodes[i].in_handle));
+      }
+      if (at_end) {  // the curve leaves b along d
+        const double m = std::max(1.0, std::round(dot(*nodes[j].out_handle - nodes[j].point, d) / dot(d, d)));
+        out = b + d * m;
+        cost = std::max(cost, distance(*out, *nodes[j].out_handle));
+      }
+      if (cost < best_cost) best_cost = cost, best_a = a, best_b = b, best_in = in, best_out = out;
     }
-    if (!src.in_handle && !src.out_handle) continue;
-    // A curve meeting a line: the handle goes on the line through the two grid nodes.
-    const bool line_before = !src.in_handle;
-    const Vec2 far = r.nodes[(i + (line_before ? n - 1 : 1)) % n].point;
-    const Vec2 along = line_before ? dst.point - far : far - dst.point;  // direction of travel
-    const long long g = std::gcd(static_cast<long long>(std::abs(along.x)), static_cast<long long>(std::abs(along.y)));
-    if (g == 0) continue;
-    const Vec2 d = along / static_cast<double>(g);
-    const Vec2 h = line_before ? *src.out_handle : *src.in_handle;
-    const double m = std::max(1.0, std::round(std::abs(dot(h - src.point, d)) / dot(d, d)));
-    const Vec2 exact = line_before ? dst.point + d * m : dst.point - d * m;
-    if (distance(exact, h) <= 2.0) (line_before ? dst.out_handle : dst.in_handle) = exact;
-    else ++r.inexact_g1;
+    r.nodes[i].point = best_a;
+    r.nodes[j].point = best_b;
+    if (best_in) r.nodes[i].in_handle = best_in;
+    if (best_out) r.nodes[j].out_handle = best_out;
   }
   resolve_handle_lengths(r.nodes, nodes, steps, closed);
   restore_g2(r.nodes, nodes, steps, closed);

@@ -9,7 +9,7 @@ namespace gf {
 
 namespace {
 
-constexpr double bisector_weight = 0.1;
+constexpr double bisector_weight = 0.01;  // only decides where the balance alone does not (an even closed chain)
 
 double near(double angle, double reference) {
   return reference + std::remainder(angle - reference, 2 * std::numbers::pi);

@@ -48,7 +48,7 @@ struct Basis {
 
 }  // namespace
 
-BSplineFit fit_cubic_bspline(std::span<const Vec2> points, int span_count) {
+BSplineFit fit_cubic_bspline(std::span<const Vec2> points, int span_count, bool closed) {
   BSplineFit fit;
   const int m = static_cast<int>(points.size());
   if (span_count < 1 || m < span_count + 3) return fit;
@@ -80,29 +80,39 @@ BSplineFit fit_cubic_bspline(std::span<const Vec2> points, int span_count) {
       fit.spans.push_back(Cubic{q0, (r1 * 4.0 - r2 * 2.0) * 0.75, (r2 * 4.0 - r1 * 2.0) * 0.75, q3});
     }
   };
-  // Least squares for the interior controls (the clamped ends interpolate the end points),
-  // then parameter correction: each point's parameter moves to its foot on the curve
-  // (Newton), and the fit is solved again (Hoschek's iteration).
+  // Least squares for the controls with the end conditions as constraints, solved with
+  // Lagrange multipliers (the KKT system [2AᵀA Cᵀ; C 0] [c; λ] = [2Aᵀb; d]): the clamped ends
+  // interpolate the first and last points, and a closed sequence also leaves its first point
+  // in the direction it arrives (c₁ − c₀ = c_{n−1} − c_{n−2}), so the seam is G1. Then
+  // parameter correction: each point's parameter moves to its foot on the curve (Newton), and
+  // the fit is solved again (Hoschek's iteration).
+  const int constraints = closed ? 3 : 2;
   for (int iteration = 0; iteration < 6; ++iteration) {
-    Eigen::MatrixXd a = Eigen::MatrixXd::Zero(m, n - 2);
+    Eigen::MatrixXd a = Eigen::MatrixXd::Zero(m, n);
     Eigen::MatrixXd rhs(m, 2);
     for (int i = 0; i < m; ++i) {
       int first = 0;
       const auto values = basis.values(u[i], first);
-      Vec2 fixed{};
-      for (int k = 0; k < 4; ++k) {
-        const int j = first + k;
-        if (j == 0) fixed += points.front() * values[k];
-        else if (j == n - 1) fixed += points.back() * values[k];
-        else a(i, j - 1) = values[k];
-      }
-      rhs(i, 0) = points[i].x - fixed.x;
-      rhs(i, 1) = points[i].y - fixed.y;
+      for (int k = 0; k < 4; ++k) a(i, first + k) = values[k];
+      rhs(i, 0) = points[i].x;
+      rhs(i, 1) = points[i].y;
     }
-    const Eigen::MatrixXd interior = a.colPivHouseholderQr().solve(rhs);
-    control.front() = points.front();
+    Eigen::MatrixXd kkt = Eigen::MatrixXd::Zero(n + constraints, n + constraints);
+    Eigen::MatrixXd right = Eigen::MatrixXd::Zero(n + constraints, 2);
+    kkt.topLeftCorner(n, n) = 2.0 * a.transpose() * a;
+    right.topRows(n) = 2.0 * a.transpose() * rhs;
+    auto constrain = [&](int row, std::initializer_list<std::pair<int, double>> terms, Vec2 value) {
+      for (const auto& [j, w] : terms) kkt(n + row, j) = kkt(j, n + row) = w;
+      right(n + row, 0) = value.x;
+      right(n + row, 1) = value.y;
+    };
+    constrain(0, {{0, 1.0}}, points.front());
+    constrain(1, {{n - 1, 1.0}}, points.back());
+    if (closed) constrain(2, {{1, 1.0}, {0, -1.0}, {n - 1, -1.0}, {n - 2, 1.0}}, {0.0, 0.0});
+    const Eigen::MatrixXd solution = kkt.fullPivLu().solve(right);
+    for (int j = 0; j < n; ++j) control[j] = {solution(j, 0), solution(j, 1)};
+    control.front() = points.front();  // equal already, up to the solver's rounding
     control.back() = points.back();
-    for (int j = 1; j < n - 1; ++j) control[j] = {interior(j - 1, 0), interior(j - 1, 1)};
     to_spans();
     for (int i = 1; i + 1 < m; ++i) {
       const int s = std::clamp(static_cast<int>(u[i] * span_count), 0, span_count - 1);
@@ -119,10 +129,10 @@ BSplineFit fit_cubic_bspline(std::span<const Vec2> points, int span_count) {
   return fit;
 }
 
-BSplineFit fit_cubic_bspline_within(std::span<const Vec2> points, double tolerance) {
+BSplineFit fit_cubic_bspline_within(std::span<const Vec2> points, double tolerance, bool closed) {
   BSplineFit fit;
-  for (int spans = 1; spans + 3 <= static_cast<int>(points.size()); spans *= 2) {
-    fit = fit_cubic_bspline(points, spans);
+  for (int spans = closed ? 2 : 1; spans + 3 <= static_cast<int>(points.size()); spans *= 2) {
+    fit = fit_cubic_bspline(points, spans, closed);
     if (fit.max_residual <= tolerance) break;
   }
   return fit;
