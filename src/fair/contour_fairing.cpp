@@ -149,7 +149,7 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& settings)
   }
   const double rounding = settings.round_to_integers ? 0.5 : 0.0;
   double available = std::max(settings.tolerance_units - rounding, 0.25 * settings.tolerance_units);
-  for (int attempt = 0; attempt < 3; ++attempt, available *= 0.5) {
+  for (int attempt = 0; attempt < 2; ++attempt, available *= 0.5) {
     Attempt a = fair_with_budgets(plan, settings, {0.4 * available, 0.6 * available});
     if (!a.failure.empty()) {
       out.reason = a.failure;

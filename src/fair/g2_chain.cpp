@@ -76,7 +76,7 @@ std::optional<double> solve_junction(LacChain chain, std::size_t j, int k) {
   }
   if (!outside) return inside;
   double lo = inside, hi = *outside;
-  for (int it = 0; it < 60; ++it) {
+  for (int it = 0; it < 40; ++it) {
     const double mid = 0.5 * (lo + hi);
     const std::optional<double> dm = junction_mismatch(chain, j, k, mid);
     if (!dm) return std::nullopt;
@@ -208,7 +208,7 @@ G2Result make_g2(LacChain chain, double tolerance, int max_iterations) {
     // The seeds' method where Newton stalls at the edge of the feasible region: junction by
     // junction, the worst first, bisect D_j(φ_j) = 0 within φ_j's feasible run (D_j grows with φ_j,
     // lac-math.md §6.1), the other angles fixed.
-    for (int sweep = 0; sweep < 30 && max_abs(d) > tolerance; ++sweep) {
+    for (int sweep = 0; sweep < 2 && max_abs(d) > tolerance; ++sweep) {
       std::vector<int> order(static_cast<std::size_t>(m));
       for (int k = 0; k < m; ++k) order[static_cast<std::size_t>(k)] = k;
       std::sort(order.begin(), order.end(), [&](int a, int b) { return std::abs(d[a]) > std::abs(d[b]); });

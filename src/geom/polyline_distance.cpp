@@ -6,26 +6,42 @@
 
 namespace gf {
 
-double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) {
+namespace {
+
+// Squared distances throughout, one square root at the end: the inner loops are the fairing's
+// hottest.
+double squared_distance_to_segment(Vec2 p, Vec2 a, Vec2 b) {
   const Vec2 d = b - a;
   const double len2 = dot(d, d);
   const double t = len2 > 0.0 ? std::clamp(dot(p - a, d) / len2, 0.0, 1.0) : 0.0;
-  return distance(p, a + d * t);
+  const Vec2 r = p - (a + d * t);
+  return dot(r, r);
 }
 
-double distance_to_polyline(Vec2 p, std::span<const Vec2> polyline) {
-  if (polyline.size() == 1) return distance(p, polyline[0]);
+double squared_distance_to_polyline(Vec2 p, std::span<const Vec2> polyline) {
+  if (polyline.size() == 1) return dot(p - polyline[0], p - polyline[0]);
   double best = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i + 1 < polyline.size(); ++i) best = std::min(best, distance_to_segment(p, polyline[i], polyline[i + 1]));
+  for (std::size_t i = 0; i + 1 < polyline.size(); ++i)
+    best = std::min(best, squared_distance_to_segment(p, polyline[i], polyline[i + 1]));
   return best;
+}
+
+}  // namespace
+
+double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) { return std::sqrt(squared_distance_to_segment(p, a, b)); }
+
+double distance_to_polyline(Vec2 p, std::span<const Vec2> polyline) {
+  return std::sqrt(squared_distance_to_polyline(p, polyline));
 }
 
 DirectedDistance directed_hausdorff(std::span<const Vec2> from, std::span<const Vec2> to_polyline) {
   DirectedDistance out;
+  double worst = 0.0;
   for (std::size_t i = 0; i < from.size(); ++i) {
-    const double d = distance_to_polyline(from[i], to_polyline);
-    if (d > out.value) out = {d, i};
+    const double d = squared_distance_to_polyline(from[i], to_polyline);
+    if (d > worst) worst = d, out.worst = i;
   }
+  out.value = std::sqrt(worst);
   return out;
 }
 
@@ -56,7 +72,7 @@ std::pair<long, long> PolylineGrid::cell_of(Vec2 p) const {
 
 double PolylineGrid::distance_to(Vec2 p) const {
   if (points_.size() == 1) return distance(p, points_[0]);
-  double best = std::numeric_limits<double>::infinity();
+  double best = std::numeric_limits<double>::infinity();  // squared
   const auto [pc, pr] = cell_of(p);
   // The query's own distance to the grid's box, so rings far outside start counting right.
   const long extent = std::max(columns_, rows_);
@@ -67,13 +83,14 @@ double PolylineGrid::distance_to(Vec2 p) const {
         if (c < 0 || c >= columns_) continue;
         if (std::max(std::abs(r - pr), std::abs(c - pc)) != ring) continue;
         for (const std::uint32_t i : cells_[static_cast<std::size_t>(r * columns_ + c)])
-          best = std::min(best, distance_to_segment(p, points_[i], points_[i + 1]));
+          best = std::min(best, squared_distance_to_segment(p, points_[i], points_[i + 1]));
       }
     }
     // Cells beyond this ring are at least `ring` cells away from p's cell.
-    if (best <= static_cast<double>(ring) * cell_) break;
+    const double reach = static_cast<double>(ring) * cell_;
+    if (best <= reach * reach) break;
   }
-  return best;
+  return std::sqrt(best);
 }
 
 double directed_hausdorff(std::span<const Vec2> from, const PolylineGrid& to) {

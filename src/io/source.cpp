@@ -5,6 +5,7 @@
 #include <variant>
 
 #include "io/input_error.hpp"
+#include "io/point_sequence_reader.hpp"
 #include "io/svg_reader.hpp"
 #include "io/text_shaping.hpp"
 #include "io/ufo_reader.hpp"
@@ -57,14 +58,15 @@ GlyphSource GlyphSource::open(const fs::path& path, const SourceOptions& options
   std::error_code ec;
   const bool is_ufo = ext == ".ufo" || fs::is_directory(path, ec);
   const bool is_svg = ext == ".svg";
-  if ((is_ufo || is_svg) && (!options.font.location.empty() || options.font.named_instance))
+  const bool is_points = ext == ".json";
+  if ((is_ufo || is_svg || is_points) && (!options.font.location.empty() || options.font.named_instance))
     throw InputError(file + ": --location and --instance apply to variable font files only");
 
   auto impl = std::make_unique<Impl>(Impl{path, GlyphSet{}, {}, options.selection.empty()});
   GlyphCatalog catalog;
   std::optional<LoadedCatalog> loaded;
-  if (is_ufo || is_svg) {
-    impl->data = is_ufo ? read_ufo(path) : read_svg(path);
+  if (is_ufo || is_svg || is_points) {
+    impl->data = is_ufo ? read_ufo(path) : is_svg ? read_svg(path) : read_point_sequences(path);
     loaded.emplace(std::get<GlyphSet>(impl->data));
     catalog.by_name = [&](std::string_view n) -> std::optional<std::uint32_t> {
       const auto it = loaded->by_name.find(std::string(n));

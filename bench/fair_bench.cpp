@@ -1,0 +1,48 @@
+// glyphfair fair's cost per glyph and per stage (the whole-font figures come from the command
+// itself: see the closing notes).
+#include <benchmark/benchmark.h>
+
+#include "fair/glyph_fairing.hpp"
+#include "fair/initial_tangents.hpp"
+#include "geom/g2_hermite.hpp"
+#include "io/source.hpp"
+
+namespace gf {
+namespace {
+
+void fair_every_glyph(benchmark::State& state, const std::string& font, FairProfile profile) {
+  const GlyphSet set = GlyphSource::open(font).load_all();
+  FairOptions options;
+  options.profile = profile;
+  const FairSettings settings = resolve_settings(options, set.font.units_per_em);
+  for (auto _ : state)
+    for (const Glyph& g : set.glyphs) benchmark::DoNotOptimize(fair_glyph(g, settings));
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * set.glyphs.size()));
+}
+BENCHMARK_CAPTURE(fair_every_glyph, dejavu_text, std::string(GLYPHFAIR_FONTS) + "/DejaVuSans/DejaVuSans-subset.ttf",
+                  FairProfile::text)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(fair_every_glyph, because_we_learn_handwriting,
+                  std::string(GLYPHFAIR_FONTS) + "/BecauseWeLearn/BecauseWeLearn-Regular-subset.otf",
+                  FairProfile::handwriting)
+    ->Unit(benchmark::kMillisecond);
+
+void g2_hermite_quarter(benchmark::State& state) {
+  const HermiteEnd s{{300.0, 0.0}, {0.0, 1.0}, 1.0 / 300.0};
+  const HermiteEnd e{{0.0, 300.0}, {-1.0, 0.0}, 1.0 / 250.0};
+  for (auto _ : state) benchmark::DoNotOptimize(g2_hermite_cubics(s, e));
+}
+BENCHMARK(g2_hermite_quarter);
+
+void balanced_tangents_closed(benchmark::State& state) {
+  std::vector<Vec2> pts;
+  for (int i = 0; i < state.range(0); ++i) {
+    const double t = 6.283185307179586 * i / static_cast<double>(state.range(0));
+    pts.push_back({300 * std::cos(t), 200 * std::sin(t)});
+  }
+  for (auto _ : state) benchmark::DoNotOptimize(balanced_tangents(pts, true, std::nullopt, std::nullopt));
+}
+BENCHMARK(balanced_tangents_closed)->Arg(8)->Arg(32);
+
+}  // namespace
+}  // namespace gf
