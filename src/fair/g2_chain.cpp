@@ -41,23 +41,22 @@ double max_abs(const std::vector<double>& v) {
 
 namespace {
 
-// D at free junction index k as a function of φ_j alone; nullopt where a neighbouring segment
+// D_j as a function of φ_j alone; nullopt where a neighbouring segment
 // does not exist.
-std::optional<double> junction_mismatch(LacChain& chain, std::size_t j, int k, double phi) {
+std::optional<double> junction_mismatch(LacChain& chain, std::size_t j, double phi) {
   const double saved = chain.tangent_angles[j];
   chain.tangent_angles[j] = phi;
   const std::size_t n = chain.segment_count();
   const SegmentFit before = build_chain_segment(chain, (j + n - 1) % n);
   const SegmentFit after = build_chain_segment(chain, j % n);
   chain.tangent_angles[j] = saved;
-  (void)k;
   if (!before.ok() || !after.ok()) return std::nullopt;
   return before.segment->end().curvature - after.segment->start().curvature;
 }
 
-std::optional<double> solve_junction(LacChain chain, std::size_t j, int k) {
+std::optional<double> solve_junction(LacChain chain, std::size_t j) {
   const double phi0 = chain.tangent_angles[j];
-  const std::optional<double> d0 = junction_mismatch(chain, j, k, phi0);
+  const std::optional<double> d0 = junction_mismatch(chain, j, phi0);
   if (!d0) return std::nullopt;
   // D_j grows with φ_j: walk towards the root until the sign changes or feasibility ends.
   const double direction = *d0 > 0.0 ? -1.0 : 1.0;
@@ -65,7 +64,7 @@ std::optional<double> solve_junction(LacChain chain, std::size_t j, int k) {
   std::optional<double> outside;
   for (int it = 0; it < 40 && !outside; ++it, step *= 1.6) {
     const double trial = inside + direction * step;
-    const std::optional<double> dt = junction_mismatch(chain, j, k, trial);
+    const std::optional<double> dt = junction_mismatch(chain, j, trial);
     if (!dt) {  // infeasible: shrink the step from the last feasible angle
       if (step < 1e-9) return std::nullopt;
       step /= 4.0;
@@ -78,7 +77,7 @@ std::optional<double> solve_junction(LacChain chain, std::size_t j, int k) {
   double lo = inside, hi = *outside;
   for (int it = 0; it < 40; ++it) {
     const double mid = 0.5 * (lo + hi);
-    const std::optional<double> dm = junction_mismatch(chain, j, k, mid);
+    const std::optional<double> dm = junction_mismatch(chain, j, mid);
     if (!dm) return std::nullopt;
     ((*dm > 0.0) == (*d0 > 0.0) ? lo : hi) = mid;
   }
@@ -208,14 +207,14 @@ G2Result make_g2(LacChain chain, double tolerance, int max_iterations) {
     // The seeds' method where Newton stalls at the edge of the feasible region: junction by
     // junction, the worst first, bisect D_j(φ_j) = 0 within φ_j's feasible run (D_j grows with φ_j,
     // lac-math.md §6.1), the other angles fixed.
-    for (int sweep = 0; sweep < 2 && max_abs(d) > tolerance; ++sweep) {
+    for (int sweep = 0; sweep < 1 && max_abs(d) > tolerance; ++sweep) {
       std::vector<int> order(static_cast<std::size_t>(m));
       for (int k = 0; k < m; ++k) order[static_cast<std::size_t>(k)] = k;
       std::sort(order.begin(), order.end(), [&](int a, int b) { return std::abs(d[a]) > std::abs(d[b]); });
       bool moved = false;
       for (const int k : order) {
         const std::size_t j = first + static_cast<std::size_t>(k);
-        if (const std::optional<double> phi = solve_junction(chain, j, k)) {
+        if (const std::optional<double> phi = solve_junction(chain, j)) {
           chain.tangent_angles[j] = *phi;
           moved = true;
         }

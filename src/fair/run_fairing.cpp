@@ -19,7 +19,7 @@ namespace {
 
 constexpr double default_alpha = 1.0;  // for arcs (every α fits) and pieces without a usable LCG
 constexpr double alpha_candidates[] = {-2.0, -1.5, -1.0, -0.5, 0.0, 0.5, 1.0, 1.5, 2.0, 3.0, 4.0};
-constexpr int max_rounds = 8;
+constexpr int max_rounds = 10;
 constexpr double max_relative_mismatch = 1e-9;  // |Δκ| / max|κ| the G2 solve must reach
 
 double angle_of(Vec2 v) { return std::atan2(v.y, v.x); }
