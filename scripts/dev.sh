@@ -12,7 +12,7 @@ packages=(
   libcli11-dev nlohmann-json3-dev libpugixml-dev libtbb-dev
   libgtest-dev libbenchmark-dev
   # independent checkers used by the tests: fontTools' ufoLib, fontmake
-  python3-fonttools fontmake python3-jsonschema
+  python3-fonttools fontmake python3-jsonschema python3-scipy
 )
 
 install_missing() {
