@@ -8,24 +8,18 @@
 
 #include <unistd.h>
 
-#include <tbb/global_control.h>
-#include <tbb/parallel_for.h>
-
 #include "check/report_writer.hpp"
 #include "commands.hpp"
 #include "exit_codes.hpp"
+#include "glyph_stream.hpp"
 #include "io/atomic_output.hpp"
 #include "io/input_error.hpp"
-#include "progress.hpp"
 
 namespace gf {
 
 namespace {
 
-// Glyphs are read in order (FreeType faces are not thread-safe), checked in parallel, and
-// written in order, a chunk at a time, so memory stays flat however large the font.
-constexpr std::size_t chunk_size = 512;
-
+constexpr std::size_t chunk_size = 512;  // glyphs in memory at a time
 
 }  // namespace
 
@@ -58,8 +52,7 @@ int CheckCommand::run() const {
   }
   std::ostream& out = output_.empty() ? std::cout : file_stream;
   const std::unique_ptr<ReportWriter> writer = make_report_writer(format, out, profile);
-  std::optional<tbb::global_control> limit;
-  if (jobs_ > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(jobs_));
+  const auto limit = limit_parallelism(jobs_);
   // A bar on a terminal, unless the report itself is going to that terminal.
   const Progress progress(isatty(STDERR_FILENO) && (!output_.empty() || !isatty(STDOUT_FILENO)));
 
@@ -69,23 +62,13 @@ int CheckCommand::run() const {
     writer->begin_source({source.path().string(), font.family_name + (font.style_name.empty() ? "" : " " + font.style_name),
                           font.units_per_em});
     CheckTotals totals;
-    std::vector<Glyph> glyphs;
-    std::vector<GlyphReport> reports;
-    for (std::size_t first = 0; first < source.size(); first += chunk_size) {
-      const std::size_t last = std::min(source.size(), first + chunk_size);
-      glyphs.clear();
-      for (std::size_t i = first; i < last; ++i)
-        if (auto g = source.load(i)) glyphs.push_back(std::move(*g));
-      reports.assign(glyphs.size(), {});
-      tbb::parallel_for(std::size_t{0}, glyphs.size(),
-                        [&](std::size_t k) { reports[k] = check_glyph(glyphs[k], font, profile); });
-      for (const GlyphReport& r : reports) {
-        writer->glyph(r);
-        totals.add(r);
-      }
-      progress.show(source.path().filename().string(), last, source.size());
-    }
-    progress.clear();
+    stream_glyphs<GlyphReport>(
+        source, chunk_size, progress, source.path().filename().string(),
+        [&](const Glyph& g) { return check_glyph(g, font, profile); },
+        [&](Glyph&, const GlyphReport& r) {
+          writer->glyph(r);
+          totals.add(r);
+        });
     writer->end_source(totals);
     all.add(totals);
   }

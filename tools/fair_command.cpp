@@ -8,17 +8,13 @@
 
 #include <unistd.h>
 
-#include <tbb/global_control.h>
-#include <tbb/parallel_for.h>
-
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "fair/glyph_fairing.hpp"
+#include "glyph_stream.hpp"
 #include "io/input_error.hpp"
-#include "io/json_writer.hpp"
-#include "io/svg_writer.hpp"
 #include "io/ufo_writer.hpp"
-#include "progress.hpp"
+#include "outline_output.hpp"
 #include "render/proof_document.hpp"
 
 namespace fs = std::filesystem;
@@ -27,15 +23,7 @@ namespace gf {
 
 namespace {
 
-// Glyphs are read in order (FreeType faces are not thread-safe), faired in parallel a chunk at
-// a time and written in order, so memory stays flat however large the font.
-constexpr std::size_t chunk_size = 256;
-
-std::string lower_extension(const std::string& path) {
-  std::string ext = fs::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext;
-}
+constexpr std::size_t chunk_size = 256;  // glyphs in memory at a time
 
 }  // namespace
 
@@ -59,9 +47,7 @@ void FairCommand::add_to(CLI::App& app) {
 }
 
 int FairCommand::run() const {
-  const std::string ext = lower_extension(output_);
-  if (ext != ".ufo" && ext != ".svg" && ext != ".json")
-    throw InputError(output_ + ": unknown output format (use .ufo, .svg or .json)");
+  const OutlineFormat format = outline_format_for(output_);
   if (!proof_.empty() && lower_extension(proof_) != ".pdf") throw InputError(proof_ + ": the proof must be a .pdf");
   FairOptions options;
   options.profile = *parse_fair_profile(profile_);
@@ -76,44 +62,33 @@ int FairCommand::run() const {
   const fs::path inputs[] = {source_};
 
   std::optional<UfoWriter> ufo;
-  if (ext == ".ufo") ufo.emplace(output_, font, inputs);
+  if (format == OutlineFormat::ufo) ufo.emplace(output_, font, inputs);
   GlyphSet whole{font, {}};  // for the single-document formats
   std::vector<ProofGlyph> proof_pages;
-  std::optional<tbb::global_control> limit;
-  if (jobs_ > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(jobs_));
+  const auto limit = limit_parallelism(jobs_);
   const Progress progress(isatty(STDERR_FILENO));
   const std::string name = fs::path(source_).filename().string();
 
-  std::size_t glyphs_faired = 0, contours_kept = 0;
-  double deviation = 0.0;
-  std::vector<Glyph> glyphs;
-  std::vector<GlyphFairing> results;
-  for (std::size_t first = 0; first < source.size(); first += chunk_size) {
-    const std::size_t last = std::min(source.size(), first + chunk_size);
-    glyphs.clear();
-    for (std::size_t i = first; i < last; ++i)
-      if (auto g = source.load(i)) glyphs.push_back(std::move(*g));
-    results.assign(glyphs.size(), {});
-    tbb::parallel_for(std::size_t{0}, glyphs.size(), [&](std::size_t k) { results[k] = fair_glyph(glyphs[k], settings); });
-    for (std::size_t k = 0; k < glyphs.size(); ++k) {
-      GlyphFairing& r = results[k];
-      for (const std::string& why : r.kept) {
-        progress.clear();
-        std::cerr << "glyphfair: warning: " << name << ": glyph '" << r.glyph.name << "': " << why << " (kept unfaired)\n";
-      }
-      contours_kept += r.kept.size();
-      ++glyphs_faired;
-      deviation = std::max(deviation, r.deviation);
-      if (!proof_.empty()) proof_pages.push_back({r.glyph, std::move(glyphs[k])});
-      if (ufo) ufo->add(r.glyph);
-      else whole.glyphs.push_back(std::move(r.glyph));
-    }
-    progress.show(name, last, source.size());
-  }
-  progress.clear();
+  std::size_t glyphs_faired = 0, contours_kept = 0, g1_nodes = 0;
+  double deviation = 0.0, mismatch = 0.0;
+  stream_glyphs<GlyphFairing>(
+      source, chunk_size, progress, name, [&](const Glyph& g) { return fair_glyph(g, settings); },
+      [&](Glyph& original, GlyphFairing& r) {
+        for (const std::string& why : r.kept) {
+          progress.clear();
+          std::cerr << "glyphfair: warning: " << name << ": glyph '" << r.glyph.name << "': " << why << " (kept unfaired)\n";
+        }
+        contours_kept += r.kept.size();
+        g1_nodes += static_cast<std::size_t>(r.g1_nodes);
+        ++glyphs_faired;
+        deviation = std::max(deviation, r.deviation);
+        mismatch = std::max(mismatch, r.max_curvature_mismatch);
+        if (!proof_.empty()) proof_pages.push_back({r.glyph, std::move(original)});
+        if (ufo) ufo->add(r.glyph);
+        else whole.glyphs.push_back(std::move(r.glyph));
+      });
   if (ufo) ufo->commit();
-  else if (ext == ".svg") write_svg(whole, output_, inputs);
-  else write_json(whole, output_, inputs);
+  else write_outlines(whole, output_, format, inputs);
   if (!proof_.empty()) {
     ProofOptions proof;
     proof.title = name + " faired (" + to_string(options.profile) + ", tolerance " + std::to_string(settings.tolerance_units) + " units)";
@@ -124,7 +99,8 @@ int FairCommand::run() const {
   }
   std::cerr << "glyphfair: " << name << ": " << glyphs_faired << " glyphs faired, " << contours_kept
             << " contours kept as they were; largest distance from the source " << deviation << " units (tolerance "
-            << settings.tolerance_units << ")\n";
+            << settings.tolerance_units << "); largest relative curvature mismatch left by a chain solve " << mismatch
+            << "; " << g1_nodes << " smooth nodes G1 only\n";
   return exit_code::ok;
 }
 

@@ -68,6 +68,7 @@ struct Attempt {
   std::vector<OutlineNode> nodes;
   std::string failure;
   double mismatch = 0.0;
+  int g1_nodes = 0;
 };
 
 Attempt fair_with_budgets(const ContourPlan& plan, const FairSettings& settings, Budgets budgets) {
@@ -94,6 +95,7 @@ Attempt fair_with_budgets(const ContourPlan& plan, const FairSettings& settings,
       const FairedChain& chain = faired.chains[k];
       a.mismatch = std::max(a.mismatch, chain.max_mismatch_relative);
       ChainCubics cubics = write_chain_as_cubics(chain, budgets.cubic);
+      a.g1_nodes += cubics.g1_fallbacks;
       if (chain.closed) {
         a.nodes = std::move(cubics.nodes);
         return a;
@@ -124,13 +126,22 @@ void rotate_to_start(std::vector<OutlineNode>& nodes, Vec2 source_start) {
   std::rotate(nodes.begin(), nodes.begin() + static_cast<std::ptrdiff_t>(best), nodes.end());
 }
 
+// A contour's samples, bucketed for distances to it.
+struct SampledContour {
+  std::vector<Vec2> points;
+  PolylineGrid grid;
+  explicit SampledContour(const Contour& c) : points(contour_samples(c)), grid(points, 8.0) {}
+};
+
+double distance_between(const SampledContour& a, const SampledContour& b) {
+  if (a.points.empty() || b.points.empty()) return a.points.size() == b.points.size() ? 0.0 : 1e300;
+  return std::max(directed_hausdorff(a.points, b.grid), directed_hausdorff(b.points, a.grid));
+}
+
 }  // namespace
 
 double contour_distance(const Contour& a, const Contour& b) {
-  const std::vector<Vec2> pa = contour_samples(a), pb = contour_samples(b);
-  if (pa.empty() || pb.empty()) return pa.size() == pb.size() ? 0.0 : 1e300;
-  const PolylineGrid ga(pa, 8.0), gb(pb, 8.0);
-  return std::max(directed_hausdorff(pa, gb), directed_hausdorff(pb, ga));
+  return distance_between(SampledContour(a), SampledContour(b));
 }
 
 ContourFairing fair_contour(const Contour& source, const FairSettings& settings) {
@@ -147,6 +158,7 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& settings)
     out.faired = true;  // lines only: already as fair as it gets
     return out;
   }
+  const SampledContour sampled_source(source);
   const double rounding = settings.round_to_integers ? 0.5 : 0.0;
   double available = std::max(settings.tolerance_units - rounding, 0.25 * settings.tolerance_units);
   for (int attempt = 0; attempt < 2; ++attempt, available *= 0.5) {
@@ -156,21 +168,16 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& settings)
       continue;
     }
     rotate_to_start(a.nodes, source.node_point(0));
-    int inexact = 0;
-    if (settings.round_to_integers) {
-      RoundedNodes r = round_to_grid(a.nodes, source.closed);
-      a.nodes = std::move(r.nodes);
-      inexact = r.inexact_g1;
-    }
+    if (settings.round_to_integers) a.nodes = round_to_grid(a.nodes, source.closed);
     Contour faired = to_contour(a.nodes, source.closed);
-    const double d = contour_distance(faired, source);
+    const double d = distance_between(SampledContour(faired), sampled_source);
     if (d <= settings.tolerance_units) {
       out.contour = std::move(faired);
       out.faired = true;
       out.reason.clear();
       out.deviation = d;
       out.max_curvature_mismatch = a.mismatch;
-      out.inexact_g1 = inexact;
+      out.g1_nodes = a.g1_nodes;
       return out;
     }
     out.reason = "the faired contour came out " + std::to_string(d) + " units from the source";

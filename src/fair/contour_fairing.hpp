@@ -17,7 +17,7 @@ struct ContourFairing {
   std::string reason;      ///< why the source was kept
   double deviation = 0.0;  ///< two-sided Hausdorff distance to the source, font units (measured)
   double max_curvature_mismatch = 0.0;  ///< of the log-aesthetic chains, relative
-  int inexact_g1 = 0;      ///< smooth nodes the grid could not keep exactly collinear
+  int g1_nodes = 0;        ///< smooth nodes with G1 only: no G2 Hermite cubic was found for a span
 };
 
 ContourFairing fair_contour(const Contour& source, const FairSettings& settings);

@@ -1,5 +1,6 @@
 #include "fair/contour_plan.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -72,9 +73,10 @@ ContourPlan plan_contour(const Contour& source, double corner_angle_deg) {
     return std::nullopt;
   };
 
-  std::size_t first = n;
-  for (std::size_t i = 0; i < n && first == n; ++i)
-    if (break_before(i)) first = i;
+  std::vector<std::optional<RunEndKind>> breaks(n);
+  for (std::size_t i = 0; i < n; ++i) breaks[i] = break_before(i);
+  const std::size_t first = static_cast<std::size_t>(
+      std::find_if(breaks.begin(), breaks.end(), [](const auto& b) { return b.has_value(); }) - breaks.begin());
   if (first == n) {  // one closed run
     SmoothRun run;
     run.closed = true;
@@ -92,7 +94,7 @@ ContourPlan plan_contour(const Contour& source, double corner_angle_deg) {
       plan.pieces.emplace_back(std::get<Line>(p.segment));
       continue;
     }
-    const std::optional<RunEndKind> before = break_before(i);
+    const std::optional<RunEndKind> before = breaks[i];
     if (before) {
       SmoothRun run;
       const Piece& prev = pieces[(i + n - 1) % n];
@@ -105,9 +107,9 @@ ContourPlan plan_contour(const Contour& source, double corner_angle_deg) {
     SmoothRun& run = std::get<SmoothRun>(plan.pieces.back());
     run.cubics.push_back(std::get<Cubic>(p.segment));
     const std::size_t next = (i + 1) % n;
-    const bool ends = !contour.closed && i + 1 == n ? true : static_cast<bool>(break_before(next));
+    const bool ends = !contour.closed && i + 1 == n ? true : breaks[next].has_value();
     if (ends) {
-      const RunEndKind kind = !contour.closed && i + 1 == n ? RunEndKind::corner : *break_before(next);
+      const RunEndKind kind = !contour.closed && i + 1 == n ? RunEndKind::corner : *breaks[next];
       run.end.kind = kind;
       run.end.tangent = kind == RunEndKind::line && pieces[next].straight ? *end_tangent(pieces[next].segment, SegmentEnd::start)
                                                                        : *end_tangent(p.segment, SegmentEnd::end);

@@ -48,12 +48,11 @@ class ChainPath {
   std::size_t segment_count() const { return starts_.size(); }
   double segment_start(std::size_t i) const { return starts_[i]; }
 
-  /// At a junction, `prefer_next` takes the later segment's end values (equal under G2).
-  LacPoint at(double sigma, bool prefer_next = true) const {
-    if (sigma > total_) sigma -= total_;
+  /// At a junction both sides agree: point and tangent (G1), curvature by with_mean_curvature.
+  LacPoint at(double sigma) const {
+    if (sigma > total_) sigma -= total_;  // a closed chain, past its seam
     std::size_t i = static_cast<std::size_t>(std::upper_bound(starts_.begin(), starts_.end(), sigma) - starts_.begin());
     i = i == 0 ? 0 : i - 1;
-    if (!prefer_next && i > 0 && sigma == starts_[i]) --i;
     const LogAestheticSegment& seg = chain_.segments[i];
     const double local = sigma - starts_[i];
     if (local <= 0.0) return with_mean_curvature(seg.start(), i == 0 ? (chain_.closed ? n_ - 1 : n_) : i - 1, false);
@@ -70,12 +69,15 @@ class ChainPath {
     return p;
   }
 
+  /// The chain's points over [a, b] (b may pass the seam of a closed chain), ends included.
   std::vector<Vec2> points(double a, double b) const {
     std::vector<Vec2> out{at(a).point};
-    for (const double offset : {0.0, total_})
-      for (const auto& [sigma, p] : table_)
-        if (sigma + offset > a && sigma + offset < b) out.push_back(p);
-    out.push_back(at(b, false).point);
+    for (const double offset : {0.0, total_}) {
+      auto it = std::upper_bound(table_.begin(), table_.end(), a - offset,
+                                 [](double v, const std::pair<double, Vec2>& e) { return v < e.first; });
+      for (; it != table_.end() && it->first + offset < b; ++it) out.push_back(it->second);
+    }
+    out.push_back(at(b).point);
     return out;
   }
 
@@ -111,7 +113,7 @@ std::vector<RequiredNode> axis_extrema(const ChainPath& path, const FairedChain&
   for (std::size_t i = 0; i < chain.segments.size(); ++i) {
     const LogAestheticSegment& seg = chain.segments[i];
     const Vec2 t0 = seg.start().tangent;
-    const double phi0 = std::atan2(t0.y, t0.x);
+    const double phi0 = angle_of(t0);
     const double turn = turning_angle(t0, seg.end().tangent);
     const double lo = std::min(phi0, phi0 + turn), hi = std::max(phi0, phi0 + turn);
     for (double k = std::ceil(lo / quarter); k * quarter <= hi; k += 1.0) {
@@ -143,7 +145,7 @@ class SpanWriter {
   SpanWriter(const ChainPath& path, double budget, ChainCubics& out) : path_(path), budget_(budget), out_(out) {}
 
   void fit(double a, double b, std::optional<Vec2> end_step, int depth, std::vector<Piece>& pieces) {
-    const LacPoint pa = path_.at(a), pb = path_.at(b, false);
+    const LacPoint pa = path_.at(a), pb = path_.at(b);
     const std::vector<Vec2> lac = path_.points(a, b);
     std::optional<Cubic> best;
     double best_dev = 1e300;
@@ -155,10 +157,8 @@ class SpanWriter {
       if (!best) {  // no G2 cubic at all: keep G1 with third-chord handles
         const double h = distance(pa.point, pb.point) / 3.0;
         best = Cubic{pa.point, pa.point + pa.tangent * h, pb.point - pb.tangent * h, pb.point};
-        best_dev = cubic_deviation(*best, lac);
         ++out_.g1_fallbacks;
       }
-      out_.deviation = std::max(out_.deviation, best_dev);
       pieces.push_back({*best, end_step});
       return;
     }

@@ -14,7 +14,6 @@ namespace gf {
 
 struct ChainCubics {
   std::vector<OutlineNode> nodes;  ///< an open chain's first and last nodes carry only their inner handle
-  double deviation = 0.0;          ///< largest distance between a cubic and its piece of the chain
   int g1_fallbacks = 0;            ///< spans where no G2 Hermite cubic existed within the depth limit
 };
 

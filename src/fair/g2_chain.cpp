@@ -37,24 +37,28 @@ double max_abs(const std::vector<double>& v) {
   return m;
 }
 
-}  // namespace
-
-namespace {
-
-// D_j as a function of φ_j alone; nullopt where a neighbouring segment
-// does not exist.
-std::optional<double> junction_mismatch(LacChain& chain, std::size_t j, double phi) {
-  const double saved = chain.tangent_angles[j];
+// The two segments either side of junction j with φ_j set to `phi` (turning φ_j moves only
+// them); nullopt where one does not exist.
+struct AroundJunction {
+  std::size_t before, after;  ///< segment indices
+  LogAestheticSegment into, out_of;
+};
+std::optional<AroundJunction> segments_around(LacChain chain, std::size_t j, double phi) {
   chain.tangent_angles[j] = phi;
-  const std::size_t n = chain.segment_count();
-  const SegmentFit before = build_chain_segment(chain, (j + n - 1) % n);
-  const SegmentFit after = build_chain_segment(chain, j % n);
-  chain.tangent_angles[j] = saved;
-  if (!before.ok() || !after.ok()) return std::nullopt;
-  return before.segment->end().curvature - after.segment->start().curvature;
+  const std::size_t n = chain.segment_count(), before = (j + n - 1) % n, after = j % n;
+  SegmentFit a = build_chain_segment(chain, before), b = build_chain_segment(chain, after);
+  if (!a.ok() || !b.ok()) return std::nullopt;
+  return AroundJunction{before, after, std::move(*a.segment), std::move(*b.segment)};
 }
 
-std::optional<double> solve_junction(LacChain chain, std::size_t j) {
+// D_j as a function of φ_j alone; nullopt where a neighbouring segment does not exist.
+std::optional<double> junction_mismatch(const LacChain& chain, std::size_t j, double phi) {
+  const std::optional<AroundJunction> s = segments_around(chain, j, phi);
+  if (!s) return std::nullopt;
+  return s->into.end().curvature - s->out_of.start().curvature;
+}
+
+std::optional<double> solve_junction(const LacChain& chain, std::size_t j) {
   const double phi0 = chain.tangent_angles[j];
   const std::optional<double> d0 = junction_mismatch(chain, j, phi0);
   if (!d0) return std::nullopt;
@@ -126,7 +130,6 @@ ChainSegments build_chain(const LacChain& chain) {
     SegmentFit fit = build_chain_segment(chain, i);
     if (!fit.ok()) {
       out.segments.clear();
-      out.failed_segment = i;
       out.reason = "segment " + std::to_string(i) + ": " + fit.reason;
       return out;
     }
@@ -145,7 +148,7 @@ std::vector<double> curvature_mismatch(const LacChain& chain, const std::vector<
   return d;
 }
 
-G2Result make_g2(LacChain chain, double tolerance, int max_iterations) {
+G2Result make_g2(LacChain chain, G2Tolerance tolerance_spec, int max_iterations) {
   G2Result result;
   ChainSegments built = build_chain(chain);
   if (!built.ok()) {
@@ -153,6 +156,9 @@ G2Result make_g2(LacChain chain, double tolerance, int max_iterations) {
     result.chain = std::move(chain);
     return result;
   }
+  for (const LogAestheticSegment& s : built.segments)
+    result.curvature_scale = std::max({result.curvature_scale, std::abs(s.start().curvature), std::abs(s.end().curvature)});
+  const double tolerance = std::max(tolerance_spec.absolute, tolerance_spec.relative * result.curvature_scale);
   std::vector<double> d = curvature_mismatch(chain, built.segments);
   const int m = static_cast<int>(d.size());
   const std::size_t first = chain.first_free_junction();
@@ -160,20 +166,17 @@ G2Result make_g2(LacChain chain, double tolerance, int max_iterations) {
   for (result.iterations = 0; result.iterations < max_iterations && max_abs(d) > tolerance; ++result.iterations) {
     Eigen::MatrixXd jacobian = Eigen::MatrixXd::Zero(m, m);
     for (int c = 0; c < m; ++c) {
-      // Turning φ_j moves only the segments on either side of junction j.
+      const std::size_t j = first + static_cast<std::size_t>(c);
+      std::optional<AroundJunction> around = segments_around(chain, j, chain.tangent_angles[j] + h);
+      if (!around) {
+        result.reason = "junction " + std::to_string(j) + " sits at the edge of its feasible range";
+        break;
+      }
       LacChain moved = chain;
-      const std::size_t j = first + static_cast<std::size_t>(c), n = built.segments.size();
       moved.tangent_angles[j] += h;
       std::vector<LogAestheticSegment> probe = built.segments;
-      for (const std::size_t i : {(j + n - 1) % n, j % n}) {
-        SegmentFit fit = build_chain_segment(moved, i);
-        if (!fit.ok()) {
-          result.reason = "junction " + std::to_string(j) + " sits at the edge of its feasible range";
-          break;
-        }
-        probe[i] = std::move(*fit.segment);
-      }
-      if (!result.reason.empty()) break;
+      probe[around->before] = std::move(around->into);
+      probe[around->after] = std::move(around->out_of);
       const std::vector<double> dp = curvature_mismatch(moved, probe);
       // D_j depends on φ_{j−1}, φ_j, φ_{j+1} only (cyclically for a closed chain).
       for (int r = 0; r < m; ++r) {
@@ -205,22 +208,19 @@ G2Result make_g2(LacChain chain, double tolerance, int max_iterations) {
   }
   if (max_abs(d) > tolerance) {
     // The seeds' method where Newton stalls at the edge of the feasible region: junction by
-    // junction, the worst first, bisect D_j(φ_j) = 0 within φ_j's feasible run (D_j grows with φ_j,
-    // lac-math.md §6.1), the other angles fixed.
-    for (int sweep = 0; sweep < 1 && max_abs(d) > tolerance; ++sweep) {
-      std::vector<int> order(static_cast<std::size_t>(m));
-      for (int k = 0; k < m; ++k) order[static_cast<std::size_t>(k)] = k;
-      std::sort(order.begin(), order.end(), [&](int a, int b) { return std::abs(d[a]) > std::abs(d[b]); });
-      bool moved = false;
-      for (const int k : order) {
-        const std::size_t j = first + static_cast<std::size_t>(k);
-        if (const std::optional<double> phi = solve_junction(chain, j)) {
-          chain.tangent_angles[j] = *phi;
-          moved = true;
-        }
-      }
-      ChainSegments again = build_chain(chain);
-      if (!again.ok() || !moved) break;
+    // junction, the worst first, bisect D_j(φ_j) = 0 within φ_j's feasible run (D_j grows with
+    // φ_j, lac-math.md §6.1), the other angles fixed. One sweep, kept when the whole chain
+    // still exists.
+    std::vector<int> order(static_cast<std::size_t>(m));
+    for (int k = 0; k < m; ++k) order[static_cast<std::size_t>(k)] = k;
+    std::sort(order.begin(), order.end(), [&](int a, int b) { return std::abs(d[a]) > std::abs(d[b]); });
+    LacChain swept = chain;
+    for (const int k : order) {
+      const std::size_t j = first + static_cast<std::size_t>(k);
+      if (const std::optional<double> phi = solve_junction(swept, j)) swept.tangent_angles[j] = *phi;
+    }
+    if (ChainSegments again = build_chain(swept); again.ok()) {
+      chain = std::move(swept);
       built = std::move(again);
       d = curvature_mismatch(chain, built.segments);
     }
@@ -231,6 +231,7 @@ G2Result make_g2(LacChain chain, double tolerance, int max_iterations) {
   if (!result.converged && result.reason.empty()) result.reason = "no convergence in " + std::to_string(max_iterations) + " iterations";
   result.chain = std::move(chain);
   result.segments = std::move(built.segments);
+  result.mismatches = std::move(d);
   return result;
 }
 

@@ -35,7 +35,6 @@ struct LacChain {
 struct ChainSegments {
   std::vector<LogAestheticSegment> segments;  ///< empty when some segment has no solution
   std::string reason;
-  std::size_t failed_segment = 0;  ///< which one, when not ok
   bool ok() const { return !segments.empty(); }
 };
 
@@ -50,10 +49,23 @@ ChainSegments build_chain(const LacChain& chain);
 /// D_j at the free junctions, in the order of LacChain::first_free_junction().
 std::vector<double> curvature_mismatch(const LacChain& chain, const std::vector<LogAestheticSegment>& segments);
 
+/// What max |D_j| must reach: the larger of an absolute bound and a bound relative to the
+/// largest end curvature of the starting chain (so one setting serves every font size).
+struct G2Tolerance {
+  double absolute = 1e-12;
+  double relative = 0.0;
+  G2Tolerance() = default;
+  G2Tolerance(double absolute_tolerance) : absolute(absolute_tolerance) {}  // NOLINT: a bare number is absolute
+  G2Tolerance(double absolute_tolerance, double relative_tolerance)
+      : absolute(absolute_tolerance), relative(relative_tolerance) {}
+};
+
 struct G2Result {
   LacChain chain;                             ///< with the solved junction tangents
   std::vector<LogAestheticSegment> segments;  ///< the last feasible chain (empty: none was)
+  std::vector<double> mismatches;             ///< D_j of `segments`, as curvature_mismatch gives them
   double max_mismatch = 0.0;                  ///< max |D_j| reached
+  double curvature_scale = 0.0;               ///< max |κ| at the segment ends of the starting chain
   int iterations = 0;
   bool converged = false;  ///< max |D_j| ≤ tolerance
   std::string reason;      ///< why not, when not
@@ -61,8 +73,9 @@ struct G2Result {
 
 /// Newton on all free angles at once with a finite-difference Jacobian (each D_j depends on
 /// φ_{j−1}, φ_j, φ_{j+1}) and a backtracking line search that stays where every segment
-/// exists (the feasible range is only about 0.1–0.4 rad per junction, §6.1). The end
-/// tangents of an open chain stay as given.
-G2Result make_g2(LacChain chain, double tolerance = 1e-12, int max_iterations = 50);
+/// exists (the feasible range is only about 0.1–0.4 rad per junction, §6.1); where Newton
+/// stalls, one sweep of the seeds' junction-by-junction bisection. The end tangents of an
+/// open chain stay as given.
+G2Result make_g2(LacChain chain, G2Tolerance tolerance = {}, int max_iterations = 50);
 
 }  // namespace gf

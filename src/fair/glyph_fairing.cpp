@@ -14,7 +14,7 @@ GlyphFairing fair_glyph(const Glyph& source, const FairSettings& settings) {
       ++out.contours_faired;
       out.deviation = std::max(out.deviation, c.deviation);
       out.max_curvature_mismatch = std::max(out.max_curvature_mismatch, c.max_curvature_mismatch);
-      out.inexact_g1 += c.inexact_g1;
+      out.g1_nodes += c.g1_nodes;
     } else {
       out.kept.push_back("contour " + std::to_string(i) + ": " + c.reason);
     }

@@ -16,7 +16,7 @@ struct GlyphFairing {
   std::vector<std::string> kept;
   double deviation = 0.0;  ///< largest over the faired contours, font units
   double max_curvature_mismatch = 0.0;
-  int inexact_g1 = 0;
+  int g1_nodes = 0;  ///< smooth nodes with G1 only
 };
 
 GlyphFairing fair_glyph(const Glyph& source, const FairSettings& settings);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "geom/curvature.hpp"
 #include "geom/g2_hermite.hpp"
 
 namespace gf {
@@ -11,6 +12,17 @@ namespace gf {
 namespace {
 
 Vec2 rounded(Vec2 p) { return {std::round(p.x), std::round(p.y)}; }
+
+// node + sign·m·d: the handle m ≥ 1 whole grid steps from the node on its side (sign −1 for
+// an in-handle), m nearest to how far `handle` lies from `from` along d.
+Vec2 stepped_handle(Vec2 node, Vec2 d, double sign, Vec2 from, Vec2 handle) {
+  const double m = std::max(1.0, std::round(sign * dot(handle - from, d) / dot(d, d)));
+  return node + d * (sign * m);
+}
+
+// Curvature where a cubic leaves its start or reaches its end (geom/curvature.hpp), 0 where
+// a retracted handle leaves it unbounded.
+double curvature_at(const Cubic& c, SegmentEnd end) { return end_curvature(c, end).curvature.value_or(0.0); }
 
 // A node's handles along the integer direction d: P − m_in d and P + m_out d.
 struct Choice {
@@ -39,7 +51,6 @@ Choice collinear_choice(Vec2 point, std::optional<Vec2> in, std::optional<Vec2> 
       if (std::gcd(static_cast<long long>(std::abs(sx)), static_cast<long long>(std::abs(sy))) != 1) continue;
       const Vec2 d{sx, sy};
       if (dot(d, dir) <= 0.0) continue;
-      const double dd = dot(d, d);
       for (int ox = -1; ox <= 1; ++ox)
         for (int oy = -1; oy <= 1; ++oy) {
           const Vec2 p = base + Vec2{double(ox), double(oy)};
@@ -48,13 +59,11 @@ Choice collinear_choice(Vec2 point, std::optional<Vec2> in, std::optional<Vec2> 
           c.step = d;
           c.cost = distance(p, point);
           if (in) {
-            const double m = std::max(1.0, std::round(dot(point - *in, d) / dd));
-            c.in = p - d * m;
+            c.in = stepped_handle(p, d, -1.0, point, *in);
             c.cost = std::max(c.cost, distance(*c.in, *in));
           }
           if (out) {
-            const double m = std::max(1.0, std::round(dot(*out - point, d) / dd));
-            c.out = p + d * m;
+            c.out = stepped_handle(p, d, 1.0, point, *out);
             c.cost = std::max(c.cost, distance(*c.out, *out));
           }
           if (c.cost < best.cost) best = c;
@@ -62,14 +71,6 @@ Choice collinear_choice(Vec2 point, std::optional<Vec2> in, std::optional<Vec2> 
     }
   }
   return best;
-}
-
-// κ at the end of a cubic (a, h_a, h_b, b) where it leaves a: 2/3 · (d1 × d2) / |d1|³ with
-// d1 = h_a − a, d2 = h_b − h_a (lac-math.md §4.1 at t = 0).
-double leaving_curvature(Vec2 a, Vec2 ha, Vec2 hb) {
-  const Vec2 d1 = ha - a, d2 = hb - ha;
-  const double l = norm(d1);
-  return l > 0.0 ? (2.0 / 3.0) * cross(d1, d2) / (l * l * l) : 0.0;
 }
 
 double relative_jump(double k1, double k2) {
@@ -90,8 +91,8 @@ void resolve_handle_lengths(std::vector<OutlineNode>& nodes, const std::vector<O
     if (!a.out_handle || !b.in_handle) continue;
     const Vec2 ta = *a.out_handle - a.point, tb = b.point - *b.in_handle;
     if (norm(ta) == 0.0 || norm(tb) == 0.0) continue;
-    const double ka = leaving_curvature(fa.point, *fa.out_handle, *fb.in_handle);
-    const double kb = -leaving_curvature(fb.point, *fb.in_handle, *fa.out_handle);
+    const Cubic ideal_cubic{fa.point, *fa.out_handle, *fb.in_handle, fb.point};
+    const double ka = curvature_at(ideal_cubic, SegmentEnd::start), kb = curvature_at(ideal_cubic, SegmentEnd::end);
     const HermiteEnd start{a.point, ta / norm(ta), ka}, end{b.point, tb / norm(tb), kb};
     const double want_a = norm(*fa.out_handle - fa.point), want_b = norm(fb.point - *fb.in_handle);
     // Only a small correction: each handle within 10 % (and 2 units) of its length.
@@ -107,10 +108,7 @@ void resolve_handle_lengths(std::vector<OutlineNode>& nodes, const std::vector<O
     // freely; a handle that must stay on a line keeps the rounding it has.
     auto place = [&](std::size_t node, Vec2 exact, double sign) -> std::optional<Vec2> {
       const OutlineNode& q = nodes[node];
-      if (steps[node]) {
-        const Vec2 d = *steps[node];
-        return q.point + d * (sign * std::max(1.0, std::round(sign * dot(exact - q.point, d) / dot(d, d))));
-      }
+      if (steps[node]) return stepped_handle(q.point, *steps[node], sign, q.point, exact);
       if (!q.smooth) return rounded(exact);
       return std::nullopt;
     };
@@ -133,8 +131,8 @@ void restore_g2(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>&
     if (!closed && (i == 0 || i + 1 == n)) return 0.0;
     const OutlineNode &prev = nodes[(i + n - 1) % n], &next = nodes[(i + 1) % n];
     if (!prev.out_handle || !next.in_handle) return 0.0;
-    const double k_out = leaving_curvature(q.point, *q.out_handle, *next.in_handle);
-    const double k_in = -leaving_curvature(q.point, *q.in_handle, *prev.out_handle);
+    const double k_out = curvature_at(Cubic{q.point, *q.out_handle, *next.in_handle, next.point}, SegmentEnd::start);
+    const double k_in = curvature_at(Cubic{prev.point, *prev.out_handle, *q.in_handle, q.point}, SegmentEnd::end);
     return relative_jump(k_in, k_out);
   };
   auto cost_near = [&](std::size_t i) {
@@ -170,23 +168,21 @@ void restore_g2(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>&
 
 }  // namespace
 
-RoundedNodes round_to_grid(const std::vector<OutlineNode>& nodes, bool closed) {
-  RoundedNodes r;
-  r.nodes = nodes;
+std::vector<OutlineNode> round_to_grid(const std::vector<OutlineNode>& nodes, bool closed) {
+  std::vector<OutlineNode> r = nodes;
   const std::size_t n = nodes.size();
   auto open_end = [&](std::size_t i) { return !closed && (i == 0 || i + 1 == n); };
   std::vector<std::optional<Vec2>> steps(n);  // smooth nodes: the grid direction of their handles
   for (std::size_t i = 0; i < n; ++i) {
     const OutlineNode& src = nodes[i];
-    OutlineNode& dst = r.nodes[i];
+    OutlineNode& dst = r[i];
     dst.point = rounded(src.point);
     const bool both = src.in_handle && src.out_handle;
     if (src.smooth && both && src.grid_step) {
       // Steps along the exact direction: G1 exact on the grid, lengths within half a step.
       const Vec2 d = *src.grid_step;
-      const double dd = dot(d, d);
-      dst.in_handle = dst.point - d * std::max(1.0, std::round(dot(src.point - *src.in_handle, d) / dd));
-      dst.out_handle = dst.point + d * std::max(1.0, std::round(dot(*src.out_handle - src.point, d) / dd));
+      dst.in_handle = stepped_handle(dst.point, d, -1.0, src.point, *src.in_handle);
+      dst.out_handle = stepped_handle(dst.point, d, 1.0, src.point, *src.out_handle);
       steps[i] = d;
     } else {
       if (src.in_handle) dst.in_handle = rounded(*src.in_handle);
@@ -196,7 +192,7 @@ RoundedNodes round_to_grid(const std::vector<OutlineNode>& nodes, bool closed) {
   // Smooth nodes between two curves without a grid direction: the nearest exact collinear choice.
   for (std::size_t i = 0; i < n; ++i) {
     const OutlineNode& src = nodes[i];
-    OutlineNode& dst = r.nodes[i];
+    OutlineNode& dst = r[i];
     if (!src.smooth || steps[i] || open_end(i)) continue;
     if (!src.in_handle || !src.out_handle) continue;
     const Choice c = collinear_choice(src.point, src.in_handle, src.out_handle);
@@ -213,7 +209,7 @@ RoundedNodes round_to_grid(const std::vector<OutlineNode>& nodes, bool closed) {
     const bool at_start = nodes[i].smooth && nodes[i].in_handle && !open_end(i);
     const bool at_end = nodes[j].smooth && nodes[j].out_handle && !open_end(j);
     if (!at_start && !at_end) continue;
-    const Vec2 a0 = r.nodes[i].point, b0 = r.nodes[j].point;
+    const Vec2 a0 = r[i].point, b0 = r[j].point;
     double best_cost = 1e300;
     Vec2 best_a = a0, best_b = b0;
     std::optional<Vec2> best_in, best_out;
@@ -227,30 +223,22 @@ RoundedNodes round_to_grid(const std::vector<OutlineNode>& nodes, bool closed) {
       double cost = std::max(distance(a, nodes[i].point), distance(b, nodes[j].point));
       std::optional<Vec2> in, out;
       if (at_start) {  // the curve arrives at a along d
-        const double m = std::max(1.0, std::round(dot(nodes[i].point - *nodes[i].in_handle, d) / dot(d, d)));
-        in = a - d * m;
+        in = stepped_handle(a, d, -1.0, nodes[i].point, *nodes[i].in_handle);
         cost = std::max(cost, distance(*in, *nodes[i].in_handle));
       }
       if (at_end) {  // the curve leaves b along d
-        const double m = std::max(1.0, std::round(dot(*nodes[j].out_handle - nodes[j].point, d) / dot(d, d)));
-        out = b + d * m;
+        out = stepped_handle(b, d, 1.0, nodes[j].point, *nodes[j].out_handle);
         cost = std::max(cost, distance(*out, *nodes[j].out_handle));
       }
       if (cost < best_cost) best_cost = cost, best_a = a, best_b = b, best_in = in, best_out = out;
     }
-    r.nodes[i].point = best_a;
-    r.nodes[j].point = best_b;
-    if (best_in) r.nodes[i].in_handle = best_in;
-    if (best_out) r.nodes[j].out_handle = best_out;
+    r[i].point = best_a;
+    r[j].point = best_b;
+    if (best_in) r[i].in_handle = best_in;
+    if (best_out) r[j].out_handle = best_out;
   }
-  resolve_handle_lengths(r.nodes, nodes, steps, closed);
-  restore_g2(r.nodes, nodes, steps, closed);
-  auto note = [&](Vec2 a, Vec2 b) { r.largest_move = std::max(r.largest_move, distance(a, b)); };
-  for (std::size_t i = 0; i < n; ++i) {
-    note(nodes[i].point, r.nodes[i].point);
-    if (nodes[i].in_handle) note(*nodes[i].in_handle, *r.nodes[i].in_handle);
-    if (nodes[i].out_handle) note(*nodes[i].out_handle, *r.nodes[i].out_handle);
-  }
+  resolve_handle_lengths(r, nodes, steps, closed);
+  restore_g2(r, nodes, steps, closed);
   return r;
 }
 

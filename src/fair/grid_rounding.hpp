@@ -11,12 +11,6 @@
 
 namespace gf {
 
-struct RoundedNodes {
-  std::vector<OutlineNode> nodes;
-  double largest_move = 0.0;  ///< the farthest any point (node or handle) moved
-  int inexact_g1 = 0;         ///< smooth nodes where no exact choice was within reach
-};
-
-RoundedNodes round_to_grid(const std::vector<OutlineNode>& nodes, bool closed);
+std::vector<OutlineNode> round_to_grid(const std::vector<OutlineNode>& nodes, bool closed);
 
 }  // namespace gf

@@ -25,10 +25,10 @@ std::vector<double> balanced_tangents(const std::vector<Vec2>& points, bool clos
   std::vector<double> c(m);
   for (std::size_t i = 0; i < m; ++i) {
     const Vec2 d = points[(i + 1) % n] - points[i];
-    const double a = std::atan2(d.y, d.x);
+    const double a = angle_of(d);
     c[i] = i == 0 ? a : near(a, c[i - 1]);
   }
-  const double total = closed ? near(c[0], c[m - 1]) + 0.0 - c[0] : 0.0;  // ≈ ±2π for a closed chain
+  const double total = closed ? near(c[0], c[m - 1]) - c[0] : 0.0;  // ≈ ±2π for a closed chain
   // φ_j ≈ the bisector (c_{j−1} + c_j)/2; unknowns: every φ of a closed chain, the interior ones of an open chain.
   std::vector<double> bisector(n);
   for (std::size_t j = 0; j < n; ++j) {

@@ -121,6 +121,7 @@ std::vector<Junction> select_junctions(const RunReference& run, bool zero_curvat
       break;
     }
     if (closed && (next < weakest || prev > weakest)) merged.last = lobes[next].last + count;  // across the seam
+    merged.sagitta = sagitta_of(pts, merged.first, merged.last);  // the other lobes are as they were
     // Erase prev, weakest, next and insert the merge where prev was.
     std::vector<Lobe> rest;
     for (std::size_t i = 0; i < n; ++i) {
@@ -128,7 +129,6 @@ std::vector<Junction> select_junctions(const RunReference& run, bool zero_curvat
       if (i == (has_prev ? prev : weakest)) rest.push_back(merged);
       else if (!gone) rest.push_back(lobes[i]);
     }
-    for (Lobe& l : rest) l.sagitta = sagitta_of(pts, l.first, l.last);
     std::sort(rest.begin(), rest.end(), [](const Lobe& a, const Lobe& b) { return a.first < b.first; });
     lobes = std::move(rest);
   }

@@ -22,8 +22,6 @@ constexpr double alpha_candidates[] = {-2.0, -1.5, -1.0, -0.5, 0.0, 0.5, 1.0, 1.
 constexpr int max_rounds = 10;
 constexpr double max_relative_mismatch = 1e-9;  // |Δκ| / max|κ| the G2 solve must reach
 
-double angle_of(Vec2 v) { return std::atan2(v.y, v.x); }
-
 double lcg_alpha(const RunReference& ref, double s0, double s1) {
   const std::vector<Cubic> cubics = ref.cubics_between(s0, s1);
   const std::vector<Segment> segments(cubics.begin(), cubics.end());
@@ -91,6 +89,7 @@ struct ChainOutcome {
   std::vector<double> cuts;   ///< arc lengths where the chain needs another junction
   std::vector<double> drops;  ///< junctions (by arc length) the chain cannot use
   double deviation = 0.0;
+  bool adjusts() const { return !cuts.empty() || !drops.empty(); }
 };
 
 // Samples per segment so that the chords stay within 2 % of the tolerance of the curve.
@@ -100,21 +99,50 @@ int samples_for(const LogAestheticSegment& seg, double tolerance) {
   return std::clamp(static_cast<int>(std::ceil(seg.length() / h)), 8, 400);
 }
 
-ChainOutcome fair_chain(const ChainSpan& span, const RunReference& ref, const RunReference& source, const SmoothRun& run,
-                        const FairSettings& settings, double budget, bool accept_mismatch) {
-  ChainOutcome out;
-  const double L = ref.length(), w = settings.feature_window_units;
+// Segment i's chord direction and its end tangents' angles from it, in (−π, π].
+struct ChordAngles {
+  double chord, at_start, at_end;
+};
+ChordAngles chord_angles(const LacChain& chain, std::size_t i) {
+  const std::size_t j = (i + 1) % chain.points.size();
+  const double c = angle_of(chain.points[j] - chain.points[i]);
+  return {c, std::remainder(chain.tangent_angles[i] - c, 2 * std::numbers::pi),
+          std::remainder(chain.tangent_angles[j] - c, 2 * std::numbers::pi)};
+}
+
+/// The arc length at the end of the span's segment i.
+double segment_end_s(const ChainSpan& span, std::size_t i, double L) {
+  return i + 1 < span.s.size() ? span.s[i + 1] : span.s[0] + L;
+}
+
+// Junctions a span lacks before a chain can be built on it: three for a closed chain, and a
+// free junction of its own for each κ = 0 end (the longest piece is cut).
+std::vector<double> missing_junctions(const ChainSpan& span, double L) {
+  const std::size_t points = span.s.size();
+  if (span.closed && points < 3) {
+    if (points == 0) return {0.0, L / 3, 2 * L / 3};
+    std::vector<double> cuts;
+    for (std::size_t i = 0; i < points; ++i) cuts.push_back(0.5 * (span.s[i] + segment_end_s(span, i, L)));
+    return cuts;
+  }
+  if (span.closed || !(span.zero_start || span.zero_end)) return {};
+  const std::size_t needed = span.zero_start && span.zero_end ? 4 : 3;
+  if (points >= needed) return {};
+  std::size_t longest = 0;
+  for (std::size_t i = 1; i + 1 < points; ++i)
+    if (span.s[i + 1] - span.s[i] > span.s[longest + 1] - span.s[longest]) longest = i;
+  return {0.5 * (span.s[longest] + span.s[longest + 1])};
+}
+
+// The chain on the span's junctions, before any repair: points averaged over the window and
+// made to turn one way, balanced starting tangents, κ = 0 ends aimed, α from each piece's LCG.
+LacChain initial_chain(const ChainSpan& span, const RunReference& ref, const SmoothRun& run, double w, double budget) {
+  const double L = ref.length();
+  const std::size_t points = span.s.size();
   LacChain chain;
   chain.closed = span.closed;
   chain.zero_curvature_start = span.zero_start;
   chain.zero_curvature_end = span.zero_end;
-  const std::size_t points = span.s.size();
-  if (span.closed && points < 3) {  // a closed chain needs three junctions at least
-    for (std::size_t i = 0; i < points; ++i)
-      out.cuts.push_back(0.5 * (span.s[i] + (i + 1 < points ? span.s[i + 1] : span.s[0] + L)));
-    if (points == 0) out.cuts = {0.0, L / 3, 2 * L / 3};
-    return out;
-  }
   for (std::size_t i = 0; i < points; ++i) chain.points.push_back(ref.mean_point(span.s[i], w));
   // A chain turns one way; a free junction that turns the other way (a wobble the window did
   // not average out) moves across its neighbours' chord, by little more than the wobble.
@@ -124,7 +152,7 @@ ChainOutcome fair_chain(const ChainSpan& span, const RunReference& ref, const Ru
       if (!span.closed && (i == 0 || i + 1 == points)) continue;
       const Vec2 a = chain.points[(i + points - 1) % points], b = chain.points[(i + 1) % points];
       Vec2& q = chain.points[i];
-      if (cross(q - a, b - q) * way > 0.0) continue;
+      if (cross(q - a, b - q) * way > 0.0 || a == b) continue;
       const Vec2 d = (b - a) / norm(b - a);
       const Vec2 foot = a + d * dot(q - a, d);
       // A left-turning chain bulges to the right of the chord between neighbours.
@@ -143,40 +171,32 @@ ChainOutcome fair_chain(const ChainSpan& span, const RunReference& ref, const Ru
   }
   chain.tangent_angles = balanced_tangents(chain.points, chain.closed, start_angle, end_angle, span.zero_start, span.zero_end);
   // A κ = 0 end needs the segment's other end to turn more than twice as much as its chord
-  // (lac-math.md §3.2): aim the free neighbour there outright, and give a lone segment a
-  // free junction to aim.
-  if (!span.closed && (span.zero_start || span.zero_end)) {
-    // Each κ = 0 end takes a free junction of its own.
-    const std::size_t needed = span.zero_start && span.zero_end ? 4 : 3;
-    if (points < needed) {
-      std::size_t longest = 0;
-      for (std::size_t i = 1; i + 1 < points; ++i)
-        if (span.s[i + 1] - span.s[i] > span.s[longest + 1] - span.s[longest]) longest = i;
-      out.cuts.push_back(0.5 * (span.s[longest] + span.s[longest + 1]));
-      return out;
-    }
-    auto aim = [&](std::size_t fixed, std::size_t free) {
-      const double c = angle_of(chain.points[std::max(fixed, free)] - chain.points[std::min(fixed, free)]);
-      const double a = std::remainder(chain.tangent_angles[fixed] - c, 2 * std::numbers::pi);
-      const double b = std::remainder(chain.tangent_angles[free] - c, 2 * std::numbers::pi);
-      if (std::abs(b) < 2.2 * std::abs(a) || a * b > 0.0) chain.tangent_angles[free] = c - 3.0 * a;
-    };
-    // Only where every segment keeps a control triangle.
+  // (lac-math.md §3.2): aim the free neighbour there outright, where every segment keeps a
+  // control triangle.
+  if (!span.closed)
     for (const auto& [fixed, free] : {std::pair{std::size_t{0}, std::size_t{1}}, std::pair{points - 1, points - 2}}) {
       if (fixed == 0 ? !span.zero_start : !span.zero_end) continue;
+      const ChordAngles g = chord_angles(chain, std::min(fixed, free));
+      const double a = fixed == 0 ? g.at_start : g.at_end, b = fixed == 0 ? g.at_end : g.at_start;
+      if (!(std::abs(b) < 2.2 * std::abs(a) || a * b > 0.0)) continue;
       const std::vector<double> before = chain.tangent_angles;
-      aim(fixed, free);
+      chain.tangent_angles[free] = g.chord - 3.0 * a;
       for (std::size_t i = 0; i + 1 < points; ++i)
         if (!tangents_meet_in_front(chain, i)) chain.tangent_angles = before;
     }
-  }
-  const std::size_t segments = chain.segment_count();
-  auto seg_end_s = [&](std::size_t i) { return i + 1 < points ? span.s[i + 1] : span.s[0] + L; };
-  for (std::size_t i = 0; i < segments; ++i) chain.alphas.push_back(lcg_alpha(ref, span.s[i], seg_end_s(i)));
+  for (std::size_t i = 0; i < chain.segment_count(); ++i)
+    chain.alphas.push_back(lcg_alpha(ref, span.s[i], segment_end_s(span, i, L)));
+  return chain;
+}
 
-  // Every segment must exist before the solve. A κ = 0 end that the source's shape does not
-  // allow (its curvature falls towards the end) becomes a free end: G1 there, not G2. Then
-  // the nearest drawable α, else another junction.
+// Makes every segment exist before the solve, or says which junctions to add or drop. In
+// turn: a κ = 0 end the source's shape does not allow (its curvature falls towards the end)
+// becomes a free end, G1 there; a corner's noisy tangent is turned; the nearest drawable α;
+// a junction that does not turn with its neighbours is dropped; else the piece is cut.
+void make_drawable(LacChain& chain, const ChainSpan& span, const RunReference& ref, const SmoothRun& run,
+                   ChainOutcome& out) {
+  const double L = ref.length();
+  const std::size_t points = span.s.size(), segments = chain.segment_count();
   for (std::size_t i = 0; i < segments; ++i) {
     if (build_chain_segment(chain, i).ok()) continue;
     const bool zero_here = !chain.closed && ((i == 0 && chain.zero_curvature_start) ||
@@ -199,11 +219,9 @@ ChainOutcome fair_chain(const ChainSpan& span, const RunReference& ref, const Ru
                             run.end.kind == RunEndKind::corner;
     if (corner_start || corner_end) {
       LacChain turned = chain;
-      const double c = angle_of(chain.points[i + 1] - chain.points[i]);
-      const double a0 = std::remainder(chain.tangent_angles[i] - c, 2 * std::numbers::pi);
-      const double a1 = std::remainder(chain.tangent_angles[i + 1] - c, 2 * std::numbers::pi);
-      if (corner_start && a1 != 0.0) turned.tangent_angles[i] = c - a1;
-      else if (corner_end && a0 != 0.0) turned.tangent_angles[i + 1] = c - a0;
+      const ChordAngles g = chord_angles(chain, i);
+      if (corner_start && g.at_end != 0.0) turned.tangent_angles[i] = g.chord - g.at_end;
+      else if (corner_end && g.at_start != 0.0) turned.tangent_angles[i + 1] = g.chord - g.at_start;
       if (build_chain_segment(turned, i).ok()) {
         chain = std::move(turned);
         continue;
@@ -218,39 +236,75 @@ ChainOutcome fair_chain(const ChainSpan& span, const RunReference& ref, const Ru
       chain.alphas[i] = a;
       if ((found = build_chain_segment(chain, i).ok())) break;
     }
-    if (!found) {
-      chain.alphas[i] = wanted;
-      // Junctions that do not turn one way (a wobble between them): drop one; cutting would
-      // only make the pieces shorter and the wobble relatively larger.
-      const std::size_t j = (i + 1) % points;
-      const bool start_free = chain.closed || i > 0, end_free = chain.closed || j + 1 < points;
-      const bool needs_free_junction = !chain.closed && points <= (span.zero_start && span.zero_end ? 4u : 3u) && (span.zero_start || span.zero_end);
-      if (!tangents_meet_in_front(chain, i) && (start_free || end_free) && !needs_free_junction)
-        out.drops.push_back(span.s[end_free ? j : i]);
-      else out.cuts.push_back(0.5 * (span.s[i] + seg_end_s(i)));
-    }
+    if (found) continue;
+    chain.alphas[i] = wanted;
+    // Junctions that do not turn one way (a wobble between them): drop one; cutting would
+    // only make the pieces shorter and the wobble relatively larger. Not a κ = 0 end's own
+    // free junction.
+    const std::size_t j = (i + 1) % points;
+    const bool start_free = chain.closed || i > 0, end_free = chain.closed || j + 1 < points;
+    const bool needs_free_junction =
+        !chain.closed && (span.zero_start || span.zero_end) && points <= (span.zero_start && span.zero_end ? 4u : 3u);
+    if (!tangents_meet_in_front(chain, i) && (start_free || end_free) && !needs_free_junction)
+      out.drops.push_back(span.s[end_free ? j : i]);
+    else
+      out.cuts.push_back(0.5 * (span.s[i] + segment_end_s(span, i, L)));
   }
-  if (!out.cuts.empty() || !out.drops.empty()) return out;
+}
+
+// Fidelity, piece by piece against the source between the same junctions (the guide's arc
+// length mapped onto the source's in proportion; with a guide, the source side gets a margin
+// for the difference and the source is compared with the piece and its neighbours). Pieces
+// over the budget are cut in the middle.
+void check_fidelity(const std::vector<LogAestheticSegment>& built, const ChainSpan& span, const RunReference& ref,
+                    const RunReference& source, double budget, ChainOutcome& out) {
+  const std::size_t segments = built.size();
+  const double L = ref.length();
+  std::vector<std::vector<Vec2>> lac(segments);
+  for (std::size_t i = 0; i < segments; ++i)
+    for (const LacPoint& p : built[i].sample(samples_for(built[i], budget))) lac[i].push_back(p.point);
+  const bool guided = &source != &ref;
+  const double scale = source.length() / L, margin = guided ? 0.02 * source.length() : 0.0;
+  for (std::size_t i = 0; i < segments; ++i) {
+    const double s0 = span.s[i], s1 = segment_end_s(span, i, L);
+    const std::vector<Vec2> near = source.polyline(s0 * scale - margin, s1 * scale + margin);
+    const std::vector<Vec2> own = guided ? source.polyline(s0 * scale, s1 * scale) : near;
+    std::vector<Vec2> around = lac[i];
+    if (guided)
+      for (const std::size_t k : {i + segments - 1, i + 1}) {  // the neighbours, wrapping on a closed chain
+        if (!span.closed && (k == i + segments - 1 ? i == 0 : i + 1 == segments)) continue;
+        around.insert(around.end(), lac[k % segments].begin(), lac[k % segments].end());
+      }
+    const double d = std::max(directed_hausdorff(lac[i], near).value, directed_hausdorff(own, around).value);
+    out.deviation = std::max(out.deviation, d);
+    if (d > budget) out.cuts.push_back(0.5 * (s0 + s1));
+  }
+}
+
+ChainOutcome fair_chain(const ChainSpan& span, const RunReference& ref, const RunReference& source, const SmoothRun& run,
+                        const FairSettings& settings, double budget, bool accept_mismatch) {
+  ChainOutcome out;
+  const double L = ref.length();
+  out.cuts = missing_junctions(span, L);
+  if (out.adjusts()) return out;
+  LacChain chain = initial_chain(span, ref, run, settings.feature_window_units, budget);
+  make_drawable(chain, span, ref, run, out);
+  if (out.adjusts()) return out;
 
   std::vector<LogAestheticSegment> built;
   double mismatch = 0.0;
   if (settings.continuity == Continuity::g2 && chain.free_junction_count() > 0) {
-    const ChainSegments first = build_chain(chain);
-    double scale = 0.0;
-    for (const LogAestheticSegment& s : first.segments)
-      scale = std::max({scale, std::abs(s.start().curvature), std::abs(s.end().curvature)});
-    G2Result g2 = make_g2(chain, 1e-10 * scale);
+    G2Result g2 = make_g2(chain, G2Tolerance{0.0, 0.1 * max_relative_mismatch});
     if (g2.segments.empty()) return out;
-    mismatch = scale > 0.0 ? g2.max_mismatch / scale : 0.0;
+    mismatch = g2.curvature_scale > 0.0 ? g2.max_mismatch / g2.curvature_scale : 0.0;
     if (mismatch > max_relative_mismatch && !accept_mismatch) {
       // No G2 within reach of these junctions: more freedom next to the worst junction.
-      const std::vector<double> d = curvature_mismatch(g2.chain, g2.segments);
-      std::size_t worst = 0;
-      for (std::size_t k = 1; k < d.size(); ++k)
-        if (std::abs(d[k]) > std::abs(d[worst])) worst = k;
-      const std::size_t j = g2.chain.first_free_junction() + worst;
+      const auto worst = std::max_element(g2.mismatches.begin(), g2.mismatches.end(),
+                                          [](double a, double b) { return std::abs(a) < std::abs(b); });
+      const std::size_t j = g2.chain.first_free_junction() + static_cast<std::size_t>(worst - g2.mismatches.begin());
+      const std::size_t segments = chain.segment_count();
       for (const std::size_t i : {(j + segments - 1) % segments, j % segments})
-        out.cuts.push_back(0.5 * (span.s[i] + seg_end_s(i)));
+        out.cuts.push_back(0.5 * (span.s[i] + segment_end_s(span, i, L)));
       return out;
     }
     built = std::move(g2.segments);
@@ -258,30 +312,8 @@ ChainOutcome fair_chain(const ChainSpan& span, const RunReference& ref, const Ru
   } else {
     built = build_chain(chain).segments;
   }
-
-  // Fidelity, piece by piece against the source between the same junctions (the guide's arc
-  // length mapped onto the source's in proportion; the source side gets a margin for the
-  // difference, and the source is compared with the piece and its neighbours).
-  std::vector<std::vector<Vec2>> lac(segments);
-  for (std::size_t i = 0; i < segments; ++i)
-    for (const LacPoint& p : built[i].sample(samples_for(built[i], budget))) lac[i].push_back(p.point);
-  const double scale = source.length() / L, margin = 0.02 * source.length();
-  for (std::size_t i = 0; i < segments; ++i) {
-    const double s0 = span.s[i], s1 = seg_end_s(i);
-    const bool exact = &source == &ref;
-    const std::vector<Vec2> near = source.polyline(s0 * scale - (exact ? 0.0 : margin), s1 * scale + (exact ? 0.0 : margin));
-    const std::vector<Vec2> own = source.polyline(s0 * scale, s1 * scale);
-    std::vector<Vec2> around;
-    for (std::size_t k = 0; k < segments; ++k) {
-      const bool neighbour = k == i || (!exact && (k + 1 == i || k == i + 1 || (chain.closed && (k + 1) % segments == i) ||
-                                                   (chain.closed && (i + 1) % segments == k)));
-      if (neighbour) around.insert(around.end(), lac[k].begin(), lac[k].end());
-    }
-    const double d = std::max(directed_hausdorff(lac[i], near).value, directed_hausdorff(own, around).value);
-    out.deviation = std::max(out.deviation, d);
-    if (d > budget) out.cuts.push_back(0.5 * (s0 + s1));
-  }
-  if (!out.cuts.empty()) return out;
+  check_fidelity(built, span, ref, source, budget, out);
+  if (out.adjusts()) return out;
   FairedChain faired;
   faired.segments = std::move(built);
   faired.closed = chain.closed;
@@ -292,10 +324,9 @@ ChainOutcome fair_chain(const ChainSpan& span, const RunReference& ref, const Ru
   return out;
 }
 
-
 // Handwriting traced from scans wobbles at every scale below the tolerance: the junctions and
 // the chain are built on a guide, the least-squares cubic B-spline of the run with the fewest
-// spans within a third of the budget (seed 000 [0038]–[0045]), while fidelity is measured
+// spans within half the budget (seed 000 [0038]–[0045]), while fidelity is measured
 // against the source itself. A professional outline is its own guide.
 SmoothRun guide_for(const SmoothRun& run, const RunReference& source, double tolerance) {
   std::vector<Vec2> points;
@@ -334,7 +365,7 @@ FairedRun fair_run(const SmoothRun& run, const FairSettings& settings, double bu
       ChainOutcome o = fair_chain(span, ref, source, guide_run, settings, budget, round >= max_rounds / 2);
       result.deviation = std::max(result.deviation, o.deviation);
       if (o.chain) result.chains.push_back(std::move(*o.chain));
-      else if (o.cuts.empty() && o.drops.empty()) {
+      else if (!o.adjusts()) {
         result.reason = "no feasible G2 chain";
         return result;
       }

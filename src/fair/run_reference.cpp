@@ -28,7 +28,7 @@ RunReference::RunReference(const SmoothRun& run, int samples_per_cubic) : cubics
       const double t = static_cast<double>(k) / samples_per_cubic;
       const Vec2 p = c.point_at(t), tangent = tangent_at(c, t);
       if (samples_.empty()) {
-        theta = std::atan2(tangent.y, tangent.x);
+        theta = angle_of(tangent);
       } else {
         s += distance(samples_.back().point, p);
         theta += turning_angle(last_tangent, tangent);
@@ -52,18 +52,18 @@ double RunReference::wrap(double s) const {
   return s < 0.0 ? s + length_ : s;
 }
 
-std::size_t RunReference::index_before(double s) const {
+RunReference::Bracket RunReference::bracket(double s) const {
   const auto it = std::upper_bound(samples_.begin(), samples_.end(), s,
                                    [](double v, const ReferenceSample& r) { return v < r.s; });
-  const std::size_t i = static_cast<std::size_t>(it - samples_.begin());
-  return std::min(i == 0 ? 0 : i - 1, samples_.size() - 2);
+  const std::size_t k = static_cast<std::size_t>(it - samples_.begin());
+  const std::size_t i = std::min(k == 0 ? 0 : k - 1, samples_.size() - 2);
+  const ReferenceSample &a = samples_[i], &b = samples_[i + 1];
+  return {i, b.s > a.s ? (s - a.s) / (b.s - a.s) : 0.0};
 }
 
 Vec2 RunReference::point_at(double s) const {
-  s = wrap(s);
-  const std::size_t i = index_before(s);
+  const auto [i, f] = bracket(wrap(s));
   const ReferenceSample &a = samples_[i], &b = samples_[i + 1];
-  const double f = b.s > a.s ? (s - a.s) / (b.s - a.s) : 0.0;
   if (a.cubic == b.cubic && b.t > a.t) return cubics_[a.cubic].point_at(a.t + f * (b.t - a.t));
   return lerp(a.point, b.point, f);
 }
@@ -76,9 +76,8 @@ double RunReference::theta_at(double s) const {
   } else {
     s = std::clamp(s, 0.0, length_);
   }
-  const std::size_t i = index_before(s);
+  const auto [i, f] = bracket(s);
   const ReferenceSample &a = samples_[i], &b = samples_[i + 1];
-  const double f = b.s > a.s ? (s - a.s) / (b.s - a.s) : 0.0;
   return a.theta + f * (b.theta - a.theta) + turns * total_turning();
 }
 
@@ -114,11 +113,12 @@ Vec2 RunReference::mean_tangent(double s, double window) const {
 
 std::vector<Vec2> RunReference::polyline(double s0, double s1) const {
   std::vector<Vec2> out{point_at(s0)};
-  // Walk the samples strictly between s0 and s1, across the seam if needed.
+  // The samples strictly between s0 and s1, across the seam if needed.
   const double base = closed_ ? std::floor(s0 / length_) * length_ : 0.0;
   for (double offset = base; offset < s1; offset += length_) {
-    for (const ReferenceSample& r : samples_)
-      if (r.s + offset > s0 && r.s + offset < s1) out.push_back(r.point);
+    auto it = std::upper_bound(samples_.begin(), samples_.end(), s0 - offset,
+                               [](double v, const ReferenceSample& r) { return v < r.s; });
+    for (; it != samples_.end() && it->s + offset < s1; ++it) out.push_back(it->point);
     if (!closed_) break;
   }
   out.push_back(point_at(s1));
@@ -128,10 +128,8 @@ std::vector<Vec2> RunReference::polyline(double s0, double s1) const {
 std::vector<Cubic> RunReference::cubics_between(double s0, double s1) const {
   // The cubic and parameter at each end, by the sample table.
   auto locate = [&](double s) {
-    s = wrap(s);
-    const std::size_t i = index_before(s);
+    const auto [i, f] = bracket(wrap(s));
     const ReferenceSample &a = samples_[i], &b = samples_[i + 1];
-    const double f = b.s > a.s ? (s - a.s) / (b.s - a.s) : 0.0;
     if (a.cubic == b.cubic) return std::pair{a.cubic, a.t + f * (b.t - a.t)};
     return f < 0.5 ? std::pair{a.cubic, a.t} : std::pair{b.cubic, b.t};
   };

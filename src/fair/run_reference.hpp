@@ -47,7 +47,12 @@ class RunReference {
   std::vector<Cubic> cubics_between(double s0, double s1) const;
 
  private:
-  std::size_t index_before(double s) const;  ///< s within [0, L]
+  /// The samples i, i + 1 around s ∈ [0, L] and where s lies between them (0 … 1).
+  struct Bracket {
+    std::size_t i;
+    double f;
+  };
+  Bracket bracket(double s) const;
   double wrap(double s) const;
   std::vector<Cubic> cubics_;
   std::vector<ReferenceSample> samples_;

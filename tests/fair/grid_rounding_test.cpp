@@ -31,15 +31,15 @@ TEST(GridRounding, SmoothNodesStayExactlyCollinear) {
                                                                              : Vec2{0.0, tangent.y > 0 ? 1.0 : -1.0};
       nodes.push_back(n);
     }
-    const RoundedNodes r = round_to_grid(nodes, true);
-    ASSERT_EQ(r.nodes.size(), nodes.size());
-    for (const OutlineNode& n : r.nodes) {
+    const std::vector<OutlineNode> r = round_to_grid(nodes, true);
+    ASSERT_EQ(r.size(), nodes.size());
+    for (const OutlineNode& n : r) {
       EXPECT_TRUE(on_grid(n.point) && on_grid(*n.in_handle) && on_grid(*n.out_handle));
       EXPECT_EQ(cross(n.point - *n.in_handle, *n.out_handle - n.point), 0.0);  // exact in integers
       EXPECT_GT(dot(n.point - *n.in_handle, *n.out_handle - n.point), 0.0);
     }
     // Nodes move to a neighbouring grid point at most; handles are placed for G1 and G2.
-    for (std::size_t i = 0; i < nodes.size(); ++i) EXPECT_LE(distance(r.nodes[i].point, nodes[i].point), 1.5 * std::sqrt(2.0));
+    for (std::size_t i = 0; i < nodes.size(); ++i) EXPECT_LE(distance(r[i].point, nodes[i].point), 1.5 * std::sqrt(2.0));
   }
 }
 
@@ -55,10 +55,10 @@ TEST(GridRounding, CornersRoundFreelyAndLinesKeepTheirHandleOnTheLine) {
   nodes[2].smooth = false;
   nodes[2].in_handle = Vec2{300.4, 60.2};
   nodes[2].out_handle = Vec2{150.2, 180.9};
-  const RoundedNodes r = round_to_grid(nodes, true);
-  const OutlineNode& join = r.nodes[1];
-  EXPECT_EQ(cross(join.point - r.nodes[0].point, *join.out_handle - join.point), 0.0);
-  for (const OutlineNode& n : r.nodes) EXPECT_TRUE(on_grid(n.point));
+  const std::vector<OutlineNode> r = round_to_grid(nodes, true);
+  const OutlineNode& join = r[1];
+  EXPECT_EQ(cross(join.point - r[0].point, *join.out_handle - join.point), 0.0);
+  for (const OutlineNode& n : r) EXPECT_TRUE(on_grid(n.point));
 }
 
 }  // namespace

@@ -12,6 +12,8 @@ import sys
 
 import jsonschema
 
+from cli_contract import error_problem, finish
+
 
 def main():
     glyphfair, fonts, schema_path, work = sys.argv[1:5]
@@ -66,14 +68,11 @@ def main():
         target = os.path.join(work, "bad.json")
         if os.path.exists(target):
             os.remove(target)
-        r = run(*args, "-o", target)
-        if r.returncode != 2 or text_ not in r.stderr or len(r.stderr.strip().splitlines()) != 1 or os.path.exists(target):
-            failures.append(f"{args}: exit {r.returncode} {r.stderr!r}")
+        problem = error_problem(run(*args, "-o", target), 2, text_)
+        if problem or os.path.exists(target):
+            failures.append(f"{args}: {problem or 'left the report behind'}")
 
-    for f in failures:
-        print("FAIL:", f)
-    print(f"{0 if failures else 1} passed, {1 if failures else 0} failed")
-    return 1 if failures else 0
+    return finish(failures)
 
 
 if __name__ == "__main__":

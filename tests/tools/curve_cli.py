@@ -9,6 +9,8 @@ import os
 import subprocess
 import sys
 
+from cli_contract import error_problem, finish
+
 
 def run(*args):
     return subprocess.run([sys.argv[1], "curve", *args], capture_output=True, text=True)
@@ -49,14 +51,11 @@ def main():
     for args, code, text in [(("--alpha", "-5", "--points", "0,0", "1,0", "2,0.8", "--format", "svg"), 2, "no solution"),
                              (("--alpha", "1", "--points", "0,0", "1;0", "2,0.8"), 2, "is not x,y"),
                              (("--points", "0,0", "1,0", "2,0.8"), 2, "--alpha is required")]:
-        r = run(*args)
-        if r.returncode != code or text not in r.stderr or len(r.stderr.strip().splitlines()) != 1:
-            failures.append(f"{args}: {r.returncode} {r.stderr!r}")
+        problem = error_problem(run(*args), code, text)
+        if problem:
+            failures.append(f"{args}: {problem}")
 
-    for f in failures:
-        print("FAIL:", f)
-    print(f"{1 if not failures else 0} passed, {1 if failures else 0} failed")
-    return 1 if failures else 0
+    return finish(failures)
 
 
 if __name__ == "__main__":

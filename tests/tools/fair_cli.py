@@ -17,18 +17,17 @@
 usage: fair_cli.py GLYPHFAIR FONTS DATA WORKDIR
 """
 import json
-import math
 import os
 import shutil
 import subprocess
 import sys
 
 import numpy as np
-from fontTools.pens.recordingPen import DecomposingRecordingPen, RecordingPen
 from fontTools.ttLib import TTFont
 from fontTools.ufoLib import UFOReader
 from scipy.spatial import cKDTree
 
+from cli_contract import error_problem, finish
 from fairing_bars import area, dense, glyph_contours
 
 
@@ -168,20 +167,16 @@ def main():
                          ([dejavu, "-o", os.path.join(work, "e2.txt")], "e2.txt"),
                          ([bad_points, "-o", os.path.join(work, "e3.ufo")], "glyph 'x'"),
                          ([dejavu, "-o", dejavu], "DejaVuSans-subset.ttf")):
-        r = run(glyphfair, *args)
-        lines = [l for l in r.stderr.splitlines() if l.strip()]
+        problem = error_problem(run(glyphfair, *args), 2, needle)
         target = args[-1]
-        if r.returncode != 2 or len(lines) != 1 or needle not in lines[0]:
-            failures.append(f"error {args}: exit {r.returncode}, stderr {r.stderr!r}")
+        if problem:
+            failures.append(f"error {args}: {problem}")
         if target != dejavu and os.path.exists(target):
             failures.append(f"error {args}: left {target} behind")
     if not os.path.exists(dejavu):
         failures.append("the source was overwritten")
 
-    for f in failures:
-        print("FAIL", f)
-    print(f"{len(failures)} failures")
-    return 1 if failures else 0
+    return finish(failures)
 
 
 if __name__ == "__main__":

@@ -32,7 +32,7 @@ from fontTools.ufoLib import UFOReader
 from scipy.spatial import cKDTree
 
 from compare_outlines import segments
-from independent_checks import cross, derivative_roots, dot, end_curvature, length, norm, point, sub, tangent
+from independent_checks import cross, dot, join_counts, norm, sub, tangent
 
 SMOOTH_DEG, CORNER_DEG = 0.05, 3.0
 
@@ -128,41 +128,6 @@ def measures(contours, upm):
     return tv, infl, ext
 
 
-def joins_report(contours, upm):
-    kinks = jumps = smooth = missing = 0
-    nodes = [s[0] for c in contours for s in c]
-    for segs in contours:
-        n = len(segs)
-        for i in range(n):
-            a, b = segs[i - 1], segs[i]
-            angle = join_angle(a, b)
-            if angle is None:
-                continue
-            if SMOOTH_DEG < angle < CORNER_DEG:
-                kinks += 1
-            elif angle <= SMOOTH_DEG:
-                smooth += 1
-                k1, k2 = end_curvature(a, True), end_curvature(b, False)
-                if math.isinf(k1) or math.isinf(k2):
-                    jumps += 1
-                    continue
-                big = max(abs(k1), abs(k2))
-                jumps += (abs(k1 - k2) / big > 0.05) if big * upm >= 0.5 else (abs(k1 - k2) * upm > 0.05)
-        for s in segs:
-            if len(s) == 2:
-                continue
-            total = length(s, 0, 1)
-            for axis in (0, 1):
-                for t in derivative_roots(s, axis):
-                    before = length(s, 0, t)
-                    if before <= 0.01 * total or total - before <= 0.01 * total:
-                        continue
-                    p = point(s, t)
-                    if min(norm(sub(p, q)) for q in nodes) > 0.5 * upm / 1000:
-                        missing += 1
-    return kinks, jumps, smooth, missing
-
-
 def dense(contours, spacing=0.25):
     pts = []
     for segs in contours:
@@ -215,7 +180,7 @@ def main():
         b = glyph_contours(ufo_gs, name, True)
         tv_a, infl_a, ext_a = measures(a, upm)
         tv_b, infl_b, ext_b = measures(b, upm)
-        kinks, jumps, smooth, missing = joins_report(b, upm)
+        kinks, jumps, smooth, missing = join_counts(b, upm)
         row = {
             "glyph": name, "tv": [tv_a, tv_b], "inflections": [infl_a, infl_b], "extrema": [ext_a, ext_b],
             "nodes": [sum(len(c) for c in a), sum(len(c) for c in b)],

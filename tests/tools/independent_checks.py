@@ -113,46 +113,54 @@ def derivative_roots(seg, axis):
     return []
 
 
+def join_counts(contours, upm):
+    """Kinks, g2-jumps and missing extrema of one glyph's contours (closed, segments without
+    zero-length ones), and how many smooth joins there were."""
+    kinks = jumps = smooth = missing = 0
+    nodes = [s[0] for c in contours for s in c] + [s[-1] for c in contours for s in c]
+    for segs in contours:
+        for i in range(len(segs)):
+            a, b = segs[i - 1], segs[i]
+            tin, tout = tangent(a, True), tangent(b, False)
+            if tin is None or tout is None:
+                continue
+            angle = abs(math.degrees(math.atan2(cross(tin, tout), dot(tin, tout))))
+            if 0.05 < angle < 3:
+                kinks += 1
+            elif angle <= 0.05:
+                smooth += 1
+                k1, k2 = end_curvature(a, True), end_curvature(b, False)
+                if math.isinf(k1) or math.isinf(k2):
+                    jumps += 1
+                    continue
+                big = max(abs(k1), abs(k2))
+                if big * upm >= 0.5:
+                    jumps += abs(k1 - k2) / big > 0.05
+                else:
+                    jumps += abs(k1 - k2) * upm > 0.05
+        for s in segs:
+            if len(s) == 2:
+                continue
+            total = length(s, 0, 1)
+            for axis in (0, 1):
+                for t in derivative_roots(s, axis):
+                    before = length(s, 0, t)
+                    if before <= 0.01 * total or total - before <= 0.01 * total:
+                        continue
+                    p = point(s, t)
+                    if min(norm(sub(p, q)) for q in nodes) > 0.5 * upm / 1000:
+                        missing += 1
+    return kinks, jumps, smooth, missing
+
+
 def count(font_path):
     font = TTFont(font_path)
     upm = font["head"].unitsPerEm
     gs = font.getGlyphSet()
     kinks = jumps = missing = 0
     for name in font.getGlyphOrder():
-        contours = contours_of(gs, name)
-        nodes = [s[0] for c, _ in contours for s in c] + [s[-1] for c, _ in contours for s in c]
-        for segs, closed in contours:
-            n = len(segs)
-            for i in range(n if closed else n - 1):
-                a, b = segs[i - 1] if closed else segs[i], segs[i] if closed else segs[i + 1]
-                tin, tout = tangent(a, True), tangent(b, False)
-                if tin is None or tout is None:
-                    continue
-                angle = abs(math.degrees(math.atan2(cross(tin, tout), dot(tin, tout))))
-                if 0.05 < angle < 3:
-                    kinks += 1
-                elif angle <= 0.05:
-                    k1, k2 = end_curvature(a, True), end_curvature(b, False)
-                    if math.isinf(k1) or math.isinf(k2):
-                        jumps += 1
-                        continue
-                    big = max(abs(k1), abs(k2))
-                    if big * upm >= 0.5:
-                        jumps += abs(k1 - k2) / big > 0.05
-                    else:
-                        jumps += abs(k1 - k2) * upm > 0.05
-            for s in segs:
-                if len(s) == 2:
-                    continue
-                total = length(s, 0, 1)
-                for axis in (0, 1):
-                    for t in derivative_roots(s, axis):
-                        before = length(s, 0, t)
-                        if before <= 0.01 * total or total - before <= 0.01 * total:
-                            continue
-                        p = point(s, t)
-                        if min(norm(sub(p, q)) for q in nodes) > 0.5 * upm / 1000:
-                            missing += 1
+        k, j, _, m = join_counts([c for c, _ in contours_of(gs, name)], upm)
+        kinks, jumps, missing = kinks + k, jumps + j, missing + m
     return {"kink": kinks, "g2-jump": jumps, "missing-extremum": missing}
 
 
