@@ -132,7 +132,7 @@ std::vector<RequiredNode> axis_extrema(const ChainPath& path, const FairedChain&
 double cubic_deviation(const Cubic& c, const std::vector<Vec2>& lac) {
   std::vector<Vec2> pts;
   for (int k = 0; k <= cubic_samples; ++k) pts.push_back(c.point_at(static_cast<double>(k) / cubic_samples));
-  return std::max(directed_hausdorff(pts, lac).value, directed_hausdorff(lac, pts).value);
+  return std::max(directed_hausdorff(pts, lac), directed_hausdorff(lac, pts));
 }
 
 struct Piece {

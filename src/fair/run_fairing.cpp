@@ -275,7 +275,7 @@ void check_fidelity(const std::vector<LogAestheticSegment>& built, const ChainSp
         if (!span.closed && (k == i + segments - 1 ? i == 0 : i + 1 == segments)) continue;
         around.insert(around.end(), lac[k % segments].begin(), lac[k % segments].end());
       }
-    const double d = std::max(directed_hausdorff(lac[i], near).value, directed_hausdorff(own, around).value);
+    const double d = std::max(directed_hausdorff(lac[i], near), directed_hausdorff(own, around));
     out.deviation = std::max(out.deviation, d);
     if (d > budget) out.cuts.push_back(0.5 * (s0 + s1));
   }

@@ -28,21 +28,10 @@ double squared_distance_to_polyline(Vec2 p, std::span<const Vec2> polyline) {
 
 }  // namespace
 
-double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) { return std::sqrt(squared_distance_to_segment(p, a, b)); }
-
-double distance_to_polyline(Vec2 p, std::span<const Vec2> polyline) {
-  return std::sqrt(squared_distance_to_polyline(p, polyline));
-}
-
-DirectedDistance directed_hausdorff(std::span<const Vec2> from, std::span<const Vec2> to_polyline) {
-  DirectedDistance out;
+double directed_hausdorff(std::span<const Vec2> from, std::span<const Vec2> to_polyline) {
   double worst = 0.0;
-  for (std::size_t i = 0; i < from.size(); ++i) {
-    const double d = squared_distance_to_polyline(from[i], to_polyline);
-    if (d > worst) worst = d, out.worst = i;
-  }
-  out.value = std::sqrt(worst);
-  return out;
+  for (const Vec2 p : from) worst = std::max(worst, squared_distance_to_polyline(p, to_polyline));
+  return std::sqrt(worst);
 }
 
 PolylineGrid::PolylineGrid(std::vector<Vec2> polyline, double cell_size) : points_(std::move(polyline)), cell_(cell_size) {

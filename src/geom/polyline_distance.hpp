@@ -1,4 +1,4 @@
-// Distances between sampled curves: a point to a polyline, and the directed Hausdorff
+// Distances between sampled curves: the directed Hausdorff
 // distance max_{p ∈ from} min_{q ∈ to} |p − q| with `to` taken as the polyline through its
 // points (so the bound does not depend on how densely `to` was sampled along straight parts).
 #pragma once
@@ -12,14 +12,8 @@
 
 namespace gf {
 
-double distance_to_segment(Vec2 p, Vec2 a, Vec2 b);
-double distance_to_polyline(Vec2 p, std::span<const Vec2> polyline);
-
-struct DirectedDistance {
-  double value = 0.0;
-  std::size_t worst = 0;  ///< index in `from` where it is reached
-};
-DirectedDistance directed_hausdorff(std::span<const Vec2> from, std::span<const Vec2> to_polyline);
+/// max over `from` of the distance to the polyline through `to_polyline`.
+double directed_hausdorff(std::span<const Vec2> from, std::span<const Vec2> to_polyline);
 
 /// A polyline bucketed on a uniform grid, for nearest-distance queries on long polylines
 /// (whole contours): a query looks at rings of cells outwards until no nearer segment can be.
