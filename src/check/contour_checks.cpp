@@ -115,9 +115,7 @@ struct GlyphChecker {
 
   void check_segment_shape(int ci, int i, const Segment& s, double length, double contour_length, bool previous_is_line) {
     const Vec2 a = start_point(s), b = end_point(s);
-    bool all_same = true;
-    for_each_point(s, [&](Vec2 q) { all_same = all_same && q == a; });
-    if (all_same) {
+    if (is_degenerate(s)) {
       add("duplicate-point", ci, i, a).message = "two consecutive points coincide (a segment of length 0)";
       return;
     }

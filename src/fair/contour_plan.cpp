@@ -16,13 +16,6 @@ struct Piece {
   bool straight;
 };
 
-bool all_points_equal(const Segment& s) {
-  bool equal = true;
-  const Vec2 p0 = start_point(s);
-  for_each_point(s, [&](Vec2 q) { equal = equal && q == p0; });
-  return equal;
-}
-
 }  // namespace
 
 bool is_straight(const Cubic& c) {
@@ -43,7 +36,7 @@ ContourPlan plan_contour(const Contour& source, double corner_angle_deg) {
   std::vector<Piece> pieces;
   for (std::size_t i = 0; i < contour.segments.size(); ++i) {
     const Segment& s = contour.segments[i];
-    if (all_points_equal(s)) continue;
+    if (is_degenerate(s)) continue;
     const bool straight = is_line(s) || is_straight(std::get<Cubic>(s));
     pieces.push_back({straight ? Segment{Line{start_point(s), end_point(s)}} : s, i, straight});
   }

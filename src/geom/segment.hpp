@@ -30,4 +30,11 @@ template <typename F>
 void for_each_point(const Segment& s, F&& f) {
   std::visit([&](const auto& b) { for (const Vec2& q : b.p) f(q); }, s);
 }
+/// Every point the same: no length and no direction.
+inline bool is_degenerate(const Segment& s) {
+  bool same = true;
+  const Vec2 p0 = start_point(s);
+  for_each_point(s, [&](Vec2 q) { same = same && q == p0; });
+  return same;
+}
 }  // namespace gf

@@ -120,7 +120,9 @@ TEST(Checks, InflectionInSegmentWithItsT) {
   const GlyphReport r = run(glyph({s}));
   ASSERT_EQ(count(r, "inflection-in-segment"), 1);
   for (const Finding& f : r.findings)
-    if (f.check == "inflection-in-segment") EXPECT_NEAR(*f.t, 0.5, 1e-12);
+    if (f.check == "inflection-in-segment") {
+      EXPECT_NEAR(*f.t, 0.5, 1e-12);
+    }
   EXPECT_EQ(count(run(glyph({circle()})), "inflection-in-segment"), 0);
 }
 

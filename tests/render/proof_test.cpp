@@ -32,7 +32,9 @@ TEST(Proof, PdfHasAnOverviewAndAPagePerGlyph) {
   FontInfo info;
   const auto p = pages(test::because_we_learn, {"a", "g", "S"}, info);
   const fs::path pdf = test::scratch("p.pdf");
-  write_proof(p, info, {"test"}, pdf);
+  ProofOptions options;
+  options.title = "test";
+  write_proof(p, info, options, pdf);
   std::ifstream in(pdf, std::ios::binary);
   const std::string bytes((std::istreambuf_iterator<char>(in)), {});
   EXPECT_EQ(bytes.substr(0, 5), "%PDF-");
@@ -71,7 +73,9 @@ TEST(Proof, PngShowsOutlineCombsAndMarksInTheirColours) {
 TEST(Proof, SvgIsWritten) {
   FontInfo info;
   const fs::path svg = test::scratch("p.svg");
-  write_proof(pages(test::inter_variable, {"uni0061"}, info), info, {"test"}, svg);
+  ProofOptions options;
+  options.title = "test";
+  write_proof(pages(test::inter_variable, {"uni0061"}, info), info, options, svg);
   std::ifstream in(svg);
   const std::string text((std::istreambuf_iterator<char>(in)), {});
   EXPECT_NE(text.find("<svg"), std::string::npos);
