@@ -168,9 +168,15 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& settings)
       continue;
     }
     rotate_to_start(a.nodes, source.node_point(0));
-    if (settings.round_to_integers) a.nodes = round_to_grid(a.nodes, source.closed);
     Contour faired = to_contour(a.nodes, source.closed);
-    const double d = distance_between(SampledContour(faired), sampled_source);
+    double d = distance_between(SampledContour(faired), sampled_source);
+    if (settings.round_to_integers && d <= settings.tolerance_units) {
+      // What the float outline leaves of the tolerance is what rounding may spend on G2
+      // (the distance obeys the triangle inequality; 5 % kept for sampling).
+      const HandleStepLimits limits{settings.flat_curvature, 0.95 * (settings.tolerance_units - d)};
+      faired = to_contour(round_to_grid(a.nodes, source.closed, limits), source.closed);
+      d = distance_between(SampledContour(faired), sampled_source);
+    }
     if (d <= settings.tolerance_units) {
       out.contour = std::move(faired);
       out.faired = true;

@@ -15,14 +15,16 @@ namespace {
 constexpr int max_depth = 6;
 constexpr int cubic_samples = 48;
 
-// Short primitive integer directions in the first octant and their mirrors: where a span must be
-// cut, the cut goes where the tangent runs along one of them, so rounding keeps the node's
-// handles exactly collinear with it in steps of at most √13 units.
-std::vector<Vec2> grid_directions() {
+// Short primitive integer directions, |d|² ≤ `longest`: where a span must be cut, the cut goes
+// where the tangent runs along one of them, so rounding keeps the node's handles exactly
+// collinear with it in whole steps of |d|. The shortest, (1, 0), (1, 1), (2, 1) and their
+// mirrors, come first: steps of at most √5 units are fine enough for whole steps to match
+// curvature (fair/handle_steps.hpp); up to (3, 2) where none of them is near the middle.
+std::vector<Vec2> grid_directions(int longest) {
   std::vector<Vec2> out;
   for (int p = -3; p <= 3; ++p)
     for (int q = -3; q <= 3; ++q)
-      if (p * p + q * q <= 13 && std::gcd(std::abs(p), std::abs(q)) == 1) out.push_back({double(p), double(q)});
+      if (p * p + q * q <= longest && std::gcd(std::abs(p), std::abs(q)) == 1) out.push_back({double(p), double(q)});
   return out;
 }
 
@@ -168,20 +170,26 @@ class SpanWriter {
   }
 
  private:
-  // Cut where the tangent runs along a short grid direction near the middle of the span's
-  // turning, else at the chain junction nearest the middle, else at the middle.
+  // Cut where the tangent runs along a short grid direction nearest the middle of the span's
+  // turning (within its middle 60 %), and not within the first or last 15 % of its length,
+  // where a piece would be short and its handles coarse on the grid; else at the chain
+  // junction nearest the middle, else at the middle.
   std::pair<double, std::optional<Vec2>> cut_point(double a, double b, Vec2 ta, Vec2 tb) const {
     const double turn = turning_angle(ta, tb);
-    std::optional<Vec2> step;
-    double best = 0.3;  // |fraction − 0.5| must stay below this
-    double fraction_turn = 0.0;
     if (std::abs(turn) > 1e-6)
-      for (const Vec2 d : directions_) {
-        const double rel = turning_angle(ta, d / norm(d));
-        const double f = rel / turn;
-        if (std::abs(f - 0.5) < best) best = std::abs(f - 0.5), step = d, fraction_turn = rel;
+      for (const std::vector<Vec2>* directions : {&fine_, &coarse_}) {
+        std::optional<Vec2> step;
+        double best = 0.3, cut = a;  // |fraction of the turning − 0.5| must stay below 0.3
+        for (const Vec2 d : *directions) {
+          const double rel = turning_angle(ta, d / norm(d));
+          const double f = rel / turn;
+          if (std::abs(f - 0.5) >= best) continue;
+          const double sigma = path_.where_turned(a, b, rel);
+          if (std::abs((sigma - a) / (b - a) - 0.5) > 0.35) continue;
+          best = std::abs(f - 0.5), step = d, cut = sigma;
+        }
+        if (step) return {cut, step};
       }
-    if (step) return {path_.where_turned(a, b, fraction_turn), step};
     const double mid = 0.5 * (a + b), width = b - a;
     double cut = mid, nearest = 0.3 * width;
     for (std::size_t i = 1; i < path_.segment_count(); ++i)
@@ -195,7 +203,7 @@ class SpanWriter {
   const ChainPath& path_;
   double budget_;
   ChainCubics& out_;
-  std::vector<Vec2> directions_ = grid_directions();
+  std::vector<Vec2> fine_ = grid_directions(5), coarse_ = grid_directions(13);
 };
 
 }  // namespace

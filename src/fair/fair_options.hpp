@@ -33,6 +33,9 @@ struct FairSettings {
   /// extrema: wobbles shorter than this are not features.
   double feature_window_units = 5.0;
   bool round_to_integers = true;
+  /// |κ| (1/unit) of half a unit per em: flatter curves are compared by the difference of
+  /// their curvatures, not the ratio (the check's g2-jump rule).
+  double flat_curvature = 5e-4;
 };
 
 FairSettings resolve_settings(const FairOptions& options, double units_per_em);

@@ -5,6 +5,7 @@
 #include <numeric>
 
 #include "geom/curvature.hpp"
+#include "fair/handle_steps.hpp"
 #include "geom/g2_hermite.hpp"
 
 namespace gf {
@@ -73,11 +74,6 @@ Choice collinear_choice(Vec2 point, std::optional<Vec2> in, std::optional<Vec2> 
   return best;
 }
 
-double relative_jump(double k1, double k2) {
-  const double big = std::max(std::abs(k1), std::abs(k2));
-  return big > 0.0 ? std::abs(k1 - k2) / big : 0.0;
-}
-
 // Rounding moved the nodes and turned the handle directions onto grid vectors; for each cubic
 // the handle lengths that give back the curvature the fairing had at both ends (G2 Hermite on
 // the rounded ends), then rounded to whole steps along each handle's grid direction.
@@ -118,57 +114,10 @@ void resolve_handle_lengths(std::vector<OutlineNode>& nodes, const std::vector<O
   nodes = std::move(updated);
 }
 
-// G2 as well as the grid allows: the handles of every smooth node move along their grid
-// direction by whole steps (which keeps G1 exact) where that brings the curvature on the two
-// sides closer: at most two steps, and no farther from the unrounded handle than 2 units or
-// 5 % of its length.
-void restore_g2(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal,
-                const std::vector<std::optional<Vec2>>& steps, bool closed) {
-  const std::size_t n = nodes.size();
-  auto jump_at = [&](std::size_t i) -> double {
-    const OutlineNode& q = nodes[i];
-    if (!q.smooth || !q.in_handle || !q.out_handle) return 0.0;
-    if (!closed && (i == 0 || i + 1 == n)) return 0.0;
-    const OutlineNode &prev = nodes[(i + n - 1) % n], &next = nodes[(i + 1) % n];
-    if (!prev.out_handle || !next.in_handle) return 0.0;
-    const double k_out = curvature_at(Cubic{q.point, *q.out_handle, *next.in_handle, next.point}, SegmentEnd::start);
-    const double k_in = curvature_at(Cubic{prev.point, *prev.out_handle, *q.in_handle, q.point}, SegmentEnd::end);
-    return relative_jump(k_in, k_out);
-  };
-  auto cost_near = [&](std::size_t i) {
-    double c = 0.0;
-    for (const std::size_t j : {(i + n - 1) % n, i, (i + 1) % n}) c += jump_at(j) * jump_at(j);
-    return c;
-  };
-  for (int sweep = 0; sweep < 3; ++sweep)
-    for (std::size_t i = 0; i < n; ++i) {
-      if (!steps[i] || !nodes[i].in_handle || !nodes[i].out_handle) continue;
-      const Vec2 d = *steps[i];
-      for (const bool out : {false, true}) {
-        // The curvature at a line join (κ = 0, set by where this handle sits) is not traded.
-        const OutlineNode& far = nodes[(i + (out ? 1 : n - 1)) % n];
-        if (far.smooth && (!far.in_handle || !far.out_handle)) continue;
-        Vec2& h = out ? *nodes[i].out_handle : *nodes[i].in_handle;
-        const Vec2 start = h, want = out ? *ideal[i].out_handle : *ideal[i].in_handle;
-        const double sign = out ? 1.0 : -1.0;
-        double best_cost = cost_near(i);
-        Vec2 best = start;
-        for (int k = -2; k <= 2; ++k) {
-          const Vec2 trial = start + d * (sign * k);
-          if (k == 0 || dot(trial - nodes[i].point, d) * sign <= 0.0) continue;
-          if (distance(trial, want) > std::max(2.0, 0.05 * distance(want, nodes[i].point))) continue;
-          h = trial;
-          const double c = cost_near(i);
-          if (c < best_cost - 1e-12) best_cost = c, best = trial;
-        }
-        h = best;
-      }
-    }
-}
-
 }  // namespace
 
-std::vector<OutlineNode> round_to_grid(const std::vector<OutlineNode>& nodes, bool closed) {
+std::vector<OutlineNode> round_to_grid(const std::vector<OutlineNode>& nodes, bool closed,
+                                       const HandleStepLimits& limits) {
   std::vector<OutlineNode> r = nodes;
   const std::size_t n = nodes.size();
   auto open_end = [&](std::size_t i) { return !closed && (i == 0 || i + 1 == n); };
@@ -202,7 +151,9 @@ std::vector<OutlineNode> round_to_grid(const std::vector<OutlineNode>& nodes, bo
   // Lines with a curve meeting them tangentially: the curve's handle must lie on the line, in
   // whole steps of the line's primitive direction. A diagonal line between nearest grid points
   // may have a long primitive step (DejaVu's S spine: (122, −25)), so both ends may move to a
-  // neighbouring grid point where the step is short; the choice that moves least wins.
+  // neighbouring grid point where the step is short; the choice that moves least wins. An end
+  // an earlier line already placed stays (moving it would turn that line off its curve's handle).
+  std::vector<bool> placed(n, false);
   for (std::size_t i = 0; i < (closed ? n : n - 1); ++i) {
     const std::size_t j = (i + 1) % n;
     if (nodes[i].out_handle || nodes[j].in_handle) continue;  // not a line
@@ -211,16 +162,19 @@ std::vector<OutlineNode> round_to_grid(const std::vector<OutlineNode>& nodes, bo
     if (!at_start && !at_end) continue;
     const Vec2 a0 = r[i].point, b0 = r[j].point;
     double best_cost = 1e300;
-    Vec2 best_a = a0, best_b = b0;
+    Vec2 best_a = a0, best_b = b0, best_d;
     std::optional<Vec2> best_in, best_out;
     for (int k = 0; k < 81; ++k) {
-      const Vec2 a = a0 + Vec2{double(k % 3 - 1), double(k / 3 % 3 - 1)};
-      const Vec2 b = b0 + Vec2{double(k / 9 % 3 - 1), double(k / 27 % 3 - 1)};
+      const Vec2 da{double(k % 3 - 1), double(k / 3 % 3 - 1)}, db{double(k / 9 % 3 - 1), double(k / 27 % 3 - 1)};
+      if ((placed[i] && da != Vec2{}) || (placed[j] && db != Vec2{})) continue;
+      const Vec2 a = a0 + da, b = b0 + db;
       const Vec2 along = b - a;
       const long long g = std::gcd(static_cast<long long>(std::abs(along.x)), static_cast<long long>(std::abs(along.y)));
       if (g == 0) continue;
       const Vec2 d = along / static_cast<double>(g);
-      double cost = std::max(distance(a, nodes[i].point), distance(b, nodes[j].point));
+      // A long step leaves whole steps too coarse to give the curve κ = 0 at the join: each
+      // unit of |d| counts as a tenth of a unit moved.
+      double cost = std::max(distance(a, nodes[i].point), distance(b, nodes[j].point)) + 0.1 * norm(d);
       std::optional<Vec2> in, out;
       if (at_start) {  // the curve arrives at a along d
         in = stepped_handle(a, d, -1.0, nodes[i].point, *nodes[i].in_handle);
@@ -230,15 +184,16 @@ std::vector<OutlineNode> round_to_grid(const std::vector<OutlineNode>& nodes, bo
         out = stepped_handle(b, d, 1.0, nodes[j].point, *nodes[j].out_handle);
         cost = std::max(cost, distance(*out, *nodes[j].out_handle));
       }
-      if (cost < best_cost) best_cost = cost, best_a = a, best_b = b, best_in = in, best_out = out;
+      if (cost < best_cost) best_cost = cost, best_a = a, best_b = b, best_d = d, best_in = in, best_out = out;
     }
     r[i].point = best_a;
     r[j].point = best_b;
-    if (best_in) r[i].in_handle = best_in;
-    if (best_out) r[j].out_handle = best_out;
+    placed[i] = placed[j] = true;
+    if (best_in) r[i].in_handle = best_in, steps[i] = best_d;
+    if (best_out) r[j].out_handle = best_out, steps[j] = best_d;
   }
   resolve_handle_lengths(r, nodes, steps, closed);
-  restore_g2(r, nodes, steps, closed);
+  choose_handle_steps(r, nodes, steps, closed, limits);
   return r;
 }
 

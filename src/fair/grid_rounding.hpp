@@ -2,15 +2,18 @@
 // two handles end up exactly collinear on the grid (both handle vectors integer multiples of
 // one primitive direction), a node at a horizontal or vertical extremum keeps axis-parallel
 // handles, and a curve meeting a line keeps its handle on the line. Among the exact choices
-// the one that moves the points least is taken, so G2 survives as well as the grid allows.
+// the one that moves the points least is taken; then the handle lengths are chosen in whole
+// steps so that G2 survives as well as the grid allows (fair/handle_steps.hpp).
 #pragma once
 
 #include <vector>
 
+#include "fair/handle_steps.hpp"
 #include "fair/outline_nodes.hpp"
 
 namespace gf {
 
-std::vector<OutlineNode> round_to_grid(const std::vector<OutlineNode>& nodes, bool closed);
+std::vector<OutlineNode> round_to_grid(const std::vector<OutlineNode>& nodes, bool closed,
+                                       const HandleStepLimits& limits = {});
 
 }  // namespace gf

@@ -77,7 +77,8 @@ def stretches(segs):
     """The contour's κ samples cut into smooth stretches (cut at joins over 3°), with the
     |Δκ| at the smooth joins."""
     n = len(segs)
-    breaks = [i for i in range(n) if (join_angle(segs[i - 1], segs[i]) or 180) > CORNER_DEG]
+    angles = [join_angle(segs[i - 1], segs[i]) for i in range(n)]
+    breaks = [i for i in range(n) if angles[i] is None or angles[i] > CORNER_DEG]  # 0.0° is smooth
     order = list(range(n))
     if breaks:
         order = order[breaks[0]:] + order[:breaks[0]]

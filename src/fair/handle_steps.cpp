@@ -1,0 +1,209 @@
+#include "fair/handle_steps.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "geom/critical_points.hpp"
+#include "geom/curvature.hpp"
+
+namespace gf {
+
+namespace {
+
+constexpr int reach = 3;              // whole steps either way from the rounded length
+constexpr double target_jump = 0.03;  // below the check's 5 %, with room for its sampling
+constexpr double wrong_way = 1e4;   // an inflection the curve does not have costs more than any jump
+constexpr double infeasible = std::numeric_limits<double>::infinity();
+
+double curvature_at(const Cubic& c, SegmentEnd end) { return end_curvature(c, end).curvature.value_or(0.0); }
+
+// The jump between two curvatures, relative to the larger unless both are flat.
+double jump(double k1, double k2, double flat) {
+  return std::abs(k1 - k2) / std::max({std::abs(k1), std::abs(k2), flat});
+}
+
+// G2 first: any jump over the target costs more than every choice that meets it.
+double jump_cost(double j) { return j <= target_jump ? j * j : 1.0 + 100.0 * j; }
+
+// Where one handle of a node may go: whole steps along the node's grid direction, a unit
+// either way for a corner's handle, else where it is. The rounded position comes first.
+std::vector<Vec2> handle_candidates(const OutlineNode& node, std::optional<Vec2> step, bool out) {
+  const Vec2 h = out ? *node.out_handle : *node.in_handle;
+  std::vector<Vec2> c{h};
+  if (step) {
+    const double sign = out ? 1.0 : -1.0;
+    const double m0 = std::round(sign * dot(h - node.point, *step) / dot(*step, *step));
+    for (int k = -reach; k <= reach; ++k)
+      if (k != 0 && m0 + k >= 1.0) c.push_back(node.point + *step * (sign * (m0 + k)));
+  } else if (!node.smooth) {
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy)
+        if (dx != 0 || dy != 0) c.push_back(h + Vec2{double(dx), double(dy)});
+  }
+  return c;
+}
+
+// How far a cubic moved from its unrounded self, measured at the same parameters (a bound
+// on the distance between the two curves).
+double parametric_distance(const Cubic& a, const Cubic& b) {
+  double d = 0.0;
+  for (int k = 0; k <= 8; ++k) d = std::max(d, distance(a.point_at(k / 8.0), b.point_at(k / 8.0)));
+  return d;
+}
+
+// How often the sign of κ changes along a cubic (at ninths of its parameter; κ = 0 has no sign).
+int sign_changes(const Cubic& c) {
+  int changes = 0;
+  double last = 0.0;
+  for (int k = 0; k <= 8; ++k) {
+    const double kappa = curvature(derivatives_at(c, k / 8.0)).value_or(0.0);
+    if (std::abs(kappa) < 1e-12) continue;
+    changes += last * kappa < 0.0;
+    last = kappa;
+  }
+  return changes;
+}
+
+// Horizontal and vertical extrema away from the ends (those within 1 % of t sit on the node).
+int inner_axis_extrema(const Cubic& c) {
+  const std::vector<AxisExtremum> all = axis_extrema(c);
+  return static_cast<int>(std::count_if(all.begin(), all.end(), [](const AxisExtremum& e) { return e.t > 0.01 && e.t < 0.99; }));
+}
+
+// One cubic of the outline and every choice of its two handles (state = out·ins + in).
+struct CubicChoices {
+  std::size_t start = 0, end = 0;  ///< node indices
+  std::vector<Vec2> outs, ins;
+  std::vector<double> k_start, k_end, cost;
+
+  std::size_t states() const { return outs.size() * ins.size(); }
+};
+
+CubicChoices cubic_choices(const std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal,
+                           std::span<const std::optional<Vec2>> steps, std::size_t i, std::size_t j,
+                           const HandleStepLimits& limits, bool line_before, bool line_after) {
+  CubicChoices c;
+  c.start = i, c.end = j;
+  c.outs = handle_candidates(nodes[i], steps[i], true);
+  c.ins = handle_candidates(nodes[j], steps[j], false);
+  const Cubic unrounded{ideal[i].point, *ideal[i].out_handle, *ideal[j].in_handle, ideal[j].point};
+  const Vec2 p0 = nodes[i].point, p3 = nodes[j].point;
+  const double allowed = std::max(limits.allowance, parametric_distance(Cubic{p0, c.outs[0], c.ins[0], p3}, unrounded));
+  const int ideal_changes = sign_changes(unrounded), ideal_extrema = inner_axis_extrema(unrounded);
+  for (const Vec2 out : c.outs)
+    for (const Vec2 in : c.ins) {
+      const Cubic cubic{p0, out, in, p3};
+      const double ks = curvature_at(cubic, SegmentEnd::start), ke = curvature_at(cubic, SegmentEnd::end);
+      const double moved = parametric_distance(cubic, unrounded);
+      double cost = moved > allowed ? infeasible : 0.01 * (moved / allowed) * (moved / allowed);
+      // A curve meeting a line tangentially meets it with κ = 0.
+      if (line_before) cost += jump_cost(jump(ks, 0.0, limits.flat_curvature));
+      if (line_after) cost += jump_cost(jump(ke, 0.0, limits.flat_curvature));
+      // Where the grid allows only near zero, or a corner's handle moves, the cubic must not
+      // bend the other way near its end: an inflection the unrounded cubic does not have.
+      if (sign_changes(cubic) > ideal_changes) cost += wrong_way;
+      // Nor turn horizontal or vertical inside: an extremum without a node.
+      if (inner_axis_extrema(cubic) > ideal_extrema) cost += wrong_way;
+      c.k_start.push_back(ks), c.k_end.push_back(ke), c.cost.push_back(cost);
+    }
+  return c;
+}
+
+// The cheapest states of a run of cubics joined at smooth nodes; `first` fixes the first
+// cubic's state, and `closing` adds the join from the last cubic back to the first.
+struct RunChoice {
+  std::vector<std::size_t> states;
+  double cost = infeasible;
+};
+
+RunChoice best_run(const std::vector<CubicChoices>& run, double flat, std::optional<std::size_t> first, bool closing) {
+  const std::size_t n = run.size();
+  std::vector<std::vector<std::size_t>> back(n);
+  std::vector<double> cost(run[0].states(), infeasible);
+  for (std::size_t s = 0; s < cost.size(); ++s)
+    if (!first || *first == s) cost[s] = run[0].cost[s];
+  for (std::size_t k = 1; k < n; ++k) {
+    const CubicChoices &prev = run[k - 1], &cur = run[k];
+    std::vector<double> next(cur.states(), infeasible);
+    back[k].assign(cur.states(), 0);
+    for (std::size_t t = 0; t < cur.states(); ++t) {
+      if (cur.cost[t] == infeasible) continue;
+      for (std::size_t s = 0; s < prev.states(); ++s) {
+        if (cost[s] == infeasible) continue;
+        const double c = cost[s] + jump_cost(jump(prev.k_end[s], cur.k_start[t], flat));
+        if (c < next[t]) next[t] = c, back[k][t] = s;
+      }
+      next[t] += cur.cost[t];
+    }
+    cost = std::move(next);
+  }
+  RunChoice best;
+  for (std::size_t s = 0; s < cost.size(); ++s) {
+    double c = cost[s];
+    if (closing && c != infeasible) c += jump_cost(jump(run[n - 1].k_end[s], run[0].k_start[*first], flat));
+    if (c < best.cost) best.cost = c, best.states.assign(n, 0), best.states[n - 1] = s;
+  }
+  if (best.cost == infeasible) return best;
+  for (std::size_t k = n - 1; k > 0; --k) best.states[k - 1] = back[k][best.states[k]];
+  return best;
+}
+
+}  // namespace
+
+void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal,
+                         std::span<const std::optional<Vec2>> steps, bool closed, const HandleStepLimits& limits) {
+  const std::size_t n = nodes.size();
+  if (n < 2) return;
+  auto is_cubic = [&](std::size_t i) {
+    return (closed || i + 1 < n) && nodes[i].out_handle && nodes[(i + 1) % n].in_handle;
+  };
+  auto interior = [&](std::size_t i) { return closed || (i > 0 && i + 1 < n); };
+  // A smooth node between two cubics couples them; one between a cubic and a line wants κ = 0.
+  auto joins_cubics = [&](std::size_t i) {
+    return interior(i) && nodes[i].smooth && is_cubic(i) && is_cubic((i + n - 1) % n);
+  };
+  auto meets_line = [&](std::size_t i) {
+    return interior(i) && nodes[i].smooth && is_cubic(i) != is_cubic((i + n - 1) % n);
+  };
+
+  std::vector<std::size_t> starts;  // cubics that begin a run
+  bool any_cubic = false;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!is_cubic(i)) continue;
+    any_cubic = true;
+    if (!joins_cubics(i)) starts.push_back(i);
+  }
+  if (!any_cubic) return;
+  const bool cycle = starts.empty();
+  if (cycle) starts.push_back(0);
+
+  for (const std::size_t s : starts) {
+    std::vector<CubicChoices> run;
+    for (std::size_t i = s;;) {
+      const std::size_t j = (i + 1) % n;
+      run.push_back(cubic_choices(nodes, ideal, steps, i, j, limits, meets_line(i), meets_line(j)));
+      if (!joins_cubics(j) || (cycle && j == s)) break;
+      i = j;
+    }
+    RunChoice best;
+    if (cycle) {
+      for (std::size_t first = 0; first < run[0].states(); ++first) {
+        if (run[0].cost[first] == infeasible) continue;
+        RunChoice c = best_run(run, limits.flat_curvature, first, true);
+        if (c.cost < best.cost) best = std::move(c);
+      }
+    } else {
+      best = best_run(run, limits.flat_curvature, std::nullopt, false);
+    }
+    if (best.cost == infeasible) continue;
+    for (std::size_t k = 0; k < run.size(); ++k) {
+      const CubicChoices& c = run[k];
+      const std::size_t state = best.states[k];
+      nodes[c.start].out_handle = c.outs[state / c.ins.size()];
+      nodes[c.end].in_handle = c.ins[state % c.ins.size()];
+    }
+  }
+}
+
+}  // namespace gf
