@@ -5,7 +5,6 @@
 #include <numeric>
 
 #include "geom/curvature.hpp"
-#include "fair/handle_steps.hpp"
 #include "geom/g2_hermite.hpp"
 
 namespace gf {

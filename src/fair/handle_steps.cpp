@@ -13,7 +13,7 @@ namespace {
 
 constexpr int reach = 3;              // whole steps either way from the rounded length
 constexpr double target_jump = 0.03;  // below the check's 5 %, with room for its sampling
-constexpr double wrong_way = 1e4;   // an inflection the curve does not have costs more than any jump
+constexpr double wrong_way = 1e4;     // an inflection or extremum the unrounded cubic lacks
 constexpr double infeasible = std::numeric_limits<double>::infinity();
 
 double curvature_at(const Cubic& c, SegmentEnd end) { return end_curvature(c, end).curvature.value_or(0.0); }
