@@ -54,9 +54,20 @@ json summary_json(const CheckTotals& t) {
           {"median_total_variation", t.median_total_variation()}};
 }
 
-class TextWriter : public ReportWriter {
+// The line-by-line formats (text, Markdown): written as the glyphs come, flushed at the end.
+class StreamedWriter : public ReportWriter {
  public:
-  TextWriter(std::ostream& out, const CheckProfile& p) : out_(out), profile_(p) {}
+  StreamedWriter(std::ostream& out, const CheckProfile& p) : out_(out), profile_(p) {}
+  void finish(const CheckTotals&) override { out_.flush(); }
+
+ protected:
+  std::ostream& out_;
+  const CheckProfile& profile_;
+};
+
+class TextWriter : public StreamedWriter {
+ public:
+  using StreamedWriter::StreamedWriter;
   void begin_source(const SourceHeader& h) override {
     out_ << "glyphfair check: " << h.source << " (" << h.family << ", UPM " << fixed(h.units_per_em) << "), profile "
          << profile_.name << "\n";
@@ -78,11 +89,6 @@ class TextWriter : public ReportWriter {
   void end_source(const CheckTotals& t) override {
     out_ << "summary: " << counts_line(t) << "\n  " << per_check_line(t) << "\n\n";
   }
-  void finish(const CheckTotals&) override { out_.flush(); }
-
- private:
-  std::ostream& out_;
-  const CheckProfile& profile_;
 };
 
 class JsonWriter : public ReportWriter {
@@ -150,9 +156,9 @@ std::string markdown_cell(std::string s) {
   return out;
 }
 
-class MarkdownWriter : public ReportWriter {
+class MarkdownWriter : public StreamedWriter {
  public:
-  MarkdownWriter(std::ostream& out, const CheckProfile& p) : out_(out), profile_(p) {}
+  using StreamedWriter::StreamedWriter;
   void begin_source(const SourceHeader& h) override {
     out_ << "## glyphfair check: `" << markdown_cell(h.source) << "`\n\n" << markdown_cell(h.family) << ", UPM "
          << fixed(h.units_per_em) << ", profile `" << profile_.name << "`";
@@ -167,11 +173,6 @@ class MarkdownWriter : public ReportWriter {
   void end_source(const CheckTotals& t) override {
     out_ << "\n**Summary:** " << counts_line(t) << ". " << per_check_line(t) << ".\n\n";
   }
-  void finish(const CheckTotals&) override { out_.flush(); }
-
- private:
-  std::ostream& out_;
-  const CheckProfile& profile_;
 };
 
 }  // namespace

@@ -20,10 +20,6 @@ Vec2 stepped_handle(Vec2 node, Vec2 d, double sign, Vec2 from, Vec2 handle) {
   return node + d * (sign * m);
 }
 
-// Curvature where a cubic leaves its start or reaches its end (geom/curvature.hpp), 0 where
-// a retracted handle leaves it unbounded.
-double curvature_at(const Cubic& c, SegmentEnd end) { return end_curvature(c, end).curvature.value_or(0.0); }
-
 // A node's handles along the integer direction d: P − m_in d and P + m_out d.
 struct Choice {
   Vec2 point;
@@ -87,7 +83,7 @@ void resolve_handle_lengths(std::vector<OutlineNode>& nodes, const std::vector<O
     const Vec2 ta = *a.out_handle - a.point, tb = b.point - *b.in_handle;
     if (norm(ta) == 0.0 || norm(tb) == 0.0) continue;
     const Cubic ideal_cubic{fa.point, *fa.out_handle, *fb.in_handle, fb.point};
-    const double ka = curvature_at(ideal_cubic, SegmentEnd::start), kb = curvature_at(ideal_cubic, SegmentEnd::end);
+    const double ka = node_curvature(ideal_cubic, SegmentEnd::start), kb = node_curvature(ideal_cubic, SegmentEnd::end);
     const HermiteEnd start{a.point, ta / norm(ta), ka}, end{b.point, tb / norm(tb), kb};
     const double want_a = norm(*fa.out_handle - fa.point), want_b = norm(fb.point - *fb.in_handle);
     // Only a small correction: each handle within 10 % (and 2 units) of its length.

@@ -16,8 +16,6 @@ constexpr double target_jump = 0.03;  // below the check's 5 %, with room for it
 constexpr double wrong_way = 1e4;     // an inflection or extremum the unrounded cubic lacks
 constexpr double infeasible = std::numeric_limits<double>::infinity();
 
-double curvature_at(const Cubic& c, SegmentEnd end) { return end_curvature(c, end).curvature.value_or(0.0); }
-
 // The jump between two curvatures, relative to the larger unless both are flat.
 double jump(double k1, double k2, double flat) {
   return std::abs(k1 - k2) / std::max({std::abs(k1), std::abs(k2), flat});
@@ -94,7 +92,7 @@ CubicChoices cubic_choices(const std::vector<OutlineNode>& nodes, const std::vec
   for (const Vec2 out : c.outs)
     for (const Vec2 in : c.ins) {
       const Cubic cubic{p0, out, in, p3};
-      const double ks = curvature_at(cubic, SegmentEnd::start), ke = curvature_at(cubic, SegmentEnd::end);
+      const double ks = node_curvature(cubic, SegmentEnd::start), ke = node_curvature(cubic, SegmentEnd::end);
       const double moved = parametric_distance(cubic, unrounded);
       double cost = moved > allowed ? infeasible : 0.01 * (moved / allowed) * (moved / allowed);
       // A curve meeting a line tangentially meets it with κ = 0.
@@ -110,14 +108,14 @@ CubicChoices cubic_choices(const std::vector<OutlineNode>& nodes, const std::vec
   return c;
 }
 
-// The cheapest states of a run of cubics joined at smooth nodes; `first` fixes the first
-// cubic's state, and `closing` adds the join from the last cubic back to the first.
+// The cheapest states of a run of cubics joined at smooth nodes; `first`, for a run that
+// closes on itself, fixes the first cubic's state and adds the join from the last back to it.
 struct RunChoice {
   std::vector<std::size_t> states;
   double cost = infeasible;
 };
 
-RunChoice best_run(const std::vector<CubicChoices>& run, double flat, std::optional<std::size_t> first, bool closing) {
+RunChoice best_run(const std::vector<CubicChoices>& run, double flat, std::optional<std::size_t> first) {
   const std::size_t n = run.size();
   std::vector<std::vector<std::size_t>> back(n);
   std::vector<double> cost(run[0].states(), infeasible);
@@ -141,7 +139,7 @@ RunChoice best_run(const std::vector<CubicChoices>& run, double flat, std::optio
   RunChoice best;
   for (std::size_t s = 0; s < cost.size(); ++s) {
     double c = cost[s];
-    if (closing && c != infeasible) c += jump_cost(jump(run[n - 1].k_end[s], run[0].k_start[*first], flat));
+    if (first && c != infeasible) c += jump_cost(jump(run[n - 1].k_end[s], run[0].k_start[*first], flat));
     if (c < best.cost) best.cost = c, best.states.assign(n, 0), best.states[n - 1] = s;
   }
   if (best.cost == infeasible) return best;
@@ -190,11 +188,11 @@ void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<Outl
     if (cycle) {
       for (std::size_t first = 0; first < run[0].states(); ++first) {
         if (run[0].cost[first] == infeasible) continue;
-        RunChoice c = best_run(run, limits.flat_curvature, first, true);
+        RunChoice c = best_run(run, limits.flat_curvature, first);
         if (c.cost < best.cost) best = std::move(c);
       }
     } else {
-      best = best_run(run, limits.flat_curvature, std::nullopt, false);
+      best = best_run(run, limits.flat_curvature, std::nullopt);
     }
     if (best.cost == infeasible) continue;
     for (std::size_t k = 0; k < run.size(); ++k) {

@@ -16,4 +16,6 @@ Contour to_contour(const std::vector<OutlineNode>& nodes, bool closed) {
   return c;
 }
 
+double node_curvature(const Cubic& c, SegmentEnd end) { return end_curvature(c, end).curvature.value_or(0.0); }
+
 }  // namespace gf

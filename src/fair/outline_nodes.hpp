@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "geom/contour.hpp"
+#include "geom/curvature.hpp"
 
 namespace gf {
 
@@ -23,5 +24,9 @@ struct OutlineNode {
 /// Node i starts segment i: a cubic when node i has an out-handle and node i + 1 an in-handle,
 /// else a line. A closed contour's last segment returns to node 0.
 Contour to_contour(const std::vector<OutlineNode>& nodes, bool closed);
+
+/// Curvature where a cubic of the outline leaves its start or reaches its end
+/// (geom/curvature.hpp), 0 where a retracted handle leaves it unbounded.
+double node_curvature(const Cubic& c, SegmentEnd end);
 
 }  // namespace gf
