@@ -5,6 +5,7 @@
 #include "fair/glyph_fairing.hpp"
 #include "fair/initial_tangents.hpp"
 #include "geom/g2_hermite.hpp"
+#include "geom/smoothing_spline.hpp"
 #include "io/source.hpp"
 
 namespace gf {
@@ -43,6 +44,19 @@ void balanced_tangents_closed(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(balanced_tangents(pts, true, std::nullopt, std::nullopt));
 }
 BENCHMARK(balanced_tangents_closed)->Arg(8)->Arg(32);
+
+// The handwriting guide of one closed run: 600 points with 3-unit wobbles, within 5 units.
+void smoothing_spline_closed(benchmark::State& state) {
+  std::vector<Vec2> pts;
+  for (int i = 0; i < 600; ++i) {
+    const double t = 6.283185307179586 * i / 600.0;
+    const double r = 200.0 + 3.0 * std::sin(37.0 * t) * std::cos(11.0 * t);
+    pts.push_back({r * std::cos(t), r * std::sin(t)});
+  }
+  for (auto _ : state)
+    benchmark::DoNotOptimize(fit_smoothing_spline(pts, 5.0, static_cast<int>(state.range(0)), true));
+}
+BENCHMARK(smoothing_spline_closed)->Arg(20)->Arg(80)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace gf

@@ -69,7 +69,7 @@ int FairCommand::run() const {
   const Progress progress(isatty(STDERR_FILENO));
   const std::string name = fs::path(source_).filename().string();
 
-  std::size_t glyphs_faired = 0, contours_kept = 0, g1_nodes = 0;
+  std::size_t glyphs_faired = 0, contours_kept = 0, g1_nodes = 0, guide_stretches = 0;
   double deviation = 0.0, mismatch = 0.0;
   stream_glyphs<GlyphFairing>(
       source, chunk_size, progress, name, [&](const Glyph& g) { return fair_glyph(g, settings); },
@@ -80,6 +80,7 @@ int FairCommand::run() const {
         }
         contours_kept += r.kept.size();
         g1_nodes += static_cast<std::size_t>(r.g1_nodes);
+        guide_stretches += static_cast<std::size_t>(r.guide_stretches);
         ++glyphs_faired;
         deviation = std::max(deviation, r.deviation);
         mismatch = std::max(mismatch, r.max_curvature_mismatch);
@@ -100,7 +101,8 @@ int FairCommand::run() const {
   std::cerr << "glyphfair: " << name << ": " << glyphs_faired << " glyphs faired, " << contours_kept
             << " contours kept as they were; largest distance from the source " << deviation << " units (tolerance "
             << settings.tolerance_units << "); largest relative curvature mismatch left by a chain solve " << mismatch
-            << "; " << g1_nodes << " smooth nodes G1 only\n";
+            << "; " << g1_nodes << " smooth nodes G1 only; " << guide_stretches
+            << " spans written from the smoothing guide (no log-aesthetic chain within the budget)\n";
   return exit_code::ok;
 }
 

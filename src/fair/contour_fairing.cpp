@@ -69,6 +69,7 @@ struct Attempt {
   std::string failure;
   double mismatch = 0.0;
   int g1_nodes = 0;
+  int guide_stretches = 0;
 };
 
 Attempt fair_with_budgets(const ContourPlan& plan, const FairSettings& settings, Budgets budgets) {
@@ -90,6 +91,7 @@ Attempt fair_with_budgets(const ContourPlan& plan, const FairSettings& settings,
       a.failure = faired.reason;
       return a;
     }
+    a.guide_stretches += faired.guide_stretches;
     const bool start_smooth = !run.closed && run.start.kind == RunEndKind::line;
     for (std::size_t k = 0; k < faired.chains.size(); ++k) {
       const FairedChain& chain = faired.chains[k];
@@ -162,7 +164,7 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& settings)
   const double rounding = settings.round_to_integers ? 0.5 : 0.0;
   double available = std::max(settings.tolerance_units - rounding, 0.25 * settings.tolerance_units);
   for (int attempt = 0; attempt < 2; ++attempt, available *= 0.5) {
-    Attempt a = fair_with_budgets(plan, settings, {0.4 * available, 0.6 * available});
+    Attempt a = fair_with_budgets(plan, settings, {settings.chain_share * available, (1.0 - settings.chain_share) * available});
     if (!a.failure.empty()) {
       out.reason = a.failure;
       continue;
@@ -184,6 +186,7 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& settings)
       out.deviation = d;
       out.max_curvature_mismatch = a.mismatch;
       out.g1_nodes = a.g1_nodes;
+      out.guide_stretches = a.guide_stretches;
       return out;
     }
     out.reason = "the faired contour came out " + std::to_string(d) + " units from the source";

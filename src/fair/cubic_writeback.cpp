@@ -1,10 +1,12 @@
 #include "fair/cubic_writeback.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 #include <numbers>
 #include <numeric>
 
+#include "fair/run_reference.hpp"
 #include "geom/g2_hermite.hpp"
 #include "geom/polyline_distance.hpp"
 
@@ -14,6 +16,7 @@ namespace {
 
 constexpr int max_depth = 6;
 constexpr int cubic_samples = 48;
+constexpr double min_handle_fraction = 0.03;
 
 // Short primitive integer directions, |d|² ≤ `longest`: where a span must be cut, the cut goes
 // where the tangent runs along one of them, so rounding keeps the node's handles exactly
@@ -28,46 +31,102 @@ std::vector<Vec2> grid_directions(int longest) {
   return out;
 }
 
+// A stretch of the path that turns one way by less than a half turn: a log-aesthetic segment,
+// or a piece of a guide cut where its curvature changes sign and every quarter turn.
+struct PathPiece {
+  double length;
+  std::function<LacPoint(double)> at;           ///< by arc length from the piece's start
+  std::function<std::vector<LacPoint>(int)> sample;  ///< n + 1 points uniform in arc length
+};
+
+std::vector<PathPiece> lac_pieces(const std::vector<LogAestheticSegment>& segments) {
+  std::vector<PathPiece> out;
+  for (const LogAestheticSegment& seg : segments)
+    out.push_back({seg.length(), [&seg](double s) { return seg.at(s); }, [&seg](int n) { return seg.sample(n); }});
+  return out;
+}
+
+// The guide stretch in pieces, its end frames in place of the guide's own at its two ends.
+std::vector<PathPiece> guide_pieces(const GuideStretch& g, const RunReference& ref, bool whole_loop) {
+  const double length = g.s1 - g.s0;
+  const auto frame = [&ref, &g, length, whole_loop](double s) {
+    if (!whole_loop && s <= 0.0) return g.start;
+    if (!whole_loop && s >= length) return g.end;
+    return LacPoint{ref.point_at(g.s0 + s), ref.tangent_at(g.s0 + s), ref.curvature_at(g.s0 + s), 0.0};
+  };
+  std::vector<double> cuts{0.0};
+  const int steps = std::max(8, static_cast<int>(std::ceil(length)));
+  double last_sign = 0.0;
+  for (int k = 1; k < steps; ++k) {
+    const double s = length * k / steps;
+    const double sign = ref.curvature_at(g.s0 + s) > 0.0 ? 1.0 : -1.0;
+    const bool flips = last_sign != 0.0 && sign != last_sign;
+    const bool quarter = std::abs(ref.theta_at(g.s0 + s) - ref.theta_at(g.s0 + cuts.back())) > std::numbers::pi / 2;
+    if ((flips || quarter) && s - cuts.back() > 1.0) cuts.push_back(s);
+    last_sign = sign;
+  }
+  cuts.push_back(length);
+  std::vector<PathPiece> out;
+  for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
+    const double a = cuts[i], len = cuts[i + 1] - a;
+    out.push_back({len, [frame, a](double s) { return frame(a + s); }, [frame, a, len](int n) {
+                     std::vector<LacPoint> pts;
+                     for (int k = 0; k <= n; ++k) pts.push_back(frame(a + len * k / n));
+                     return pts;
+                   }});
+  }
+  return out;
+}
+
 // The chain as one curve in arc length σ (σ past the end wraps round a closed chain), with a
 // dense table of its points for distances.
 class ChainPath {
  public:
-  explicit ChainPath(const FairedChain& chain) : chain_(chain), n_(chain.segments.size()) {
+  explicit ChainPath(const FairedChain& chain) : closed_(chain.closed) {
+    if (chain.guide) {
+      guide_ref_.emplace(chain.guide->guide);
+      pieces_ = guide_pieces(*chain.guide, *guide_ref_, chain.closed);
+    } else {
+      pieces_ = lac_pieces(chain.segments);
+    }
+    n_ = pieces_.size();
     double start = 0.0;
-    for (const LogAestheticSegment& seg : chain.segments) {
+    for (const PathPiece& piece : pieces_) {
       starts_.push_back(start);
-      const int n = std::clamp(static_cast<int>(std::ceil(seg.length() / 2.0)), 16, 256);
-      const std::vector<LacPoint> pts = seg.sample(n);
-      for (int k = 0; k < n; ++k) table_.push_back({start + seg.length() * k / n, pts[static_cast<std::size_t>(k)].point});
-      start += seg.length();
+      const int n = std::clamp(static_cast<int>(std::ceil(piece.length / 2.0)), 16, 256);
+      const std::vector<LacPoint> pts = piece.sample(n);
+      for (int k = 0; k < n; ++k) table_.push_back({start + piece.length * k / n, pts[static_cast<std::size_t>(k)].point});
+      start += piece.length;
     }
     total_ = start;
-    const LacPoint end = chain.closed ? chain.segments.front().start() : chain.segments.back().end();
+    const LacPoint end = closed_ ? pieces_.front().at(0.0) : pieces_.back().at(pieces_.back().length);
     table_.push_back({total_, end.point});
   }
 
   double total() const { return total_; }
   std::size_t segment_count() const { return starts_.size(); }
   double segment_start(std::size_t i) const { return starts_[i]; }
+  const PathPiece& piece(std::size_t i) const { return pieces_[i]; }
 
   /// At a junction both sides agree: point and tangent (G1), curvature by with_mean_curvature.
   LacPoint at(double sigma) const {
     if (sigma > total_) sigma -= total_;  // a closed chain, past its seam
     std::size_t i = static_cast<std::size_t>(std::upper_bound(starts_.begin(), starts_.end(), sigma) - starts_.begin());
     i = i == 0 ? 0 : i - 1;
-    const LogAestheticSegment& seg = chain_.segments[i];
+    const PathPiece& piece = pieces_[i];
     const double local = sigma - starts_[i];
-    if (local <= 0.0) return with_mean_curvature(seg.start(), i == 0 ? (chain_.closed ? n_ - 1 : n_) : i - 1, false);
-    if (local >= seg.length()) return with_mean_curvature(seg.end(), i + 1 < n_ ? i + 1 : (chain_.closed ? 0 : n_), true);
-    return seg.at(local);
+    if (local <= 0.0) return with_mean_curvature(piece.at(0.0), i == 0 ? (closed_ ? n_ - 1 : n_) : i - 1, false);
+    if (local >= piece.length)
+      return with_mean_curvature(piece.at(piece.length), i + 1 < n_ ? i + 1 : (closed_ ? 0 : n_), true);
+    return piece.at(local);
   }
 
   // At a junction whose solve fell short of G2, both sides get the mean curvature, so the
   // cubics meeting there agree.
   LacPoint with_mean_curvature(LacPoint p, std::size_t other, bool other_starts) const {
     if (other >= n_) return p;
-    const LogAestheticSegment& o = chain_.segments[other];
-    p.curvature = 0.5 * (p.curvature + (other_starts ? o.start().curvature : o.end().curvature));
+    const PathPiece& o = pieces_[other];
+    p.curvature = 0.5 * (p.curvature + (other_starts ? o.at(0.0) : o.at(o.length)).curvature);
     return p;
   }
 
@@ -96,8 +155,10 @@ class ChainPath {
   }
 
  private:
-  const FairedChain& chain_;
-  std::size_t n_;
+  bool closed_;
+  std::optional<RunReference> guide_ref_;  // before pieces_, which refer to it
+  std::vector<PathPiece> pieces_;
+  std::size_t n_ = 0;
   std::vector<double> starts_;
   std::vector<std::pair<double, Vec2>> table_;
   double total_ = 0.0;
@@ -109,20 +170,20 @@ struct RequiredNode {
 };
 
 // Where the tangent is horizontal or vertical (each segment turns by less than π, monotonically).
-std::vector<RequiredNode> axis_extrema(const ChainPath& path, const FairedChain& chain) {
+std::vector<RequiredNode> axis_extrema(const ChainPath& path) {
   std::vector<RequiredNode> out;
   const double quarter = std::numbers::pi / 2;
-  for (std::size_t i = 0; i < chain.segments.size(); ++i) {
-    const LogAestheticSegment& seg = chain.segments[i];
-    const Vec2 t0 = seg.start().tangent;
+  for (std::size_t i = 0; i < path.segment_count(); ++i) {
+    const PathPiece& seg = path.piece(i);
+    const Vec2 t0 = seg.at(0.0).tangent;
     const double phi0 = angle_of(t0);
-    const double turn = turning_angle(t0, seg.end().tangent);
+    const double turn = turning_angle(t0, seg.at(seg.length).tangent);
     const double lo = std::min(phi0, phi0 + turn), hi = std::max(phi0, phi0 + turn);
     for (double k = std::ceil(lo / quarter); k * quarter <= hi; k += 1.0) {
       const double target = k * quarter - phi0;
       if (std::abs(target) < 1e-12 && i > 0) continue;  // the previous segment's end has it
       const double start = path.segment_start(i);
-      const double sigma = path.where_turned(start, start + seg.length(), target);
+      const double sigma = path.where_turned(start, start + seg.length, target);
       const Vec2 t = path.at(sigma).tangent;
       const Vec2 step = std::abs(t.x) > std::abs(t.y) ? Vec2{t.x > 0 ? 1.0 : -1.0, 0.0} : Vec2{0.0, t.y > 0 ? 1.0 : -1.0};
       out.push_back({sigma, step});
@@ -151,7 +212,10 @@ class SpanWriter {
     const std::vector<Vec2> lac = path_.points(a, b);
     std::optional<Cubic> best;
     double best_dev = 1e300;
+    const double chord = distance(pa.point, pb.point);
     for (const Cubic& c : g2_hermite_cubics({pa.point, pa.tangent, pa.curvature}, {pb.point, pb.tangent, pb.curvature})) {
+      // A handle much shorter than the chord crowds the curvature into the node.
+      if (std::min(distance(c.p[0], c.p[1]), distance(c.p[2], c.p[3])) < min_handle_fraction * chord) continue;
       const double d = cubic_deviation(c, lac);
       if (d < best_dev) best_dev = d, best = c;
     }
@@ -214,7 +278,7 @@ ChainCubics write_chain_as_cubics(const FairedChain& chain, double budget) {
   const double total = path.total();
   std::vector<RequiredNode> nodes;
   if (!chain.closed) nodes.push_back({0.0, std::nullopt});
-  for (const RequiredNode& e : axis_extrema(path, chain)) nodes.push_back(e);
+  for (const RequiredNode& e : axis_extrema(path)) nodes.push_back(e);
   if (!chain.closed) nodes.push_back({total, std::nullopt});
   std::sort(nodes.begin(), nodes.end(), [](const RequiredNode& a, const RequiredNode& b) { return a.sigma < b.sigma; });
   // An extremum within half a unit of another node is on that node already.

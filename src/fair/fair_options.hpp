@@ -23,7 +23,8 @@ struct FairOptions {
 ///                more was drawn as a corner);
 ///   handwriting: tolerance 1 % of the em; corners from 30° (fonts traced from scans break
 ///                their curves by 3–20° at many joins; a stroke end or a sharp turn of the pen
-///                turns by far more), and wobbles up to the tolerance smoothed away.
+///                turns by far more), and wobbles up to the tolerance smoothed away: each run
+///                is first replaced by the smoothest spline within 0.8 of the chain's budget.
 struct FairSettings {
   FairProfile profile = FairProfile::text;
   Continuity continuity = Continuity::g2;
@@ -36,6 +37,13 @@ struct FairSettings {
   /// |κ| (1/unit) of half a unit per em: flatter curves are compared by the difference of
   /// their curvatures, not the ratio (the check's g2-jump rule).
   double flat_curvature = 5e-4;
+  /// The share of the tolerance (after rounding's half unit) the log-aesthetic chain may use;
+  /// the cubics get the rest. Text 0.4; handwriting 0.7, where the chain follows a smoothed
+  /// guide and the cubics follow the chain closely.
+  double chain_share = 0.4;
+  /// Handwriting: how far the smoothing guide may stray from the source, as a share of the
+  /// chain's budget (0.8: as smooth as leaves the chain room to follow it).
+  double guide_share = 0.8;
 };
 
 FairSettings resolve_settings(const FairOptions& options, double units_per_em);

@@ -15,6 +15,7 @@ GlyphFairing fair_glyph(const Glyph& source, const FairSettings& settings) {
       out.deviation = std::max(out.deviation, c.deviation);
       out.max_curvature_mismatch = std::max(out.max_curvature_mismatch, c.max_curvature_mismatch);
       out.g1_nodes += c.g1_nodes;
+      out.guide_stretches += c.guide_stretches;
     } else {
       out.kept.push_back("contour " + std::to_string(i) + ": " + c.reason);
     }

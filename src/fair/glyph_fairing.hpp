@@ -17,6 +17,7 @@ struct GlyphFairing {
   double deviation = 0.0;  ///< largest over the faired contours, font units
   double max_curvature_mismatch = 0.0;
   int g1_nodes = 0;  ///< smooth nodes with G1 only
+  int guide_stretches = 0;  ///< spans written from the smoothing guide
 };
 
 GlyphFairing fair_glyph(const Glyph& source, const FairSettings& settings);

@@ -9,7 +9,7 @@
 #include "fair/initial_tangents.hpp"
 #include "fair/junctions.hpp"
 #include "fair/run_reference.hpp"
-#include "geom/bspline_fit.hpp"
+#include "geom/smoothing_spline.hpp"
 #include "geom/curvature.hpp"
 #include "geom/polyline_distance.hpp"
 
@@ -89,6 +89,7 @@ struct ChainOutcome {
   std::vector<double> cuts;   ///< arc lengths where the chain needs another junction
   std::vector<double> drops;  ///< junctions (by arc length) the chain cannot use
   double deviation = 0.0;
+  bool too_far = false;  ///< some piece strayed farther than the budget (else the cuts are for G2 or drawability)
   bool adjusts() const { return !cuts.empty() || !drops.empty(); }
 };
 
@@ -134,6 +135,15 @@ std::vector<double> missing_junctions(const ChainSpan& span, double L) {
   return {0.5 * (span.s[longest] + span.s[longest + 1])};
 }
 
+// The tangent an open span holds at its end s: the run's own at the run's ends (a line's, or
+// the guide's at a corner), else an inflection's, averaged over the window.
+Vec2 end_tangent_of(double s, const RunReference& ref, const SmoothRun& run, double w) {
+  if (!ref.closed() && s == 0.0) return run.start.tangent;
+  if (!ref.closed() && s == ref.length()) return run.end.tangent;
+  const Vec2 t = ref.mean_tangent(s, w);
+  return t / norm(t);
+}
+
 // The chain on the span's junctions, before any repair: points averaged over the window and
 // made to turn one way, balanced starting tangents, κ = 0 ends aimed, α from each piece's LCG.
 LacChain initial_chain(const ChainSpan& span, const RunReference& ref, const SmoothRun& run, double w, double budget) {
@@ -161,13 +171,8 @@ LacChain initial_chain(const ChainSpan& span, const RunReference& ref, const Smo
     }
   std::optional<double> start_angle, end_angle;
   if (!span.closed) {
-    auto fixed = [&](double s) {
-      if (!ref.closed() && s == 0.0) return angle_of(run.start.tangent);
-      if (!ref.closed() && s == L) return angle_of(run.end.tangent);
-      return angle_of(ref.mean_tangent(s, w));  // an inflection
-    };
-    start_angle = fixed(span.s.front());
-    end_angle = fixed(span.s.back());
+    start_angle = angle_of(end_tangent_of(span.s.front(), ref, run, w));
+    end_angle = angle_of(end_tangent_of(span.s.back(), ref, run, w));
   }
   chain.tangent_angles = balanced_tangents(chain.points, chain.closed, start_angle, end_angle, span.zero_start, span.zero_end);
   // A κ = 0 end needs the segment's other end to turn more than twice as much as its chord
@@ -277,7 +282,7 @@ void check_fidelity(const std::vector<LogAestheticSegment>& built, const ChainSp
       }
     const double d = std::max(directed_hausdorff(lac[i], near), directed_hausdorff(own, around));
     out.deviation = std::max(out.deviation, d);
-    if (d > budget) out.cuts.push_back(0.5 * (s0 + s1));
+    if (d > budget) out.cuts.push_back(0.5 * (s0 + s1)), out.too_far = true;
   }
 }
 
@@ -325,14 +330,24 @@ ChainOutcome fair_chain(const ChainSpan& span, const RunReference& ref, const Ru
 }
 
 // Handwriting traced from scans wobbles at every scale below the tolerance: the junctions and
-// the chain are built on a guide, the least-squares cubic B-spline of the run with the fewest
-// spans within half the budget (seed 000 [0038]–[0045]), while fidelity is measured
-// against the source itself. A professional outline is its own guide.
-SmoothRun guide_for(const SmoothRun& run, const RunReference& source, double tolerance) {
+// the chain are built on a guide, the smoothest cubic spline of the run within `tolerance` of
+// it (geom/smoothing_spline; one span per half feature window), while fidelity is measured
+// against the source itself. A line's tangent is held at its end; a corner's is the guide's.
+// None when no spline comes within the tolerance; a professional outline is its own guide.
+std::optional<SmoothRun> guide_for(const SmoothRun& run, const RunReference& source, double tolerance, double window) {
+  const double L = source.length();
+  const int count = std::clamp(static_cast<int>(L / 1.5), 40, 1200);
   std::vector<Vec2> points;
-  for (const ReferenceSample& r : source.samples()) points.push_back(r.point);
-  const BSplineFit fit = fit_cubic_bspline_within(points, tolerance, run.closed);
-  if (fit.spans.empty() || fit.max_residual > tolerance) return run;
+  for (int i = 0; i <= count; ++i) {
+    if (run.closed && i == count) break;
+    points.push_back(source.point_at(L * i / count));
+  }
+  SmoothingEnds ends;
+  if (!run.closed && run.start.kind == RunEndKind::line) ends.start_tangent = run.start.tangent;
+  if (!run.closed && run.end.kind == RunEndKind::line) ends.end_tangent = run.end.tangent;
+  const int spans = std::clamp(static_cast<int>(std::ceil(L / (0.5 * window))), run.closed ? 4 : 1, 80);
+  const BSplineFit fit = fit_smoothing_spline(points, tolerance, spans, run.closed, ends);
+  if (fit.spans.empty() || fit.max_residual > 1.05 * tolerance) return std::nullopt;
   SmoothRun guide = run;
   guide.cubics = fit.spans;
   if (!run.closed) {
@@ -342,28 +357,64 @@ SmoothRun guide_for(const SmoothRun& run, const RunReference& source, double tol
   return guide;
 }
 
+// Where no chain within the budget exists for a span of a guided run: the guide itself over
+// the span, between the frames a chain would have had there (so its neighbours join it G2).
+FairedChain guide_stretch(const ChainSpan& span, const RunReference& ref, const SmoothRun& guide_run, double w) {
+  FairedChain chain;
+  chain.closed = span.closed;
+  GuideStretch g;
+  g.guide = guide_run;
+  if (span.closed) {
+    g.s0 = 0.0, g.s1 = ref.length();
+  } else {
+    g.s0 = span.s.front(), g.s1 = span.s.back();
+    const auto frame = [&](double s, bool zero) {
+      return LacPoint{ref.mean_point(s, w), end_tangent_of(s, ref, guide_run, w), zero ? 0.0 : ref.curvature_at(s), 0.0};
+    };
+    g.start = frame(g.s0, span.zero_start);
+    g.end = frame(g.s1, span.zero_end);
+    chain.zero_curvature_start = span.zero_start;
+    chain.zero_curvature_end = span.zero_end;
+  }
+  chain.guide = std::move(g);
+  return chain;
+}
+
 }  // namespace
 
 FairedRun fair_run(const SmoothRun& run, const FairSettings& settings, double budget) {
   FairedRun result;
   const RunReference source(run);
-  const bool smooth_first = settings.profile == FairProfile::handwriting;
-  const SmoothRun guide_run = smooth_first ? guide_for(run, source, budget * 0.5) : run;
+  const std::optional<SmoothRun> guide = settings.profile == FairProfile::handwriting
+                                             ? guide_for(run, source, budget * settings.guide_share, settings.feature_window_units)
+                                             : std::nullopt;
+  const SmoothRun& guide_run = guide ? *guide : run;
   const RunReference guide_ref(guide_run);
-  const RunReference& ref = smooth_first ? guide_ref : source;
+  const RunReference& ref = guide ? guide_ref : source;
   const double L = ref.length();
   std::vector<Junction> junctions = select_junctions(ref, !run.closed && run.start.kind == RunEndKind::line,
                                                      !run.closed && run.end.kind == RunEndKind::line,
                                                      junction_options(settings));
+  bool too_far = false;
   for (int round = 0; round < max_rounds; ++round) {
     std::vector<double> cuts, drops;
+    too_far = false;
     result.chains.clear();
+    result.guide_stretches = 0;
     result.deviation = 0.0;
     for (const ChainSpan& span : chain_spans(junctions, ref, run)) {
       // After half the rounds, a chain whose solve stalls is kept with its best angles; the
       // cubic writeback then meets the mean curvature at its junctions (G2 in the output).
       ChainOutcome o = fair_chain(span, ref, source, guide_run, settings, budget, round >= max_rounds / 2);
       result.deviation = std::max(result.deviation, o.deviation);
+      too_far = too_far || o.too_far;
+      // A guided span with no chain when the rounds run out (or none to be had) is the guide.
+      const bool last_round = round + 1 == max_rounds || !o.adjusts();
+      if (!o.chain && guide && last_round) {
+        o = ChainOutcome{};
+        o.chain = guide_stretch(span, ref, guide_run, settings.feature_window_units);
+        ++result.guide_stretches;
+      }
       if (o.chain) result.chains.push_back(std::move(*o.chain));
       else if (!o.adjusts()) {
         result.reason = "no feasible G2 chain";
@@ -381,8 +432,9 @@ FairedRun fair_run(const SmoothRun& run, const FairSettings& settings, double bu
     for (const double c : cuts) junctions.push_back({c, JunctionKind::split});
     std::sort(junctions.begin(), junctions.end(), [](const Junction& a, const Junction& b) { return a.s < b.s; });
   }
-  result.reason = "still " + std::to_string(result.deviation) + " units from the source after " +
-                  std::to_string(max_rounds) + " rounds of refinement";
+  result.reason = (too_far ? "still " + std::to_string(result.deviation) + " units from the source"
+                           : std::string("no drawable G2 chain on the junctions")) +
+                  " after " + std::to_string(max_rounds) + " rounds of refinement";
   return result;
 }
 

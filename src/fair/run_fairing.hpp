@@ -4,6 +4,7 @@
 // than the budget from the source cut again and refitted.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,10 +14,21 @@
 
 namespace gf {
 
+/// A stretch of a run's smoothing guide between two frames: what a span of a handwriting run
+/// becomes when no chain of log-aesthetic segments within the budget exists for it. The guide
+/// is C2, so the stretch is G2 throughout; its end frames are the ones its neighbouring chains
+/// have, so the joins are G2 too.
+struct GuideStretch {
+  SmoothRun guide;       ///< the whole run's guide
+  double s0 = 0.0, s1 = 0.0;  ///< arc lengths along it (s1 may pass the seam of a closed guide)
+  LacPoint start, end;   ///< the frames at its ends (ignored when the stretch is the whole closed guide)
+};
+
 /// Consecutive segments with G2 junctions (when solved). Open chains end at the run's ends or
 /// at inflections; a closed chain is the whole closed run.
 struct FairedChain {
   std::vector<LogAestheticSegment> segments;
+  std::optional<GuideStretch> guide;  ///< instead of segments, where no chain was found
   bool closed = false;
   bool zero_curvature_start = false, zero_curvature_end = false;
   double max_mismatch_relative = 0.0;  ///< max |Δκ| / max |κ| over its junctions
@@ -25,6 +37,7 @@ struct FairedChain {
 struct FairedRun {
   std::vector<FairedChain> chains;  ///< in order along the run
   double deviation = 0.0;           ///< two-sided Hausdorff bound against the source run, font units
+  int guide_stretches = 0;           ///< spans written from the guide (no chain within the budget)
   bool ok = false;
   std::string reason;  ///< why not, when not
 };

@@ -9,7 +9,7 @@ namespace gf {
 
 namespace {
 
-Vec2 tangent_at(const Cubic& c, double t) {
+Vec2 cubic_tangent(const Cubic& c, double t) {
   if (t == 0.0) return *end_tangent(c, SegmentEnd::start);
   if (t == 1.0) return *end_tangent(c, SegmentEnd::end);
   const Vec2 d = derivatives_at(c, t).d1;
@@ -26,7 +26,7 @@ RunReference::RunReference(const SmoothRun& run, int samples_per_cubic) : cubics
     const Cubic& c = cubics_[i];
     for (int k = 0; k <= samples_per_cubic; ++k) {
       const double t = static_cast<double>(k) / samples_per_cubic;
-      const Vec2 p = c.point_at(t), tangent = tangent_at(c, t);
+      const Vec2 p = c.point_at(t), tangent = cubic_tangent(c, t);
       if (samples_.empty()) {
         theta = angle_of(tangent);
       } else {
@@ -38,7 +38,7 @@ RunReference::RunReference(const SmoothRun& run, int samples_per_cubic) : cubics
     }
   }
   if (closed_) {  // close the loop: the seam's break and chord
-    const Vec2 p = cubics_.front().p[0], tangent = tangent_at(cubics_.front(), 0.0);
+    const Vec2 p = cubics_.front().p[0], tangent = cubic_tangent(cubics_.front(), 0.0);
     s += distance(samples_.back().point, p);
     theta += turning_angle(last_tangent, tangent);
     samples_.push_back({s, p, theta, 0, 0.0});
@@ -66,6 +66,21 @@ Vec2 RunReference::point_at(double s) const {
   const ReferenceSample &a = samples_[i], &b = samples_[i + 1];
   if (a.cubic == b.cubic && b.t > a.t) return cubics_[a.cubic].point_at(a.t + f * (b.t - a.t));
   return lerp(a.point, b.point, f);
+}
+
+Vec2 RunReference::tangent_at(double s) const {
+  const double theta = theta_at(s);
+  return {std::cos(theta), std::sin(theta)};
+}
+
+double RunReference::curvature_at(double s) const {
+  const auto [i, f] = bracket(wrap(s));
+  const ReferenceSample &a = samples_[i], &b = samples_[i + 1];
+  const bool same = a.cubic == b.cubic && b.t > a.t;
+  const ReferenceSample& nearest = f < 0.5 ? a : b;
+  const std::optional<double> k = same ? curvature(derivatives_at(cubics_[a.cubic], a.t + f * (b.t - a.t)))
+                                        : curvature(derivatives_at(cubics_[nearest.cubic], nearest.t));
+  return k && std::isfinite(*k) ? *k : 0.0;
 }
 
 double RunReference::theta_at(double s) const {

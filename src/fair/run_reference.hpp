@@ -31,6 +31,10 @@ class RunReference {
 
   /// The exact source point at arc length s (wrapped for a closed run).
   Vec2 point_at(double s) const;
+  /// The unit tangent at s (from θ).
+  Vec2 tangent_at(double s) const;
+  /// The exact curvature of the source cubic at s (0 where a retracted handle leaves it unbounded).
+  double curvature_at(double s) const;
   /// θ at s, continued across the seam of a closed run (θ(s + L) = θ(s) + total turning).
   double theta_at(double s) const;
   /// The mean curvature over [s − w/2, s + w/2]: (θ(s + w/2) − θ(s − w/2)) / w, the window

@@ -5,48 +5,9 @@
 
 #include <Eigen/Dense>
 
+#include "geom/bspline_basis.hpp"
+
 namespace gf {
-
-namespace {
-
-// Cubic B-spline basis on the clamped uniform knot vector of `spans` spans (Cox–de Boor).
-struct Basis {
-  std::vector<double> knots;
-  int count;  // spans + 3 basis functions
-
-  explicit Basis(int spans) : count(spans + 3) {
-    for (int i = 0; i < 4; ++i) knots.push_back(0.0);
-    for (int i = 1; i < spans; ++i) knots.push_back(double(i) / spans);
-    for (int i = 0; i < 4; ++i) knots.push_back(1.0);
-  }
-
-  int span_of(double u) const {
-    const int spans = count - 3;
-    return std::clamp(static_cast<int>(u * spans), 0, spans - 1) + 3;
-  }
-
-  // The four non-zero basis values at u and the index of the first.
-  std::array<double, 4> values(double u, int& first) const {
-    const int k = span_of(u);
-    first = k - 3;
-    std::array<double, 4> n{1.0, 0.0, 0.0, 0.0};
-    std::array<double, 4> left{}, right{};
-    for (int j = 1; j <= 3; ++j) {
-      left[j] = u - knots[k + 1 - j];
-      right[j] = knots[k + j] - u;
-      double saved = 0.0;
-      for (int r = 0; r < j; ++r) {
-        const double temp = n[r] / (right[r + 1] + left[j - r]);
-        n[r] = saved + right[r + 1] * temp;
-        saved = left[j - r] * temp;
-      }
-      n[j] = saved;
-    }
-    return n;
-  }
-};
-
-}  // namespace
 
 BSplineFit fit_cubic_bspline(std::span<const Vec2> points, int span_count, bool closed) {
   BSplineFit fit;
@@ -57,28 +18,12 @@ BSplineFit fit_cubic_bspline(std::span<const Vec2> points, int span_count, bool 
   if (u.back() == 0.0) return fit;
   for (double& v : u) v /= u.back();
 
-  const Basis basis(span_count);
-  const int n = basis.count;
+  const BSplineBasis basis(span_count, false);
+  const int n = basis.control_count();
   std::vector<Vec2> control(static_cast<std::size_t>(n));
-  const auto evaluate = [&](double t) {
-    int first = 0;
-    const auto values = basis.values(t, first);
-    Vec2 p{};
-    for (int k = 0; k < 4; ++k) p += control[first + k] * values[k];
-    return p;
-  };
-  // Each span is a cubic polynomial: its Bézier form from four of its points (exact).
   const auto to_spans = [&] {
     fit.spans.clear();
-    for (int s = 0; s < span_count; ++s) {
-      const double a0 = double(s) / span_count, a1 = double(s + 1) / span_count;
-      const Vec2 q0 = evaluate(a0), q1 = evaluate(a0 + (a1 - a0) / 3.0), q2 = evaluate(a0 + 2.0 * (a1 - a0) / 3.0),
-                 q3 = evaluate(a1);
-      // B(1/3) = q1 and B(2/3) = q2: [4/9 2/9; 2/9 4/9] [c1; c2] = [r1; r2].
-      const Vec2 r1 = q1 - q0 * (8.0 / 27.0) - q3 * (1.0 / 27.0);
-      const Vec2 r2 = q2 - q0 * (1.0 / 27.0) - q3 * (8.0 / 27.0);
-      fit.spans.push_back(Cubic{q0, (r1 * 4.0 - r2 * 2.0) * 0.75, (r2 * 4.0 - r1 * 2.0) * 0.75, q3});
-    }
+    for (int s = 0; s < span_count; ++s) fit.spans.push_back(basis.span_cubic(control, s));
   };
   // Least squares for the controls with the end conditions as constraints, solved with
   // Lagrange multipliers (the KKT system [2AᵀA Cᵀ; C 0] [c; λ] = [2Aᵀb; d]): the clamped ends
@@ -91,9 +36,8 @@ BSplineFit fit_cubic_bspline(std::span<const Vec2> points, int span_count, bool 
     Eigen::MatrixXd a = Eigen::MatrixXd::Zero(m, n);
     Eigen::MatrixXd rhs(m, 2);
     for (int i = 0; i < m; ++i) {
-      int first = 0;
-      const auto values = basis.values(u[i], first);
-      for (int k = 0; k < 4; ++k) a(i, first + k) = values[k];
+      const BSplineBasis::Weights w = basis.at(u[i]);
+      for (int k = 0; k < 4; ++k) a(i, w.first + k) = w.w[k];
       rhs(i, 0) = points[i].x;
       rhs(i, 1) = points[i].y;
     }
@@ -125,7 +69,7 @@ BSplineFit fit_cubic_bspline(std::span<const Vec2> points, int span_count, bool 
       if (std::isfinite(step)) u[i] = std::clamp(u[i] - step / span_count, 0.0, 1.0);
     }
   }
-  for (int i = 0; i < m; ++i) fit.max_residual = std::max(fit.max_residual, distance(evaluate(u[i]), points[i]));
+  for (int i = 0; i < m; ++i) fit.max_residual = std::max(fit.max_residual, distance(basis.point_at(control, u[i]), points[i]));
   return fit;
 }
 

@@ -1,0 +1,209 @@
+#include "geom/smoothing_spline.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "geom/bspline_basis.hpp"
+
+namespace gf {
+
+namespace {
+
+// A control point as origin + Σ z[var] · direction: free (x and y), held to a line through an
+// end point (one unknown along the end tangent), or fixed (an interpolated end).
+struct Control {
+  Vec2 origin{};
+  int var = -1;
+  int unknowns = 0;
+  Vec2 direction{};
+  template <class F>
+  void for_each_unknown(F&& f) const {
+    if (unknowns == 2) f(var, Vec2{1.0, 0.0}), f(var + 1, Vec2{0.0, 1.0});
+    else if (unknowns == 1) f(var, direction);
+  }
+};
+
+// Normal equations of Σ scale·|Σ_k w_k c_k − target|² in the unknowns.
+struct Normal {
+  Eigen::MatrixXd h;
+  Eigen::VectorXd g;
+  explicit Normal(int n) : h(Eigen::MatrixXd::Zero(n, n)), g(Eigen::VectorXd::Zero(n)) {}
+  void add(const std::vector<Control>& controls, std::span<const int> index, std::span<const double> w, Vec2 target) {
+    Vec2 rest = target;
+    for (std::size_t k = 0; k < index.size(); ++k) rest -= controls[index[k]].origin * w[k];
+    for (std::size_t k = 0; k < index.size(); ++k)
+      controls[index[k]].for_each_unknown([&](int a, Vec2 va) {
+        g[a] += w[k] * dot(va, rest);
+        for (std::size_t l = 0; l < index.size(); ++l)
+          controls[index[l]].for_each_unknown([&](int b, Vec2 vb) { h(a, b) += w[k] * w[l] * dot(va, vb); });
+      });
+  }
+};
+
+class SmoothingProblem {
+ public:
+  SmoothingProblem(std::span<const Vec2> points, int spans, bool closed, const SmoothingEnds& ends)
+      : points_(points), basis_(spans, closed) {
+    const int n = basis_.control_count();
+    controls_.resize(static_cast<std::size_t>(n));
+    int unknowns = 0;
+    for (int j = 0; j < n; ++j) {
+      Control& c = controls_[static_cast<std::size_t>(j)];
+      if (!closed && (j == 0 || j == n - 1)) {
+        c.origin = j == 0 ? points.front() : points.back();
+        continue;
+      }
+      const bool start_held = !closed && j == 1 && ends.start_tangent && norm(*ends.start_tangent) > 0.0;
+      const bool end_held = !closed && j == n - 2 && ends.end_tangent && norm(*ends.end_tangent) > 0.0;
+      if (start_held || end_held) {
+        const Vec2 t = start_held ? *ends.start_tangent : -*ends.end_tangent;
+        c.origin = start_held ? points.front() : points.back();
+        c.direction = t / norm(t);
+        c.unknowns = 1;
+      } else {
+        c.unknowns = 2;
+      }
+      c.var = unknowns;
+      unknowns += c.unknowns;
+    }
+    unknowns_ = unknowns;
+    // The penalty: each span's third derivative p3 − 3p2 + 3p1 − p0 of its Bézier form (constant
+    // on the span), as weights on the span's four controls. On periodic knots these are the
+    // third differences of the controls; the clamped end spans differ.
+    penalty_ = Normal(unknowns_);
+    std::vector<Vec2> unit(static_cast<std::size_t>(n));
+    for (int s = 0; s < spans; ++s) {
+      const int first = basis_.at((s + 0.5) / spans).first;
+      int index[4];
+      double w[4];
+      for (int k = 0; k < 4; ++k) {
+        index[k] = basis_.control(first + k);
+        unit[static_cast<std::size_t>(index[k])] = {1.0, 0.0};
+        const Cubic c = basis_.span_cubic(unit, s);
+        unit[static_cast<std::size_t>(index[k])] = {};
+        w[k] = (c.p[3] - 3.0 * c.p[2] + 3.0 * c.p[1] - c.p[0]).x;
+      }
+      penalty_.add(controls_, index, w, {});
+    }
+    // Chord-length parameters (a closed sequence's closing chord included).
+    u_.assign(points.size(), 0.0);
+    for (std::size_t i = 1; i < points.size(); ++i) u_[i] = u_[i - 1] + distance(points[i], points[i - 1]);
+    const double total = u_.back() + (closed ? distance(points.back(), points.front()) : 0.0);
+    for (double& v : u_) v /= total;
+  }
+
+  int unknowns() const { return unknowns_; }
+
+  void fit_data() {
+    data_ = Normal(unknowns_);
+    for (std::size_t i = 0; i < points_.size(); ++i) {
+      const BSplineBasis::Weights w = basis_.at(u_[i]);
+      const int index[4] = {basis_.control(w.first), basis_.control(w.first + 1), basis_.control(w.first + 2),
+                            basis_.control(w.first + 3)};
+      data_.add(controls_, index, w.w, points_[i]);
+    }
+    scale_ = data_.h.trace() / std::max(penalty_.h.trace(), 1e-300);
+  }
+
+  /// The controls for λ = 10^e relative to the data's own weight.
+  std::vector<Vec2> solve(double e) const {
+    const double lambda = std::pow(10.0, e) * scale_;
+    const Eigen::MatrixXd h = data_.h + lambda * penalty_.h;
+    const Eigen::VectorXd g = data_.g + lambda * penalty_.g;
+    Eigen::VectorXd z = h.ldlt().solve(g);
+    std::vector<Vec2> c;
+    for (const Control& k : controls_) {
+      Vec2 p = k.origin;
+      k.for_each_unknown([&](int a, Vec2 v) { p += v * z[a]; });
+      c.push_back(p);
+    }
+    return c;
+  }
+
+  std::vector<Cubic> spans(std::span<const Vec2> controls) const {
+    std::vector<Cubic> out;
+    for (int s = 0; s < basis_.spans(); ++s) out.push_back(basis_.span_cubic(controls, s));
+    return out;
+  }
+
+  /// Each point's foot on the curve (Newton from its parameter) and the largest distance.
+  double project(std::span<const Cubic> spans, std::vector<double>& feet) const {
+    const int count = basis_.spans();
+    feet = u_;
+    double worst = 0.0;
+    for (std::size_t i = 0; i < points_.size(); ++i) {
+      double u = feet[i];
+      Vec2 d{};
+      for (int step = 0; step < 4; ++step) {
+        if (basis_.periodic()) u -= std::floor(u);
+        const int s = std::clamp(static_cast<int>(u * count), 0, count - 1);
+        const Cubic& c = spans[static_cast<std::size_t>(s)];
+        const double t = u * count - s;
+        const auto h1 = c.hodograph();
+        const Vec2 d1 = h1.point_at(t), d2 = h1.hodograph().point_at(t);
+        d = c.point_at(t) - points_[i];
+        const double move = dot(d, d1) / (dot(d1, d1) + dot(d, d2));
+        if (!std::isfinite(move) || step == 3) break;
+        u = basis_.periodic() ? u - move / count : std::clamp(u - move / count, 0.0, 1.0);
+      }
+      if (basis_.periodic()) u -= std::floor(u);
+      feet[i] = u;
+      worst = std::max(worst, norm(d));
+    }
+    return worst;
+  }
+
+  void move_parameters(std::vector<double> feet) { u_ = std::move(feet); }
+
+ private:
+  std::span<const Vec2> points_;
+  BSplineBasis basis_;
+  std::vector<Control> controls_;
+  int unknowns_ = 0;
+  std::vector<double> u_;
+  Normal data_{0}, penalty_{0};
+  double scale_ = 1.0;
+};
+
+}  // namespace
+
+BSplineFit fit_smoothing_spline(std::span<const Vec2> points, double tolerance, int span_count, bool closed,
+                                const SmoothingEnds& ends) {
+  BSplineFit fit;
+  if (closed && points.size() > 1 && points.back() == points.front()) points = points.first(points.size() - 1);
+  const int m = static_cast<int>(points.size());
+  const int spans = std::min(span_count, m - 3);
+  if (spans < (closed ? 4 : 1)) return fit;
+  SmoothingProblem problem(points, spans, closed, ends);
+  // log10 λ (relative): low smoothing to high; each round narrows around the last choice.
+  double lo = -8.0, hi = 4.0, chosen = lo;
+  std::vector<double> feet, best_feet;
+  for (int round = 0; round < 3; ++round) {
+    problem.fit_data();
+    const int steps = round == 0 ? 14 : 8;
+    bool any = false;
+    for (int k = 0; k < steps; ++k) {
+      const double e = 0.5 * (lo + hi);
+      const std::vector<Vec2> c = problem.solve(e);
+      if (problem.project(problem.spans(c), feet) <= tolerance) lo = e, any = true, best_feet = feet;
+      else hi = e;
+    }
+    chosen = lo;
+    if (!any) {
+      const std::vector<Vec2> c = problem.solve(lo);
+      problem.project(problem.spans(c), best_feet);
+    }
+    problem.move_parameters(best_feet);
+    lo = chosen - 1.5, hi = chosen + 1.5;
+  }
+  problem.fit_data();
+  const std::vector<Vec2> c = problem.solve(chosen);
+  fit.spans = problem.spans(c);
+  fit.max_residual = problem.project(fit.spans, feet);
+  return fit;
+}
+
+}  // namespace gf

@@ -1,0 +1,28 @@
+// The fairest cubic B-spline within a distance of a point sequence: least squares plus
+// λ·Σ|Δ³c|² over the control points, with λ as large as keeps every point within the
+// tolerance. On uniform knots Δ³c is the spline's third derivative on a span, so the penalty is
+// a discrete ∫|r'''|², which grows with the change of curvature: wobbles go first, the drawn
+// shape stays. The fairing of handwriting builds on it (seed 000 [0038]–[0045] fits a spline
+// to the pen's points; this one also smooths them).
+#pragma once
+
+#include <optional>
+#include <span>
+
+#include "geom/bspline_fit.hpp"
+
+namespace gf {
+
+struct SmoothingEnds {
+  std::optional<Vec2> start_tangent, end_tangent;  ///< held when given (open sequences only)
+};
+
+/// `span_count` uniform spans (reduced when there are too few points). Open: clamped knots,
+/// the end points interpolated. Closed (the first point not repeated at the end): periodic
+/// knots, C2 everywhere, no seam. λ is found by bisection on log λ with the points'
+/// parameters corrected to their feet on the curve; max_residual is the largest distance of a
+/// point from the curve, above `tolerance` only when even the least smoothing exceeds it.
+BSplineFit fit_smoothing_spline(std::span<const Vec2> points, double tolerance, int span_count, bool closed,
+                                const SmoothingEnds& ends = {});
+
+}  // namespace gf
