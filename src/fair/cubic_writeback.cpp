@@ -1,8 +1,8 @@
 #include "fair/cubic_writeback.hpp"
 
 #include <algorithm>
-#include <functional>
 #include <cmath>
+#include <functional>
 #include <numbers>
 #include <numeric>
 
@@ -102,6 +102,8 @@ class ChainPath {
     const LacPoint end = closed_ ? pieces_.front().at(0.0) : pieces_.back().at(pieces_.back().length);
     table_.push_back({total_, end.point});
   }
+  ChainPath(const ChainPath&) = delete;  // the pieces refer to guide_ref_
+  ChainPath& operator=(const ChainPath&) = delete;
 
   double total() const { return total_; }
   std::size_t segment_count() const { return starts_.size(); }
