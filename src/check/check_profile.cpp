@@ -1,5 +1,7 @@
 #include "check/check_profile.hpp"
 
+#include <utility>
+
 namespace gf {
 
 const char* to_string(Severity s) {
@@ -11,10 +13,26 @@ const char* to_string(Severity s) {
   return "info";
 }
 
+namespace {
+
+// Every check in report order, with its severity for professional text fonts.
+constexpr std::pair<const char*, Severity> checks[] = {
+    {"open-contour", Severity::error},         {"wrong-direction", Severity::error},
+    {"duplicate-point", Severity::error},      {"kink", Severity::error},
+    {"g2-jump", Severity::warning},            {"missing-extremum", Severity::warning},
+    {"wobble", Severity::warning},             {"inflection-in-segment", Severity::info},
+    {"short-segment", Severity::warning},      {"zero-handle", Severity::warning},
+    {"collinear-handles", Severity::warning},  {"semi-horizontal", Severity::warning},
+    {"semi-vertical", Severity::warning}};
+
+}  // namespace
+
 const std::vector<std::string>& check_ids() {
-  static const std::vector<std::string> ids{
-      "open-contour", "wrong-direction", "duplicate-point", "kink", "g2-jump", "missing-extremum", "wobble",
-      "inflection-in-segment", "short-segment", "zero-handle", "collinear-handles", "semi-horizontal", "semi-vertical"};
+  static const std::vector<std::string> ids = [] {
+    std::vector<std::string> out;
+    for (const auto& [id, severity] : checks) out.emplace_back(id);
+    return out;
+  }();
   return ids;
 }
 
@@ -26,13 +44,7 @@ Severity CheckProfile::severity_of(const std::string& check) const {
 std::optional<CheckProfile> check_profile(const std::string& name) {
   CheckProfile p;
   p.name = name;
-  p.severity = {{"open-contour", Severity::error},      {"wrong-direction", Severity::error},
-                {"duplicate-point", Severity::error},   {"kink", Severity::error},
-                {"g2-jump", Severity::warning},         {"missing-extremum", Severity::warning},
-                {"wobble", Severity::warning},          {"inflection-in-segment", Severity::info},
-                {"short-segment", Severity::warning},   {"zero-handle", Severity::warning},
-                {"collinear-handles", Severity::warning}, {"semi-horizontal", Severity::warning},
-                {"semi-vertical", Severity::warning}};
+  for (const auto& [id, severity] : checks) p.severity[id] = severity;
   if (name == "text") return p;
   if (name != "handwriting") return std::nullopt;
   // Traced and pen-drawn letters break their curves at many joins and leave extrema between

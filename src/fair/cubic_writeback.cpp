@@ -6,7 +6,6 @@
 #include <numbers>
 #include <numeric>
 
-#include "fair/run_reference.hpp"
 #include "geom/g2_hermite.hpp"
 #include "geom/polyline_distance.hpp"
 
@@ -47,7 +46,8 @@ std::vector<PathPiece> lac_pieces(const std::vector<LogAestheticSegment>& segmen
 }
 
 // The guide stretch in pieces, its end frames in place of the guide's own at its two ends.
-std::vector<PathPiece> guide_pieces(const GuideStretch& g, const RunReference& ref, bool whole_loop) {
+std::vector<PathPiece> guide_pieces(const GuideStretch& g, bool whole_loop) {
+  const RunReference& ref = *g.guide;
   const double length = g.s1 - g.s0;
   const auto frame = [&ref, &g, length, whole_loop](double s) {
     if (!whole_loop && s <= 0.0) return g.start;
@@ -84,8 +84,7 @@ class ChainPath {
  public:
   explicit ChainPath(const FairedChain& chain) : closed_(chain.closed) {
     if (chain.guide) {
-      guide_ref_.emplace(chain.guide->guide);
-      pieces_ = guide_pieces(*chain.guide, *guide_ref_, chain.closed);
+      pieces_ = guide_pieces(*chain.guide, chain.closed);
     } else {
       pieces_ = lac_pieces(chain.segments);
     }
@@ -102,8 +101,6 @@ class ChainPath {
     const LacPoint end = closed_ ? pieces_.front().at(0.0) : pieces_.back().at(pieces_.back().length);
     table_.push_back({total_, end.point});
   }
-  ChainPath(const ChainPath&) = delete;  // the pieces refer to guide_ref_
-  ChainPath& operator=(const ChainPath&) = delete;
 
   double total() const { return total_; }
   std::size_t segment_count() const { return starts_.size(); }
@@ -158,7 +155,6 @@ class ChainPath {
 
  private:
   bool closed_;
-  std::optional<RunReference> guide_ref_;  // before pieces_, which refer to it
   std::vector<PathPiece> pieces_;
   std::size_t n_ = 0;
   std::vector<double> starts_;

@@ -23,7 +23,6 @@ std::optional<Vec2> tangent_intersection(Vec2 q0, Vec2 d0, Vec2 q1, Vec2 d1) {
 
 constexpr double min_end_curvature_ratio = 1e-2;
 
-Vec2 direction(double angle) { return {std::cos(angle), std::sin(angle)}; }
 
 double sum_squares(const std::vector<double>& v) {
   double m = 0.0;
@@ -92,8 +91,8 @@ std::optional<double> solve_junction(const LacChain& chain, std::size_t j) {
 
 bool tangents_meet_in_front(const LacChain& chain, std::size_t i) {
   const std::size_t j = (i + 1) % chain.points.size();
-  return tangent_intersection(chain.points[i], direction(chain.tangent_angles[i]), chain.points[j],
-                              direction(chain.tangent_angles[j]))
+  return tangent_intersection(chain.points[i], direction_of(chain.tangent_angles[i]), chain.points[j],
+                              direction_of(chain.tangent_angles[j]))
       .has_value();
 }
 
@@ -102,7 +101,7 @@ SegmentFit build_chain_segment(const LacChain& chain, std::size_t i) {
   const std::size_t j = (i + 1) % n;
   const Vec2 q0 = chain.points[i], q1 = chain.points[j];
   const std::optional<Vec2> p1 =
-      tangent_intersection(q0, direction(chain.tangent_angles[i]), q1, direction(chain.tangent_angles[j]));
+      tangent_intersection(q0, direction_of(chain.tangent_angles[i]), q1, direction_of(chain.tangent_angles[j]));
   if (!p1) return {std::nullopt, "its tangents do not meet in front of both ends"};
   const bool last = i + 1 == chain.segment_count();
   if (!chain.closed && i == 0 && chain.zero_curvature_start) return fit_inflection_start(q0, *p1, q1);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <numbers>
 
 #include "aesthetic/lcg_slope.hpp"
@@ -359,11 +360,13 @@ std::optional<SmoothRun> guide_for(const SmoothRun& run, const RunReference& sou
 
 // Where no chain within the budget exists for a span of a guided run: the guide itself over
 // the span, between the frames a chain would have had there (so its neighbours join it G2).
-FairedChain guide_stretch(const ChainSpan& span, const RunReference& ref, const SmoothRun& guide_run, double w) {
+FairedChain guide_stretch(const ChainSpan& span, const std::shared_ptr<const RunReference>& guide,
+                          const SmoothRun& guide_run, double w) {
+  const RunReference& ref = *guide;
   FairedChain chain;
   chain.closed = span.closed;
   GuideStretch g;
-  g.guide = guide_run;
+  g.guide = guide;
   if (span.closed) {
     g.s0 = 0.0, g.s1 = ref.length();
   } else {
@@ -389,8 +392,8 @@ FairedRun fair_run(const SmoothRun& run, const FairSettings& settings, double bu
                                              ? guide_for(run, source, budget * settings.guide_share, settings.feature_window_units)
                                              : std::nullopt;
   const SmoothRun& guide_run = guide ? *guide : run;
-  const RunReference guide_ref(guide_run);
-  const RunReference& ref = guide ? guide_ref : source;
+  const auto guide_ref = guide ? std::make_shared<const RunReference>(*guide) : nullptr;
+  const RunReference& ref = guide_ref ? *guide_ref : source;
   const double L = ref.length();
   std::vector<Junction> junctions = select_junctions(ref, !run.closed && run.start.kind == RunEndKind::line,
                                                      !run.closed && run.end.kind == RunEndKind::line,
@@ -412,7 +415,7 @@ FairedRun fair_run(const SmoothRun& run, const FairSettings& settings, double bu
       const bool last_round = round + 1 == max_rounds || !o.adjusts();
       if (!o.chain && guide && last_round) {
         o = ChainOutcome{};
-        o.chain = guide_stretch(span, ref, guide_run, settings.feature_window_units);
+        o.chain = guide_stretch(span, guide_ref, guide_run, settings.feature_window_units);
         ++result.guide_stretches;
       }
       if (o.chain) result.chains.push_back(std::move(*o.chain));

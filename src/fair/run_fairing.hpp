@@ -4,6 +4,7 @@
 // than the budget from the source cut again and refitted.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -11,6 +12,7 @@
 #include "aesthetic/log_aesthetic_segment.hpp"
 #include "fair/contour_plan.hpp"
 #include "fair/fair_options.hpp"
+#include "fair/run_reference.hpp"
 
 namespace gf {
 
@@ -19,7 +21,7 @@ namespace gf {
 /// is C2, so the stretch is G2 throughout; its end frames are the ones its neighbouring chains
 /// have, so the joins are G2 too.
 struct GuideStretch {
-  SmoothRun guide;       ///< the whole run's guide
+  std::shared_ptr<const RunReference> guide;  ///< the whole run's guide, shared by its stretches
   double s0 = 0.0, s1 = 0.0;  ///< arc lengths along it (s1 may pass the seam of a closed guide)
   LacPoint start, end;   ///< the frames at its ends (ignored when the stretch is the whole closed guide)
 };

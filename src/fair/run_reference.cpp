@@ -68,18 +68,18 @@ Vec2 RunReference::point_at(double s) const {
   return lerp(a.point, b.point, f);
 }
 
-Vec2 RunReference::tangent_at(double s) const {
-  const double theta = theta_at(s);
-  return {std::cos(theta), std::sin(theta)};
+Vec2 RunReference::tangent_at(double s) const { return direction_of(theta_at(s)); }
+
+RunReference::Location RunReference::locate(double s) const {
+  const auto [i, f] = bracket(wrap(s));
+  const ReferenceSample &a = samples_[i], &b = samples_[i + 1];
+  if (a.cubic == b.cubic && b.t > a.t) return {a.cubic, a.t + f * (b.t - a.t)};
+  return f < 0.5 ? Location{a.cubic, a.t} : Location{b.cubic, b.t};
 }
 
 double RunReference::curvature_at(double s) const {
-  const auto [i, f] = bracket(wrap(s));
-  const ReferenceSample &a = samples_[i], &b = samples_[i + 1];
-  const bool same = a.cubic == b.cubic && b.t > a.t;
-  const ReferenceSample& nearest = f < 0.5 ? a : b;
-  const std::optional<double> k = same ? curvature(derivatives_at(cubics_[a.cubic], a.t + f * (b.t - a.t)))
-                                        : curvature(derivatives_at(cubics_[nearest.cubic], nearest.t));
+  const Location at = locate(s);
+  const std::optional<double> k = curvature(derivatives_at(cubics_[at.cubic], at.t));
   return k && std::isfinite(*k) ? *k : 0.0;
 }
 
@@ -121,9 +121,7 @@ Vec2 RunReference::mean_tangent(double s, double window) const {
   if (!closed_) lo = std::max(lo, 0.0), hi = std::min(hi, length_);
   const Vec2 d = point_at(hi) - point_at(lo);
   const double n = norm(d);
-  if (n > 0.0) return d / n;
-  const double a = theta_at(s);
-  return {std::cos(a), std::sin(a)};
+  return n > 0.0 ? d / n : tangent_at(s);
 }
 
 std::vector<Vec2> RunReference::polyline(double s0, double s1) const {
@@ -141,15 +139,8 @@ std::vector<Vec2> RunReference::polyline(double s0, double s1) const {
 }
 
 std::vector<Cubic> RunReference::cubics_between(double s0, double s1) const {
-  // The cubic and parameter at each end, by the sample table.
-  auto locate = [&](double s) {
-    const auto [i, f] = bracket(wrap(s));
-    const ReferenceSample &a = samples_[i], &b = samples_[i + 1];
-    if (a.cubic == b.cubic) return std::pair{a.cubic, a.t + f * (b.t - a.t)};
-    return f < 0.5 ? std::pair{a.cubic, a.t} : std::pair{b.cubic, b.t};
-  };
-  auto [c0, t0] = locate(s0);
-  auto [c1, t1] = locate(s1);
+  const auto [c0, t0] = locate(s0);
+  const auto [c1, t1] = locate(s1);
   std::vector<Cubic> out;
   const std::size_t n = cubics_.size();
   for (std::size_t c = c0, guard = 0; guard <= n; c = (c + 1) % n, ++guard) {

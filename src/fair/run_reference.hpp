@@ -57,6 +57,12 @@ class RunReference {
     double f;
   };
   Bracket bracket(double s) const;
+  /// The source cubic and its parameter at s (the nearer sample's where s falls between two cubics).
+  struct Location {
+    std::size_t cubic;
+    double t;
+  };
+  Location locate(double s) const;
   double wrap(double s) const;
   std::vector<Cubic> cubics_;
   std::vector<ReferenceSample> samples_;

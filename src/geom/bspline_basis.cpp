@@ -58,4 +58,34 @@ Cubic BSplineBasis::span_cubic(std::span<const Vec2> controls, int s) const {
   return Cubic{q0, (r1 * 4.0 - r2 * 2.0) * 0.75, (r2 * 4.0 - r1 * 2.0) * 0.75, q3};
 }
 
+namespace {
+
+// The span holding u and the local parameter on it.
+std::pair<std::size_t, double> span_at(double u, int spans) {
+  const int s = std::clamp(static_cast<int>(u * spans), 0, spans - 1);
+  return {static_cast<std::size_t>(s), u * spans - s};
+}
+
+}  // namespace
+
+Vec2 BSplineBasis::point_on_spans(std::span<const Cubic> spans, double u) const {
+  const auto [s, t] = span_at(u, spans_);
+  return spans[s].point_at(t);
+}
+
+double BSplineBasis::foot_parameter(std::span<const Cubic> spans, Vec2 p, double u, int steps) const {
+  for (int step = 0; step < steps; ++step) {
+    const auto [s, t] = span_at(u, spans_);
+    const Cubic& c = spans[s];
+    const auto h1 = c.hodograph();
+    const Vec2 d = c.point_at(t) - p, d1 = h1.point_at(t), d2 = h1.hodograph().point_at(t);
+    // Newton on (C(t) − p) · C'(t) = 0.
+    const double move = dot(d, d1) / (dot(d1, d1) + dot(d, d2));
+    if (!std::isfinite(move)) break;
+    u -= move / spans_;
+    u = periodic_ ? u - std::floor(u) : std::clamp(u, 0.0, 1.0);
+  }
+  return u;
+}
+
 }  // namespace gf

@@ -32,6 +32,12 @@ class BSplineBasis {
   /// Span s (0 … spans − 1) as a cubic Bézier: exact, since each span is a cubic polynomial.
   Cubic span_cubic(std::span<const Vec2> controls, int s) const;
 
+  /// The point at u of the spline given by its spans (span_cubic of each).
+  Vec2 point_on_spans(std::span<const Cubic> spans, double u) const;
+  /// Up to `steps` Newton steps from u toward the parameter of p's foot on the spline given by
+  /// its spans (fewer where a step is not finite); clamped to [0, 1], or wrapped when periodic.
+  double foot_parameter(std::span<const Cubic> spans, Vec2 p, double u, int steps) const;
+
  private:
   int spans_;
   bool periodic_;

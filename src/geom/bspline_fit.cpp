@@ -58,16 +58,7 @@ BSplineFit fit_cubic_bspline(std::span<const Vec2> points, int span_count, bool 
     control.front() = points.front();  // equal already, up to the solver's rounding
     control.back() = points.back();
     to_spans();
-    for (int i = 1; i + 1 < m; ++i) {
-      const int s = std::clamp(static_cast<int>(u[i] * span_count), 0, span_count - 1);
-      const Cubic& c = fit.spans[static_cast<std::size_t>(s)];
-      const double t = u[i] * span_count - s;
-      const auto h1 = c.hodograph();
-      const auto h2 = h1.hodograph();
-      const Vec2 d = c.point_at(t) - points[i], d1 = h1.point_at(t), d2 = h2.point_at(t);
-      const double step = dot(d, d1) / (dot(d1, d1) + dot(d, d2));
-      if (std::isfinite(step)) u[i] = std::clamp(u[i] - step / span_count, 0.0, 1.0);
-    }
+    for (int i = 1; i + 1 < m; ++i) u[i] = basis.foot_parameter(fit.spans, points[i], u[i], 1);
   }
   for (int i = 0; i < m; ++i) fit.max_residual = std::max(fit.max_residual, distance(basis.point_at(control, u[i]), points[i]));
   return fit;

@@ -129,29 +129,13 @@ class SmoothingProblem {
     return out;
   }
 
-  /// Each point's foot on the curve (Newton from its parameter) and the largest distance.
+  /// Each point's foot on the curve (three Newton steps from its parameter) and the largest distance.
   double project(std::span<const Cubic> spans, std::vector<double>& feet) const {
-    const int count = basis_.spans();
-    feet = u_;
+    feet.resize(points_.size());
     double worst = 0.0;
     for (std::size_t i = 0; i < points_.size(); ++i) {
-      double u = feet[i];
-      Vec2 d{};
-      for (int step = 0; step < 4; ++step) {
-        if (basis_.periodic()) u -= std::floor(u);
-        const int s = std::clamp(static_cast<int>(u * count), 0, count - 1);
-        const Cubic& c = spans[static_cast<std::size_t>(s)];
-        const double t = u * count - s;
-        const auto h1 = c.hodograph();
-        const Vec2 d1 = h1.point_at(t), d2 = h1.hodograph().point_at(t);
-        d = c.point_at(t) - points_[i];
-        const double move = dot(d, d1) / (dot(d1, d1) + dot(d, d2));
-        if (!std::isfinite(move) || step == 3) break;
-        u = basis_.periodic() ? u - move / count : std::clamp(u - move / count, 0.0, 1.0);
-      }
-      if (basis_.periodic()) u -= std::floor(u);
-      feet[i] = u;
-      worst = std::max(worst, norm(d));
+      feet[i] = basis_.foot_parameter(spans, points_[i], u_[i], 3);
+      worst = std::max(worst, distance(basis_.point_on_spans(spans, feet[i]), points_[i]));
     }
     return worst;
   }

@@ -27,9 +27,11 @@ constexpr Vec2 lerp(Vec2 a, Vec2 b, double t) { return a + (b - a) * t; }
 constexpr Vec2 perpendicular(Vec2 a) { return {-a.y, a.x}; }
 inline double norm(Vec2 a) { return std::hypot(a.x, a.y); }
 inline double distance(Vec2 a, Vec2 b) { return norm(a - b); }
-/// Signed angle in (-pi, pi] that turns direction a into direction b (left positive).
 /// The direction of a, radians in (−π, π].
 inline double angle_of(Vec2 a) { return std::atan2(a.y, a.x); }
+/// The unit vector at `angle` radians: the inverse of angle_of.
+inline Vec2 direction_of(double angle) { return {std::cos(angle), std::sin(angle)}; }
+/// Signed angle in (-pi, pi] that turns direction a into direction b (left positive).
 inline double turning_angle(Vec2 a, Vec2 b) { return std::atan2(cross(a, b), dot(a, b)); }
 
 }  // namespace gf
