@@ -6,6 +6,7 @@
 #include <numbers>
 #include <numeric>
 
+#include "geom/curvature.hpp"
 #include "geom/g2_hermite.hpp"
 #include "geom/polyline_distance.hpp"
 
@@ -16,6 +17,7 @@ namespace {
 constexpr int max_depth = 6;
 constexpr int cubic_samples = 48;
 constexpr double min_handle_fraction = 0.03;
+constexpr double fine_enough = 0.02;  // of κ per grid step at a cut node
 
 // Short primitive integer directions, |d|² ≤ `longest`: where a span must be cut, the cut goes
 // where the tangent runs along one of them, so rounding keeps the node's handles exactly
@@ -206,52 +208,96 @@ class SpanWriter {
   SpanWriter(const ChainPath& path, double budget, ChainCubics& out) : path_(path), budget_(budget), out_(out) {}
 
   void fit(double a, double b, std::optional<Vec2> end_step, int depth, std::vector<Piece>& pieces) {
+    Fitted f = best_cubic(a, b);
+    if (f.within(budget_) || depth >= max_depth) {
+      if (!f.cubic) {  // no G2 cubic at all: keep G1 with third-chord handles
+        const LacPoint pa = path_.at(a), pb = path_.at(b);
+        const double h = distance(pa.point, pb.point) / 3.0;
+        f.cubic = Cubic{pa.point, pa.point + pa.tangent * h, pb.point - pb.tangent * h, pb.point};
+        ++out_.g1_fallbacks;
+      }
+      pieces.push_back({*f.cubic, end_step});
+      return;
+    }
+    const std::vector<Cut> cuts = cut_candidates(a, b);
+    // Where one cut leaves two cubics within the budget, the cut whose node rounds best.
+    const Cut* chosen = &cuts.front();
+    double coarsest = 1e300;
+    for (const Cut& cut : cuts) {
+      const Fitted left = best_cubic(a, cut.sigma), right = best_cubic(cut.sigma, b);
+      if (!left.within(budget_) || !right.within(budget_)) continue;
+      const double q = grid_coarseness(*left.cubic, *right.cubic, cut);
+      if (q < coarsest) coarsest = q, chosen = &cut;
+      if (coarsest <= fine_enough) break;  // the grid sets its curvature finely: look no further
+    }
+    const Cut cut = *chosen;
+    fit(a, cut.sigma, cut.step, depth + 1, pieces);
+    fit(cut.sigma, b, end_step, depth + 1, pieces);
+  }
+
+ private:
+  struct Fitted {
+    std::optional<Cubic> cubic;
+    double deviation = 1e300;
+    bool within(double budget) const { return cubic && deviation <= budget; }
+  };
+
+  // The G2 Hermite cubic of [a, b] nearest the path.
+  Fitted best_cubic(double a, double b) const {
     const LacPoint pa = path_.at(a), pb = path_.at(b);
     const std::vector<Vec2> lac = path_.points(a, b);
-    std::optional<Cubic> best;
-    double best_dev = 1e300;
     const double chord = distance(pa.point, pb.point);
+    Fitted best;
     for (const Cubic& c : g2_hermite_cubics({pa.point, pa.tangent, pa.curvature}, {pb.point, pb.tangent, pb.curvature})) {
       // A handle much shorter than the chord crowds the curvature into the node.
       if (std::min(distance(c.p[0], c.p[1]), distance(c.p[2], c.p[3])) < min_handle_fraction * chord) continue;
       const double d = cubic_deviation(c, lac);
-      if (d < best_dev) best_dev = d, best = c;
+      if (d < best.deviation) best = {c, d};
     }
-    if ((best && best_dev <= budget_) || depth >= max_depth) {
-      if (!best) {  // no G2 cubic at all: keep G1 with third-chord handles
-        const double h = distance(pa.point, pb.point) / 3.0;
-        best = Cubic{pa.point, pa.point + pa.tangent * h, pb.point - pb.tangent * h, pb.point};
-        ++out_.g1_fallbacks;
-      }
-      pieces.push_back({*best, end_step});
-      return;
-    }
-    const auto [cut, step] = cut_point(a, b, pa.tangent, pb.tangent);
-    fit(a, cut, step, depth + 1, pieces);
-    fit(cut, b, end_step, depth + 1, pieces);
+    return best;
   }
 
- private:
-  // Cut where the tangent runs along a short grid direction nearest the middle of the span's
-  // turning (within its middle 60 %), and not within the first or last 15 % of its length,
-  // where a piece would be short and its handles coarse on the grid; else at the chain
-  // junction nearest the middle, else at the middle.
-  std::pair<double, std::optional<Vec2>> cut_point(double a, double b, Vec2 ta, Vec2 tb) const {
+  struct Cut {
+    double sigma;
+    std::optional<Vec2> step;
+  };
+
+  // How coarsely whole grid steps set the curvature at a cut node (fair/handle_steps.hpp):
+  // κ = (2/3)·c/|h|², c the far handle's integer offset, so a step of the far handle moves κ
+  // by about (2/3)·|far step|/(|h|²·|κ|) of itself and a step of h by 2·|d|/|h|. The larger
+  // of the two, at the node's shorter handle.
+  static double grid_coarseness(const Cubic& before, const Cubic& after, const Cut& cut) {
+    const double kappa = std::max(std::abs(node_curvature(before, SegmentEnd::end)), 1e-9);
+    const double h = std::min(distance(before.p[2], before.p[3]), distance(after.p[0], after.p[1]));
+    const double step = cut.step ? norm(*cut.step) : 1.0;
+    return std::max((2.0 / 3.0) * std::sqrt(2.0) / (h * h * kappa), 2.0 * step / h);
+  }
+
+  // Where a span may be cut, the preferred first: where the tangent runs along a short grid
+  // direction within the middle 60 % of the span's turning, nearest its middle, and not within
+  // the first or last 15 % of its length, where a piece would be short and its handles coarse
+  // on the grid; else at the chain junction nearest the middle, else at the middle.
+  std::vector<Cut> cut_candidates(double a, double b) const {
+    const Vec2 ta = path_.at(a).tangent, tb = path_.at(b).tangent;
     const double turn = turning_angle(ta, tb);
+    std::vector<std::pair<double, Cut>> ranked;
     if (std::abs(turn) > 1e-6)
       for (const std::vector<Vec2>* directions : {&fine_, &coarse_}) {
-        std::optional<Vec2> step;
-        double best = 0.3, cut = a;  // |fraction of the turning − 0.5| must stay below 0.3
         for (const Vec2 d : *directions) {
           const double rel = turning_angle(ta, d / norm(d));
           const double f = rel / turn;
-          if (std::abs(f - 0.5) >= best) continue;
+          if (std::abs(f - 0.5) >= 0.3) continue;
           const double sigma = path_.where_turned(a, b, rel);
           if (std::abs((sigma - a) / (b - a) - 0.5) > 0.35) continue;
-          best = std::abs(f - 0.5), step = d, cut = sigma;
+          if (std::any_of(ranked.begin(), ranked.end(), [&](const auto& r) { return r.second.step == d; })) continue;
+          ranked.push_back({std::abs(f - 0.5), {sigma, d}});
         }
-        if (step) return {cut, step};
+        if (!ranked.empty()) break;  // the coarse directions only where no short one will do
       }
+    std::stable_sort(ranked.begin(), ranked.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    std::vector<Cut> out;
+    for (const auto& r : ranked) out.push_back(r.second);
+    if (!out.empty()) return out;
     const double mid = 0.5 * (a + b), width = b - a;
     double cut = mid, nearest = 0.3 * width;
     for (std::size_t i = 1; i < path_.segment_count(); ++i)
@@ -259,7 +305,7 @@ class SpanWriter {
         const double j = path_.segment_start(i) + offset;
         if (std::abs(j - mid) < nearest) nearest = std::abs(j - mid), cut = j;
       }
-    return {cut, std::nullopt};
+    return {{cut, std::nullopt}};
   }
 
   const ChainPath& path_;

@@ -156,6 +156,22 @@ std::vector<OutlineNode> round_to_grid(const std::vector<OutlineNode>& nodes, bo
     const bool at_end = nodes[j].smooth && nodes[j].out_handle && !open_end(j);
     if (!at_start && !at_end) continue;
     const Vec2 a0 = r[i].point, b0 = r[j].point;
+    // The curve meeting the line at `end` with its near handle `near` on the line: its far
+    // handle (node k's out-handle when the curve arrives, its in-handle when it leaves) at the
+    // whole step nearest the line. Cost: how far that handle moves, or a unit when even there
+    // the curvature at the join stays visible.
+    auto far_handle_cost = [&](std::size_t k, bool out, Vec2 end, Vec2 near, Vec2 d) {
+      k %= n;
+      const std::optional<Vec2> wanted = out ? nodes[k].out_handle : nodes[k].in_handle;
+      if (!steps[k] || !wanted) return 0.0;
+      double best = 1.0;
+      for (const Vec2 h : handles_near_line(r[k].point, *steps[k], out ? 1.0 : -1.0, end, d)) {
+        const Cubic c = out ? Cubic{r[k].point, h, near, end} : Cubic{end, near, h, r[k].point};
+        const double kappa = node_curvature(c, out ? SegmentEnd::end : SegmentEnd::start);
+        if (std::abs(kappa) <= 0.05 * limits.flat_curvature) best = std::min(best, 0.3 * distance(h, *wanted));
+      }
+      return best;
+    };
     double best_cost = 1e300;
     Vec2 best_a = a0, best_b = b0, best_d;
     std::optional<Vec2> best_in, best_out;
@@ -179,6 +195,9 @@ std::vector<OutlineNode> round_to_grid(const std::vector<OutlineNode>& nodes, bo
         out = stepped_handle(b, d, 1.0, nodes[j].point, *nodes[j].out_handle);
         cost = std::max(cost, distance(*out, *nodes[j].out_handle));
       }
+      // κ = 0 at the join needs the curve's far handle on the line: prefer ends where it can be.
+      if (at_start) cost += far_handle_cost(i + n - 1, true, a, *in, d);
+      if (at_end) cost += far_handle_cost(j + 1, false, b, *out, d);
       if (cost < best_cost) best_cost = cost, best_a = a, best_b = b, best_d = d, best_in = in, best_out = out;
     }
     r[i].point = best_a;

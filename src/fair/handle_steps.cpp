@@ -42,6 +42,17 @@ std::vector<Vec2> handle_candidates(const OutlineNode& node, std::optional<Vec2>
   return c;
 }
 
+// Where one handle of a cubic meeting a line may go besides: the whole steps nearest the line,
+// so the cubic leaves it with the least curvature the grid allows (the rounded length is often
+// several steps away from them); for a corner's handle, the grid point on the line nearest it.
+std::vector<Vec2> handles_meeting_line(const OutlineNode& node, std::optional<Vec2> step, bool out,
+                                       const OutlineNode& line_end, Vec2 line_dir) {
+  if (step) return handles_near_line(node.point, *step, out ? 1.0 : -1.0, line_end.point, line_dir);
+  if (node.smooth) return {};
+  const Vec2 h = out ? *node.out_handle : *node.in_handle;
+  return {line_end.point + line_dir * std::round(dot(h - line_end.point, line_dir) / dot(line_dir, line_dir))};
+}
+
 // How far a cubic moved from its unrounded self, measured at the same parameters (a bound
 // on the distance between the two curves).
 double parametric_distance(const Cubic& a, const Cubic& b) {
@@ -85,6 +96,12 @@ CubicChoices cubic_choices(const std::vector<OutlineNode>& nodes, const std::vec
   c.start = i, c.end = j;
   c.outs = handle_candidates(nodes[i], steps[i], true);
   c.ins = handle_candidates(nodes[j], steps[j], false);
+  auto add = [](std::vector<Vec2>& to, const std::vector<Vec2>& more) {
+    for (const Vec2 h : more)
+      if (std::find(to.begin(), to.end(), h) == to.end()) to.push_back(h);
+  };
+  if (line_before && steps[i]) add(c.ins, handles_meeting_line(nodes[j], steps[j], false, nodes[i], *steps[i]));
+  if (line_after && steps[j]) add(c.outs, handles_meeting_line(nodes[i], steps[i], true, nodes[j], *steps[j]));
   const Cubic unrounded{ideal[i].point, *ideal[i].out_handle, *ideal[j].in_handle, ideal[j].point};
   const Vec2 p0 = nodes[i].point, p3 = nodes[j].point;
   const double allowed = std::max(limits.allowance, parametric_distance(Cubic{p0, c.outs[0], c.ins[0], p3}, unrounded));
@@ -147,30 +164,130 @@ RunChoice best_run(const std::vector<CubicChoices>& run, double flat, std::optio
   return best;
 }
 
+// Which nodes of an outline join two cubics, meet a line, or start a cubic.
+struct OutlineJoins {
+  const std::vector<OutlineNode>& nodes;
+  bool closed;
+
+  std::size_t size() const { return nodes.size(); }
+  bool is_cubic(std::size_t i) const {
+    const std::size_t n = size();
+    return (closed || i + 1 < n) && nodes[i].out_handle && nodes[(i + 1) % n].in_handle;
+  }
+  bool interior(std::size_t i) const { return closed || (i > 0 && i + 1 < size()); }
+  /// A smooth node between two cubics couples them.
+  bool joins_cubics(std::size_t i) const {
+    return interior(i) && nodes[i].smooth && is_cubic(i) && is_cubic((i + size() - 1) % size());
+  }
+  /// A smooth node between a cubic and a line wants κ = 0 on its cubic's side.
+  bool meets_line(std::size_t i) const {
+    return interior(i) && nodes[i].smooth && is_cubic(i) != is_cubic((i + size() - 1) % size());
+  }
+};
+
+// Where whole steps alone leave a jump, the node itself may move a unit (its handles with it,
+// G1 stays exact) and its two handles a step or three: the curvatures of both its cubics
+// change at both their ends, so the jumps at the two neighbours count too.
+void nudge_jumping_nodes(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal,
+                         std::span<const std::optional<Vec2>> steps, const OutlineJoins& joins,
+                         const HandleStepLimits& limits) {
+  const std::size_t n = nodes.size();
+  auto cubic_at = [&](std::size_t i) {
+    const std::size_t j = (i + 1) % n;
+    return Cubic{nodes[i].point, *nodes[i].out_handle, *nodes[j].in_handle, nodes[j].point};
+  };
+  auto ideal_at = [&](std::size_t i) {
+    const std::size_t j = (i + 1) % n;
+    return Cubic{ideal[i].point, *ideal[i].out_handle, *ideal[j].in_handle, ideal[j].point};
+  };
+  auto node_cost = [&](std::size_t k) {
+    if (joins.joins_cubics(k))
+      return jump_cost(jump(node_curvature(cubic_at((k + n - 1) % n), SegmentEnd::end),
+                            node_curvature(cubic_at(k), SegmentEnd::start), limits.flat_curvature));
+    if (!joins.meets_line(k)) return 0.0;
+    const double kappa = joins.is_cubic(k) ? node_curvature(cubic_at(k), SegmentEnd::start)
+                                     : node_curvature(cubic_at((k + n - 1) % n), SegmentEnd::end);
+    return jump_cost(jump(kappa, 0.0, limits.flat_curvature));
+  };
+  auto around = [&](std::size_t i) {
+    double c = 0.0;
+    for (const std::size_t k : {(i + n - 1) % n, i, (i + 1) % n}) c += node_cost(k);
+    return c;
+  };
+  auto fails_around = [&](std::size_t i) {
+    for (const std::size_t k : {(i + n - 1) % n, i, (i + 1) % n})
+      if (node_cost(k) > target_jump * target_jump) return true;
+    return false;
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!joins.joins_cubics(i) || !steps[i] || !fails_around(i)) continue;
+    const std::size_t h = (i + n - 1) % n;
+    const double allowed_in = std::max(limits.allowance, parametric_distance(cubic_at(h), ideal_at(h)));
+    const double allowed_out = std::max(limits.allowance, parametric_distance(cubic_at(i), ideal_at(i)));
+    // Nor may a nudge add an inflection or an H/V extremum without a node.
+    const auto features = [](const Cubic& c) { return std::pair{sign_changes(c), inner_axis_extrema(c)}; };
+    const auto most = [&](std::size_t k) {
+      const auto [a1, b1] = features(ideal_at(k));
+      const auto [a2, b2] = features(cubic_at(k));
+      return std::pair{std::max(a1, a2), std::max(b1, b2)};
+    };
+    const auto [changes_in, extrema_in] = most(h);
+    const auto [changes_out, extrema_out] = most(i);
+    const OutlineNode kept = nodes[i];
+    const Vec2 d = *steps[i];
+    const double m_in = std::round(dot(kept.point - *kept.in_handle, d) / dot(d, d));
+    const double m_out = std::round(dot(*kept.out_handle - kept.point, d) / dot(d, d));
+    OutlineNode best = kept;
+    double best_cost = around(i);
+    for (int k = 0; k < 9; ++k) {
+      const Vec2 p = kept.point + Vec2{double(k % 3 - 1), double(k / 3 - 1)};
+      // Still on a grid point next to the nearest one, as rounding placed every node.
+      const Vec2 nearest{std::round(ideal[i].point.x), std::round(ideal[i].point.y)};
+      if (std::abs(p.x - nearest.x) > 1.0 || std::abs(p.y - nearest.y) > 1.0) continue;
+      for (int a = -reach; a <= reach; ++a)
+        for (int b = -reach; b <= reach; ++b) {
+          if (m_in + a < 1.0 || m_out + b < 1.0) continue;
+          nodes[i].point = p;
+          nodes[i].in_handle = p - d * (m_in + a);
+          nodes[i].out_handle = p + d * (m_out + b);
+          const double c = around(i);  // the cheap test first
+          if (c >= best_cost) continue;
+          const Cubic in = cubic_at(h), out = cubic_at(i);
+          if (parametric_distance(in, ideal_at(h)) > allowed_in || parametric_distance(out, ideal_at(i)) > allowed_out) continue;
+          const auto [ci, ei] = features(in);
+          const auto [co, eo] = features(out);
+          if (ci > changes_in || co > changes_out || ei > extrema_in || eo > extrema_out) continue;
+          best_cost = c, best = nodes[i];
+        }
+    }
+    nodes[i] = best;
+  }
+}
+
 }  // namespace
+
+std::vector<Vec2> handles_near_line(Vec2 node, Vec2 step, double sign, Vec2 line_point, Vec2 line_dir) {
+  const double across = sign * cross(line_dir, step);
+  if (across == 0.0) return {};  // parallel: as far from the line at every step
+  const double m = -cross(line_dir, node - line_point) / across;
+  std::vector<Vec2> out;
+  for (const double whole : {std::floor(m), std::ceil(m)})
+    if (whole >= 1.0 && (out.empty() || whole != std::floor(m))) out.push_back(node + step * (sign * whole));
+  return out;
+}
 
 void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal,
                          std::span<const std::optional<Vec2>> steps, bool closed, const HandleStepLimits& limits) {
   const std::size_t n = nodes.size();
   if (n < 2) return;
-  auto is_cubic = [&](std::size_t i) {
-    return (closed || i + 1 < n) && nodes[i].out_handle && nodes[(i + 1) % n].in_handle;
-  };
-  auto interior = [&](std::size_t i) { return closed || (i > 0 && i + 1 < n); };
-  // A smooth node between two cubics couples them; one between a cubic and a line wants κ = 0.
-  auto joins_cubics = [&](std::size_t i) {
-    return interior(i) && nodes[i].smooth && is_cubic(i) && is_cubic((i + n - 1) % n);
-  };
-  auto meets_line = [&](std::size_t i) {
-    return interior(i) && nodes[i].smooth && is_cubic(i) != is_cubic((i + n - 1) % n);
-  };
+  const OutlineJoins joins{nodes, closed};
 
   std::vector<std::size_t> starts;  // cubics that begin a run
   bool any_cubic = false;
   for (std::size_t i = 0; i < n; ++i) {
-    if (!is_cubic(i)) continue;
+    if (!joins.is_cubic(i)) continue;
     any_cubic = true;
-    if (!joins_cubics(i)) starts.push_back(i);
+    if (!joins.joins_cubics(i)) starts.push_back(i);
   }
   if (!any_cubic) return;
   const bool cycle = starts.empty();
@@ -180,8 +297,8 @@ void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<Outl
     std::vector<CubicChoices> run;
     for (std::size_t i = s;;) {
       const std::size_t j = (i + 1) % n;
-      run.push_back(cubic_choices(nodes, ideal, steps, i, j, limits, meets_line(i), meets_line(j)));
-      if (!joins_cubics(j) || (cycle && j == s)) break;
+      run.push_back(cubic_choices(nodes, ideal, steps, i, j, limits, joins.meets_line(i), joins.meets_line(j)));
+      if (!joins.joins_cubics(j) || (cycle && j == s)) break;
       i = j;
     }
     RunChoice best;
@@ -202,6 +319,8 @@ void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<Outl
       nodes[c.end].in_handle = c.ins[state % c.ins.size()];
     }
   }
+
+  nudge_jumping_nodes(nodes, ideal, steps, joins, limits);
 }
 
 }  // namespace gf

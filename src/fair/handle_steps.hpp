@@ -25,9 +25,17 @@ struct HandleStepLimits {
   double allowance = 0.5;
 };
 
+/// The handles node + sign·m·step (m ≥ 1 whole steps; sign −1 for an in-handle) nearest the
+/// line through `line_point` along `line_dir` on either side of it (one when a whole step lies
+/// on it): where a curve meets a line, its far handle there gives it the least curvature at
+/// the join the grid allows, κ = 0 when on the line.
+std::vector<Vec2> handles_near_line(Vec2 node, Vec2 step, double sign, Vec2 line_point, Vec2 line_dir);
+
 /// Moves the handles of `nodes` (rounded, G1 exact along `steps`) by whole steps along their
 /// grid directions, and a corner's handle by a unit, to minimise the curvature jumps at
-/// smooth nodes; `ideal` is the outline before rounding.
+/// smooth nodes; then moves a node still jumping (or next to one) by a unit with its handles,
+/// where that helps. `ideal` is the outline before rounding; no cubic moves farther from it
+/// than the limits allow, and none gains an inflection or an H/V extremum.
 void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal,
                          std::span<const std::optional<Vec2>> steps, bool closed, const HandleStepLimits& limits);
 

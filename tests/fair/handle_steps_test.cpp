@@ -123,5 +123,70 @@ TEST(HandleSteps, ACurveLeavingALineStartsWithZeroCurvature) {
   }
 }
 
+TEST(HandleSteps, HandlesNearALineStraddleItOrLieOnIt) {
+  // A vertical line through the origin; a node whose in-handle steps along (1, 0) reaches it
+  // in a whole number of steps, so exactly that handle comes back, on the line.
+  const std::vector<Vec2> on = handles_near_line({37, 120}, {1, 0}, -1.0, {0, 0}, {0, -1});
+  ASSERT_EQ(on.size(), 1u);
+  EXPECT_EQ(on[0], (Vec2{0, 120}));
+  // A line along (9, −2) and a node stepping along (1, 1) (|cross| = 11): the two whole steps
+  // on either side of the line, one step apart, each a whole step from the node.
+  std::mt19937 rng(3);
+  std::uniform_int_distribution<int> u(-40, 40);
+  for (int trial = 0; trial < 100; ++trial) {
+    const Vec2 node{double(200 + u(rng)), double(-200 + u(rng))}, line_point{double(u(rng)), double(u(rng))};
+    const Vec2 line{9, -2}, step{1, 1};
+    const std::vector<Vec2> near = handles_near_line(node, step, 1.0, line_point, line);
+    if (near.size() == 1) {
+      EXPECT_EQ(cross(line, near[0] - line_point), 0.0);
+      continue;
+    }
+    ASSERT_EQ(near.size(), 2u) << "trial " << trial;
+    EXPECT_LT(cross(line, near[0] - line_point) * cross(line, near[1] - line_point), 0.0);
+    EXPECT_EQ(near[1] - near[0], step);
+    const Vec2 from = near[0] - node;
+    EXPECT_EQ(cross(from, step), 0.0);
+    EXPECT_GE(dot(from, step), 1.0);
+  }
+  // Parallel to the line: no step gets any nearer.
+  EXPECT_TRUE(handles_near_line({5, 5}, {9, -2}, 1.0, {0, 0}, {9, -2}).empty());
+}
+
+TEST(HandleSteps, ACurveLeavingADiagonalLineMeetsItWithoutVisibleCurvature) {
+  // As above, along a diagonal line of direction about (3, 1), into a cubic whose far node
+  // turns along a diagonal grid step (1, 1): a whole step of that handle moves the cubic's
+  // curvature at the join by |cross((3, 1), (1, 1))| = 2 grid units of offset, so κ = 0 needs
+  // the line's ends placed where the parity works. The check's rule: |κ|·em ≤ 0.05 with
+  // em = 1000 (flat curvature 0.5/em).
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int exact = 0;
+  const int trials = 50;
+  for (int trial = 0; trial < trials; ++trial) {
+    const Vec2 start{0.3 * u(rng), 0.3 * u(rng)}, along = Vec2{3, 1} / std::sqrt(10.0);
+    const Vec2 join = start + along * (300 + 60 * u(rng));
+    const Vec2 far = join + along * (200 + 40 * u(rng)) + Vec2{-30, 30} * (1 + u(rng));
+    std::vector<OutlineNode> nodes(3);
+    nodes[0].point = start;
+    nodes[0].smooth = false;
+    nodes[1].point = join;
+    nodes[1].out_handle = join + along * (70 + 20 * u(rng));
+    // The far handle on the line (κ = 0 at the join), the far node's tangent along (1, 1).
+    const Vec2 diagonal = Vec2{1, 1} / std::sqrt(2.0);
+    const double t = cross(far - join, diagonal) / cross(along, diagonal);
+    nodes[2].point = far;
+    nodes[2].in_handle = join + along * t;
+    nodes[2].out_handle = far + diagonal * 60.0;
+    nodes[2].grid_step = Vec2{1, 1};
+    nodes[0].in_handle = start + Vec2{-40, 60};
+    const std::vector<OutlineNode> r = round_to_grid(nodes, true, {0.5e-3, 1.0});
+    const Cubic c = cubic_from(r, 1);
+    EXPECT_EQ(cross(r[1].point - r[0].point, c.p[1] - c.p[0]), 0.0) << "trial " << trial;  // G1
+    EXPECT_LE(std::abs(kappa(c, SegmentEnd::start)) * 1000.0, 0.05) << "trial " << trial;
+    exact += kappa(c, SegmentEnd::start) == 0.0;
+  }
+  EXPECT_GT(exact, 0);
+}
+
 }  // namespace
 }  // namespace gf
