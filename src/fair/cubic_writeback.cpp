@@ -289,7 +289,6 @@ class SpanWriter {
           if (std::abs(f - 0.5) >= 0.3) continue;
           const double sigma = path_.where_turned(a, b, rel);
           if (std::abs((sigma - a) / (b - a) - 0.5) > 0.35) continue;
-          if (std::any_of(ranked.begin(), ranked.end(), [&](const auto& r) { return r.second.step == d; })) continue;
           ranked.push_back({std::abs(f - 0.5), {sigma, d}});
         }
         if (!ranked.empty()) break;  // the coarse directions only where no short one will do

@@ -2,7 +2,8 @@
 // the chain's ends (corners, inflections, line joins) and at every horizontal and vertical
 // extremum; between them as few cubics as the budget allows, each the G2 Hermite cubic of its
 // ends (geom/g2_hermite.hpp), so curvature matches on both sides of every node. A span whose
-// best cubic strays too far is cut at its middle (a junction of the chain when one is near).
+// best cubic strays too far is cut where the tangent runs along a short grid direction near
+// the middle of its turning, preferring the cut whose node rounding can set finest.
 #pragma once
 
 #include <vector>
