@@ -203,12 +203,21 @@ struct Piece {
   std::optional<Vec2> end_step;  ///< the grid direction of the node the cubic ends at
 };
 
+// The G2 Hermite cubic of a span nearest the path, and how far from it.
+struct Fitted {
+  std::optional<Cubic> cubic;
+  double deviation = 1e300;
+  bool within(double budget) const { return cubic && deviation <= budget; }
+};
+
 class SpanWriter {
  public:
   SpanWriter(const ChainPath& path, double budget, ChainCubics& out) : path_(path), budget_(budget), out_(out) {}
 
-  void fit(double a, double b, std::optional<Vec2> end_step, int depth, std::vector<Piece>& pieces) {
-    Fitted f = best_cubic(a, b);
+  /// `known`: the span's best cubic when the caller has fitted it already.
+  void fit(double a, double b, std::optional<Vec2> end_step, int depth, std::vector<Piece>& pieces,
+           std::optional<Fitted> known = std::nullopt) {
+    Fitted f = known ? std::move(*known) : best_cubic(a, b);
     if (f.within(budget_) || depth >= max_depth) {
       if (!f.cubic) {  // no G2 cubic at all: keep G1 with third-chord handles
         const LacPoint pa = path_.at(a), pb = path_.at(b);
@@ -222,26 +231,21 @@ class SpanWriter {
     const std::vector<Cut> cuts = cut_candidates(a, b);
     // Where one cut leaves two cubics within the budget, the cut whose node rounds best.
     const Cut* chosen = &cuts.front();
+    std::optional<Fitted> left, right;  // the chosen cut's halves, when each is one cubic
     double coarsest = 1e300;
     for (const Cut& cut : cuts) {
-      const Fitted left = best_cubic(a, cut.sigma), right = best_cubic(cut.sigma, b);
-      if (!left.within(budget_) || !right.within(budget_)) continue;
-      const double q = grid_coarseness(*left.cubic, *right.cubic, cut);
-      if (q < coarsest) coarsest = q, chosen = &cut;
+      Fitted l = best_cubic(a, cut.sigma), r = best_cubic(cut.sigma, b);
+      if (!l.within(budget_) || !r.within(budget_)) continue;
+      const double q = grid_coarseness(*l.cubic, *r.cubic, cut);
+      if (q < coarsest) coarsest = q, chosen = &cut, left = std::move(l), right = std::move(r);
       if (coarsest <= fine_enough) break;  // the grid sets its curvature finely: look no further
     }
     const Cut cut = *chosen;
-    fit(a, cut.sigma, cut.step, depth + 1, pieces);
-    fit(cut.sigma, b, end_step, depth + 1, pieces);
+    fit(a, cut.sigma, cut.step, depth + 1, pieces, std::move(left));
+    fit(cut.sigma, b, end_step, depth + 1, pieces, std::move(right));
   }
 
  private:
-  struct Fitted {
-    std::optional<Cubic> cubic;
-    double deviation = 1e300;
-    bool within(double budget) const { return cubic && deviation <= budget; }
-  };
-
   // The G2 Hermite cubic of [a, b] nearest the path.
   Fitted best_cubic(double a, double b) const {
     const LacPoint pa = path_.at(a), pb = path_.at(b);

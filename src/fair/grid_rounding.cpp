@@ -82,7 +82,7 @@ void resolve_handle_lengths(std::vector<OutlineNode>& nodes, const std::vector<O
     if (!a.out_handle || !b.in_handle) continue;
     const Vec2 ta = *a.out_handle - a.point, tb = b.point - *b.in_handle;
     if (norm(ta) == 0.0 || norm(tb) == 0.0) continue;
-    const Cubic ideal_cubic{fa.point, *fa.out_handle, *fb.in_handle, fb.point};
+    const Cubic ideal_cubic = outline_cubic(ideal, i);
     const double ka = node_curvature(ideal_cubic, SegmentEnd::start), kb = node_curvature(ideal_cubic, SegmentEnd::end);
     const HermiteEnd start{a.point, ta / norm(ta), ka}, end{b.point, tb / norm(tb), kb};
     const double want_a = norm(*fa.out_handle - fa.point), want_b = norm(fb.point - *fb.in_handle);

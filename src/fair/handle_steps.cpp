@@ -102,9 +102,10 @@ CubicChoices cubic_choices(const std::vector<OutlineNode>& nodes, const std::vec
   };
   if (line_before && steps[i]) add(c.ins, handles_meeting_line(nodes[j], steps[j], false, nodes[i], *steps[i]));
   if (line_after && steps[j]) add(c.outs, handles_meeting_line(nodes[i], steps[i], true, nodes[j], *steps[j]));
-  const Cubic unrounded{ideal[i].point, *ideal[i].out_handle, *ideal[j].in_handle, ideal[j].point};
+  const Cubic unrounded = outline_cubic(ideal, i);
   const Vec2 p0 = nodes[i].point, p3 = nodes[j].point;
-  const double allowed = std::max(limits.allowance, parametric_distance(Cubic{p0, c.outs[0], c.ins[0], p3}, unrounded));
+  // The rounded handles come first among the candidates: the cubic as rounding left it.
+  const double allowed = std::max(limits.allowance, parametric_distance(outline_cubic(nodes, i), unrounded));
   const int ideal_changes = sign_changes(unrounded), ideal_extrema = inner_axis_extrema(unrounded);
   for (const Vec2 out : c.outs)
     for (const Vec2 in : c.ins) {
@@ -192,14 +193,8 @@ void nudge_jumping_nodes(std::vector<OutlineNode>& nodes, const std::vector<Outl
                          std::span<const std::optional<Vec2>> steps, const OutlineJoins& joins,
                          const HandleStepLimits& limits) {
   const std::size_t n = nodes.size();
-  auto cubic_at = [&](std::size_t i) {
-    const std::size_t j = (i + 1) % n;
-    return Cubic{nodes[i].point, *nodes[i].out_handle, *nodes[j].in_handle, nodes[j].point};
-  };
-  auto ideal_at = [&](std::size_t i) {
-    const std::size_t j = (i + 1) % n;
-    return Cubic{ideal[i].point, *ideal[i].out_handle, *ideal[j].in_handle, ideal[j].point};
-  };
+  auto cubic_at = [&](std::size_t i) { return outline_cubic(nodes, i); };
+  auto ideal_at = [&](std::size_t i) { return outline_cubic(ideal, i); };
   auto node_cost = [&](std::size_t k) {
     if (joins.joins_cubics(k))
       return jump_cost(jump(node_curvature(cubic_at((k + n - 1) % n), SegmentEnd::end),

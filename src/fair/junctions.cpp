@@ -62,6 +62,52 @@ std::vector<std::size_t> prominent_extrema(const std::vector<double>& f, std::si
   return {ext.begin() + 1, ext.end() - 1};
 }
 
+// Split junctions inserted where a piece turns by more than `max_turning`, evenly in θ.
+std::vector<Junction> cap_turning(std::vector<Junction> out, const RunReference& run, double max_turning) {
+  const double L = run.length();
+  const bool closed = run.closed();
+  if (closed && out.empty()) out.push_back({0.0, JunctionKind::split});
+  std::vector<Junction> capped;
+  const std::size_t m = out.size();
+  for (std::size_t i = 0; i < (closed ? m : m - 1); ++i) {
+    const double a = out[i].s, b = i + 1 < m ? out[i + 1].s : out[0].s + L;
+    capped.push_back(out[i]);
+    const double turning = run.theta_at(b) - run.theta_at(a);
+    const int parts = static_cast<int>(std::ceil(std::abs(turning) / max_turning - 1e-9));
+    for (int p = 1; p < parts; ++p) {
+      // where θ first reaches p/parts of the piece's turning
+      const double target = run.theta_at(a) + turning * p / parts;
+      double lo = a, hi = b;
+      for (int it = 0; it < 50; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        ((run.theta_at(mid) - target) * turning < 0.0 ? lo : hi) = mid;
+      }
+      const double at = 0.5 * (lo + hi);
+      capped.push_back({closed ? std::fmod(at, L) : at, JunctionKind::split});
+    }
+  }
+  if (!closed) capped.push_back(out.back());
+  std::sort(capped.begin(), capped.end(), earlier);
+  return capped;
+}
+
+// Junctions (sorted) closer than `gap` are one; the stronger kind stays (the enum's order).
+std::vector<Junction> merge_close(const std::vector<Junction>& sorted, double L, bool closed, double gap) {
+  std::vector<Junction> distinct;
+  for (const Junction& j : sorted) {
+    if (!distinct.empty() && j.s - distinct.back().s < gap) {
+      if (j.kind < distinct.back().kind) distinct.back() = j;
+      continue;
+    }
+    distinct.push_back(j);
+  }
+  if (closed && distinct.size() > 1 && distinct.front().s + L - distinct.back().s < gap) {
+    if (distinct.back().kind < distinct.front().kind) distinct.front() = distinct.back();
+    distinct.pop_back();
+  }
+  return distinct;
+}
+
 }  // namespace
 
 JunctionOptions junction_options(const FairSettings& settings) {
@@ -162,45 +208,9 @@ std::vector<Junction> select_junctions(const RunReference& run, bool zero_curvat
   }
   if (!closed) out.push_back({L, JunctionKind::run_end});
   for (Junction& j : out) j.s = closed ? std::fmod(j.s, L) : j.s;
-  std::sort(out.begin(), out.end(), [](const Junction& a, const Junction& b) { return a.s < b.s; });
+  std::sort(out.begin(), out.end(), earlier);
 
-  // Cap the turning per piece.
-  if (closed && out.empty()) out.push_back({0.0, JunctionKind::split});
-  std::vector<Junction> capped;
-  const std::size_t m = out.size();
-  for (std::size_t i = 0; i < (closed ? m : m - 1); ++i) {
-    const double a = out[i].s, b = i + 1 < m ? out[i + 1].s : out[0].s + L;
-    capped.push_back(out[i]);
-    const double turning = run.theta_at(b) - run.theta_at(a);
-    const int parts = static_cast<int>(std::ceil(std::abs(turning) / options.max_turning_rad - 1e-9));
-    for (int p = 1; p < parts; ++p) {
-      // where θ first reaches p/parts of the piece's turning
-      const double target = run.theta_at(a) + turning * p / parts;
-      double lo = a, hi = b;
-      for (int it = 0; it < 50; ++it) {
-        const double mid = 0.5 * (lo + hi);
-        ((run.theta_at(mid) - target) * turning < 0.0 ? lo : hi) = mid;
-      }
-      const double at = 0.5 * (lo + hi);
-      capped.push_back({closed ? std::fmod(at, L) : at, JunctionKind::split});
-    }
-  }
-  if (!closed) capped.push_back(out.back());
-  std::sort(capped.begin(), capped.end(), [](const Junction& a, const Junction& b) { return a.s < b.s; });
-  // Junctions closer than a quarter window are one; the stronger kind stays (the enum's order).
-  std::vector<Junction> distinct;
-  for (const Junction& j : capped) {
-    if (!distinct.empty() && j.s - distinct.back().s < 0.25 * options.window_units) {
-      if (j.kind < distinct.back().kind) distinct.back() = j;
-      continue;
-    }
-    distinct.push_back(j);
-  }
-  if (closed && distinct.size() > 1 && distinct.front().s + L - distinct.back().s < 0.25 * options.window_units) {
-    if (distinct.back().kind < distinct.front().kind) distinct.front() = distinct.back();
-    distinct.pop_back();
-  }
-  return distinct;
+  return merge_close(cap_turning(out, run, options.max_turning_rad), L, closed, 0.25 * options.window_units);
 }
 
 }  // namespace gf

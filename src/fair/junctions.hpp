@@ -20,6 +20,9 @@ struct Junction {
   JunctionKind kind;
 };
 
+/// Orders junctions along the run.
+inline bool earlier(const Junction& a, const Junction& b) { return a.s < b.s; }
+
 struct JunctionOptions {
   double window_units;
   double tolerance_units;

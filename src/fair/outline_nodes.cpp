@@ -2,6 +2,11 @@
 
 namespace gf {
 
+Cubic outline_cubic(const std::vector<OutlineNode>& nodes, std::size_t i) {
+  const OutlineNode &a = nodes[i], &b = nodes[(i + 1) % nodes.size()];
+  return {a.point, *a.out_handle, *b.in_handle, b.point};
+}
+
 Contour to_contour(const std::vector<OutlineNode>& nodes, bool closed) {
   Contour c;
   c.closed = closed;
@@ -10,7 +15,7 @@ Contour to_contour(const std::vector<OutlineNode>& nodes, bool closed) {
     c.nodes.push_back(NodeFlags{false, nodes[i].smooth});
     if (!closed && i + 1 == n) break;
     const OutlineNode &a = nodes[i], &b = nodes[(i + 1) % n];
-    if (a.out_handle && b.in_handle) c.segments.emplace_back(Cubic{a.point, *a.out_handle, *b.in_handle, b.point});
+    if (a.out_handle && b.in_handle) c.segments.emplace_back(outline_cubic(nodes, i));
     else c.segments.emplace_back(Line{a.point, b.point});
   }
   return c;

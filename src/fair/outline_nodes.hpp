@@ -21,6 +21,9 @@ struct OutlineNode {
   std::optional<Vec2> grid_step;
 };
 
+/// The cubic from node i to node i + 1 (node 0 after the last): both handles must be present.
+Cubic outline_cubic(const std::vector<OutlineNode>& nodes, std::size_t i);
+
 /// Node i starts segment i: a cubic when node i has an out-handle and node i + 1 an in-handle,
 /// else a line. A closed contour's last segment returns to node 0.
 Contour to_contour(const std::vector<OutlineNode>& nodes, bool closed);

@@ -10,9 +10,9 @@
 #include "fair/initial_tangents.hpp"
 #include "fair/junctions.hpp"
 #include "fair/run_reference.hpp"
-#include "geom/smoothing_spline.hpp"
 #include "geom/curvature.hpp"
 #include "geom/polyline_distance.hpp"
+#include "geom/smoothing_spline.hpp"
 
 namespace gf {
 
@@ -433,7 +433,7 @@ FairedRun fair_run(const SmoothRun& run, const FairSettings& settings, double bu
       return result;
     }
     for (const double c : cuts) junctions.push_back({c, JunctionKind::split});
-    std::sort(junctions.begin(), junctions.end(), [](const Junction& a, const Junction& b) { return a.s < b.s; });
+    std::sort(junctions.begin(), junctions.end(), earlier);
   }
   result.reason = (too_far ? "still " + std::to_string(result.deviation) + " units from the source"
                            : std::string("no drawable G2 chain on the junctions")) +

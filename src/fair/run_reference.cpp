@@ -96,9 +96,14 @@ double RunReference::theta_at(double s) const {
   return a.theta + f * (b.theta - a.theta) + turns * total_turning();
 }
 
-double RunReference::mean_curvature(double s, double window) const {
+std::pair<double, double> RunReference::window_around(double s, double window) const {
   double lo = s - window / 2, hi = s + window / 2;
   if (!closed_) lo = std::max(lo, 0.0), hi = std::min(hi, length_);
+  return {lo, hi};
+}
+
+double RunReference::mean_curvature(double s, double window) const {
+  const auto [lo, hi] = window_around(s, window);
   return hi > lo ? (theta_at(hi) - theta_at(lo)) / (hi - lo) : 0.0;
 }
 
@@ -117,8 +122,7 @@ Vec2 RunReference::mean_point(double s, double window) const {
 }
 
 Vec2 RunReference::mean_tangent(double s, double window) const {
-  double lo = s - window / 2, hi = s + window / 2;
-  if (!closed_) lo = std::max(lo, 0.0), hi = std::min(hi, length_);
+  const auto [lo, hi] = window_around(s, window);
   const Vec2 d = point_at(hi) - point_at(lo);
   const double n = norm(d);
   return n > 0.0 ? d / n : tangent_at(s);

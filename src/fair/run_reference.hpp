@@ -5,6 +5,7 @@
 #pragma once
 
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "fair/contour_plan.hpp"
@@ -64,6 +65,8 @@ class RunReference {
   };
   Location locate(double s) const;
   double wrap(double s) const;
+  /// [s − w/2, s + w/2], clipped to an open run's ends.
+  std::pair<double, double> window_around(double s, double window) const;
   std::vector<Cubic> cubics_;
   std::vector<ReferenceSample> samples_;
   double length_ = 0.0;

@@ -46,6 +46,12 @@ Vec2 BSplineBasis::point_at(std::span<const Vec2> controls, double u) const {
   return p;
 }
 
+std::vector<Cubic> BSplineBasis::span_cubics(std::span<const Vec2> controls) const {
+  std::vector<Cubic> out;
+  for (int s = 0; s < spans_; ++s) out.push_back(span_cubic(controls, s));
+  return out;
+}
+
 Cubic BSplineBasis::span_cubic(std::span<const Vec2> controls, int s) const {
   const double a0 = double(s) / spans_, a1 = double(s + 1) / spans_;
   // The end of the last periodic span is u = 1 ≡ 0; evaluate it as the start of span 0.

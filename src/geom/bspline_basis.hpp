@@ -31,6 +31,8 @@ class BSplineBasis {
   Vec2 point_at(std::span<const Vec2> controls, double u) const;
   /// Span s (0 … spans − 1) as a cubic Bézier: exact, since each span is a cubic polynomial.
   Cubic span_cubic(std::span<const Vec2> controls, int s) const;
+  /// Every span as a cubic Bézier, in order.
+  std::vector<Cubic> span_cubics(std::span<const Vec2> controls) const;
 
   /// The point at u of the spline given by its spans (span_cubic of each).
   Vec2 point_on_spans(std::span<const Cubic> spans, double u) const;

@@ -21,10 +21,6 @@ BSplineFit fit_cubic_bspline(std::span<const Vec2> points, int span_count, bool 
   const BSplineBasis basis(span_count, false);
   const int n = basis.control_count();
   std::vector<Vec2> control(static_cast<std::size_t>(n));
-  const auto to_spans = [&] {
-    fit.spans.clear();
-    for (int s = 0; s < span_count; ++s) fit.spans.push_back(basis.span_cubic(control, s));
-  };
   // Least squares for the controls with the end conditions as constraints, solved with
   // Lagrange multipliers (the KKT system [2AᵀA Cᵀ; C 0] [c; λ] = [2Aᵀb; d]): the clamped ends
   // interpolate the first and last points, and a closed sequence also leaves its first point
@@ -57,7 +53,7 @@ BSplineFit fit_cubic_bspline(std::span<const Vec2> points, int span_count, bool 
     for (int j = 0; j < n; ++j) control[j] = {solution(j, 0), solution(j, 1)};
     control.front() = points.front();  // equal already, up to the solver's rounding
     control.back() = points.back();
-    to_spans();
+    fit.spans = basis.span_cubics(control);
     for (int i = 1; i + 1 < m; ++i) u[i] = basis.foot_parameter(fit.spans, points[i], u[i], 1);
   }
   for (int i = 0; i < m; ++i) fit.max_residual = std::max(fit.max_residual, distance(basis.point_at(control, u[i]), points[i]));

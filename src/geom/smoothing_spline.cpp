@@ -123,11 +123,7 @@ class SmoothingProblem {
     return c;
   }
 
-  std::vector<Cubic> spans(std::span<const Vec2> controls) const {
-    std::vector<Cubic> out;
-    for (int s = 0; s < basis_.spans(); ++s) out.push_back(basis_.span_cubic(controls, s));
-    return out;
-  }
+  std::vector<Cubic> spans(std::span<const Vec2> controls) const { return basis_.span_cubics(controls); }
 
   /// Each point's foot on the curve (three Newton steps from its parameter) and the largest distance.
   double project(std::span<const Cubic> spans, std::vector<double>& feet) const {
