@@ -96,7 +96,7 @@ Attempt fair_with_budgets(const ContourPlan& plan, const FairSettings& settings,
     for (std::size_t k = 0; k < faired.chains.size(); ++k) {
       const FairedChain& chain = faired.chains[k];
       a.mismatch = std::max(a.mismatch, chain.max_mismatch_relative);
-      ChainCubics cubics = write_chain_as_cubics(chain, budgets.cubic);
+      ChainCubics cubics = write_chain_as_cubics(chain, budgets.cubic, settings.flat_curvature);
       a.g1_nodes += cubics.g1_fallbacks;
       if (chain.closed) {
         a.nodes = std::move(cubics.nodes);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <numbers>
 #include <numeric>
 
@@ -17,7 +18,11 @@ namespace {
 constexpr int max_depth = 6;
 constexpr int cubic_samples = 48;
 constexpr double min_handle_fraction = 0.03;
-constexpr double fine_enough = 0.02;  // of κ per grid step at a cut node
+constexpr double fine_enough = 0.03;  // of κ per grid step at a node
+constexpr double infeasible = std::numeric_limits<double>::infinity();
+constexpr double no_cubic = 1e300;    // the deviation of a span no G2 Hermite cubic spans
+constexpr double far_off = 4.0;       // a cubic this many budgets off: a longer one from its start is no nearer
+constexpr double edge_margin = 0.05;  // no grid node within this share of a span's turning or length of its ends
 
 // Short primitive integer directions, |d|² ≤ `longest`: where a span must be cut, the cut goes
 // where the tangent runs along one of them, so rounding keeps the node's handles exactly
@@ -192,10 +197,13 @@ std::vector<RequiredNode> axis_extrema(const ChainPath& path) {
   return out;
 }
 
-double cubic_deviation(const Cubic& c, const std::vector<Vec2>& lac) {
+// The two-sided distance between a cubic and the path's points; past `stop_above`, only that
+// it is past.
+double cubic_deviation(const Cubic& c, const std::vector<Vec2>& lac, double stop_above) {
   std::vector<Vec2> pts;
   for (int k = 0; k <= cubic_samples; ++k) pts.push_back(c.point_at(static_cast<double>(k) / cubic_samples));
-  return std::max(directed_hausdorff(pts, lac), directed_hausdorff(lac, pts));
+  const double there = directed_hausdorff(pts, lac, stop_above);
+  return there > stop_above ? there : std::max(there, directed_hausdorff(lac, pts, stop_above));
 }
 
 struct Piece {
@@ -206,18 +214,18 @@ struct Piece {
 // The G2 Hermite cubic of a span nearest the path, and how far from it.
 struct Fitted {
   std::optional<Cubic> cubic;
-  double deviation = 1e300;
+  double deviation = no_cubic;
   bool within(double budget) const { return cubic && deviation <= budget; }
 };
 
 class SpanWriter {
  public:
-  SpanWriter(const ChainPath& path, double budget, ChainCubics& out) : path_(path), budget_(budget), out_(out) {}
+  SpanWriter(const ChainPath& path, double budget, double flat_curvature, ChainCubics& out)
+      : path_(path), budget_(budget), flat_(flat_curvature), out_(out) {}
 
-  /// `known`: the span's best cubic when the caller has fitted it already.
-  void fit(double a, double b, std::optional<Vec2> end_step, int depth, std::vector<Piece>& pieces,
-           std::optional<Fitted> known = std::nullopt) {
-    Fitted f = known ? std::move(*known) : best_cubic(a, b);
+  void fit(double a, double b, std::optional<Vec2> start_step, std::optional<Vec2> end_step, int depth,
+           std::vector<Piece>& pieces) {
+    Fitted f = best_cubic(a, b);
     if (f.within(budget_) || depth >= max_depth) {
       if (!f.cubic) {  // no G2 cubic at all: keep G1 with third-chord handles
         const LacPoint pa = path_.at(a), pb = path_.at(b);
@@ -228,26 +236,17 @@ class SpanWriter {
       pieces.push_back({*f.cubic, end_step});
       return;
     }
-    const std::vector<Cut> cuts = cut_candidates(a, b);
-    // Where one cut leaves two cubics within the budget, the cut whose node rounds best.
-    const Cut* chosen = &cuts.front();
-    std::optional<Fitted> left, right;  // the chosen cut's halves, when each is one cubic
-    double coarsest = 1e300;
-    for (const Cut& cut : cuts) {
-      Fitted l = best_cubic(a, cut.sigma), r = best_cubic(cut.sigma, b);
-      if (!l.within(budget_) || !r.within(budget_)) continue;
-      const double q = grid_coarseness(*l.cubic, *r.cubic, cut);
-      if (q < coarsest) coarsest = q, chosen = &cut, left = std::move(l), right = std::move(r);
-      if (coarsest <= fine_enough) break;  // the grid sets its curvature finely: look no further
-    }
-    const Cut cut = *chosen;
-    fit(a, cut.sigma, cut.step, depth + 1, pieces, std::move(left));
-    fit(cut.sigma, b, end_step, depth + 1, pieces, std::move(right));
+    if (through_grid_nodes({a, start_step}, {b, end_step}, pieces)) return;
+    // No chain of grid nodes fits: halve the span and try again on each half.
+    const Cut cut = fallback_cut(a, b);
+    fit(a, cut.sigma, start_step, cut.step, depth + 1, pieces);
+    fit(cut.sigma, b, cut.step, end_step, depth + 1, pieces);
   }
 
  private:
-  // The G2 Hermite cubic of [a, b] nearest the path.
-  Fitted best_cubic(double a, double b) const {
+  // The G2 Hermite cubic of [a, b] nearest the path, when one is within `cap`; else a
+  // deviation past `cap` (a cubic past it is not measured to the end).
+  Fitted best_cubic(double a, double b, double cap = std::numeric_limits<double>::infinity()) const {
     const LacPoint pa = path_.at(a), pb = path_.at(b);
     const std::vector<Vec2> lac = path_.points(a, b);
     const double chord = distance(pa.point, pb.point);
@@ -255,8 +254,9 @@ class SpanWriter {
     for (const Cubic& c : g2_hermite_cubics({pa.point, pa.tangent, pa.curvature}, {pb.point, pb.tangent, pb.curvature})) {
       // A handle much shorter than the chord crowds the curvature into the node.
       if (std::min(distance(c.p[0], c.p[1]), distance(c.p[2], c.p[3])) < min_handle_fraction * chord) continue;
-      const double d = cubic_deviation(c, lac);
-      if (d < best.deviation) best = {c, d};
+      const double d = cubic_deviation(c, lac, std::min(cap, best.deviation));
+      if (d < best.deviation && d <= cap) best = {c, d};
+      else if (!best.cubic) best.deviation = std::min(best.deviation, d);
     }
     return best;
   }
@@ -266,41 +266,104 @@ class SpanWriter {
     std::optional<Vec2> step;
   };
 
-  // How coarsely whole grid steps set the curvature at a cut node (fair/handle_steps.hpp):
-  // κ = (2/3)·c/|h|², c the far handle's integer offset, so a step of the far handle moves κ
-  // by about (2/3)·|far step|/(|h|²·|κ|) of itself and a step of h by 2·|d|/|h|. The larger
-  // of the two, at the node's shorter handle.
-  static double grid_coarseness(const Cubic& before, const Cubic& after, const Cut& cut) {
-    const double kappa = std::max(std::abs(node_curvature(before, SegmentEnd::end)), 1e-9);
-    const double h = std::min(distance(before.p[2], before.p[3]), distance(after.p[0], after.p[1]));
-    const double step = cut.step ? norm(*cut.step) : 1.0;
-    return std::max((2.0 / 3.0) * std::sqrt(2.0) / (h * h * kappa), 2.0 * step / h);
+  // How coarsely whole grid steps set the curvature κ at a node whose handle is h long
+  // (fair/handle_steps.hpp): κ = (2/3)·c/h², c the far handle's integer offset, so a step of
+  // the far handle moves κ by about (2/3)·√2/(h²·|κ|) of itself and a step d of h by 2·|d|/h.
+  // Where κ is flat (a line join) other means set it (handles_near_line): 0.
+  double node_coarseness(const Cubic& c, SegmentEnd end, std::optional<Vec2> step) const {
+    const double kappa = std::abs(node_curvature(c, end));
+    if (kappa < flat_) return 0.0;
+    const double h = end == SegmentEnd::start ? distance(c.p[0], c.p[1]) : distance(c.p[2], c.p[3]);
+    return std::max((2.0 / 3.0) * std::sqrt(2.0) / (h * h * kappa), 2.0 * (step ? norm(*step) : 1.0) / h);
   }
 
-  // Where a span may be cut, the preferred first: where the tangent runs along a short grid
-  // direction within the middle 60 % of the span's turning, nearest its middle, and not within
-  // the first or last 15 % of its length, where a piece would be short and its handles coarse
-  // on the grid; else at the chain junction nearest the middle, else at the middle.
-  std::vector<Cut> cut_candidates(double a, double b) const {
+  // The span as the fewest cubics whose inner nodes sit where the tangent runs along a grid
+  // direction (so rounding keeps each node's handles collinear in whole steps) and, among as
+  // few, the ones whose coarsest node the grid sets finest: a shortest path over the grid
+  // nodes, by count and then by the coarsest node. The short directions first; the longer
+  // ones only where no chain of short ones fits. False when none fits.
+  bool through_grid_nodes(Cut a, Cut b, std::vector<Piece>& pieces) const {
+    for (const std::vector<Vec2>* directions : {&fine_, &all_}) {
+      std::vector<Cut> nodes{a};
+      for (const Cut& c : grid_cuts(a.sigma, b.sigma, *directions)) nodes.push_back(c);
+      nodes.push_back(b);
+      const std::size_t n = nodes.size();
+      if (n == 2) continue;
+      // best[j][c]: the finest chain of c cubics from the span's start to node j.
+      struct Best {
+        double coarsest = infeasible;
+        std::size_t from = 0;
+        std::optional<Cubic> cubic;
+      };
+      std::vector<std::vector<Best>> best(n, std::vector<Best>(n));
+      best[0][0].coarsest = 0.0;
+      for (std::size_t i = 0; i + 1 < n; ++i) {
+        if (std::none_of(best[i].begin(), best[i].end(), [](const Best& b) { return b.coarsest < infeasible; })) continue;
+        for (std::size_t j = i + 1; j < n; ++j) {
+          if (i == 0 && j == n - 1) break;  // the whole span: the caller found it too far
+          const Fitted f = best_cubic(nodes[i].sigma, nodes[j].sigma, far_off * budget_);
+          // Far off, a longer cubic from i fares no better (where no G2 cubic exists, it may).
+          if (f.deviation > far_off * budget_ && f.deviation < no_cubic) break;
+          if (!f.within(budget_)) continue;
+          const double q = std::max(node_coarseness(*f.cubic, SegmentEnd::start, nodes[i].step),
+                                    node_coarseness(*f.cubic, SegmentEnd::end, nodes[j].step));
+          for (std::size_t c = 0; c + 1 < n; ++c) {
+            const double via = std::max(best[i][c].coarsest, q);
+            if (via < best[j][c + 1].coarsest) best[j][c + 1] = {via, i, f.cubic};
+          }
+        }
+      }
+      // The fewest cubics, or one more where that sets the coarsest node much finer.
+      const std::vector<Best>& end = best[n - 1];
+      std::size_t count = 0;
+      while (count < n && end[count].coarsest == infeasible) ++count;
+      if (count == n) continue;
+      if (count + 1 < n && end[count].coarsest > fine_enough && end[count + 1].coarsest < 0.5 * end[count].coarsest) ++count;
+      std::vector<Piece> chosen;
+      for (std::size_t j = n - 1, c = count; j > 0; --c) {
+        const Best& b = best[j][c];
+        chosen.push_back({*b.cubic, nodes[j].step});
+        j = b.from;
+      }
+      pieces.insert(pieces.end(), chosen.rbegin(), chosen.rend());
+      return true;
+    }
+    return false;
+  }
+
+  // Where the tangent runs along one of `directions` strictly inside the span's turning and
+  // not at its very ends, in order along the span.
+  std::vector<Cut> grid_cuts(double a, double b, const std::vector<Vec2>& directions) const {
     const Vec2 ta = path_.at(a).tangent, tb = path_.at(b).tangent;
     const double turn = turning_angle(ta, tb);
-    std::vector<std::pair<double, Cut>> ranked;
-    if (std::abs(turn) > 1e-6)
-      for (const std::vector<Vec2>* directions : {&fine_, &coarse_}) {
-        for (const Vec2 d : *directions) {
-          const double rel = turning_angle(ta, d / norm(d));
-          const double f = rel / turn;
-          if (std::abs(f - 0.5) >= 0.3) continue;
-          const double sigma = path_.where_turned(a, b, rel);
-          if (std::abs((sigma - a) / (b - a) - 0.5) > 0.35) continue;
-          ranked.push_back({std::abs(f - 0.5), {sigma, d}});
-        }
-        if (!ranked.empty()) break;  // the coarse directions only where no short one will do
-      }
-    std::stable_sort(ranked.begin(), ranked.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
     std::vector<Cut> out;
-    for (const auto& r : ranked) out.push_back(r.second);
-    if (!out.empty()) return out;
+    if (std::abs(turn) < 1e-6) return out;
+    for (const Vec2 d : directions) {
+      const double rel = turning_angle(ta, d / norm(d));
+      const double f = rel / turn;
+      if (f <= edge_margin || f >= 1.0 - edge_margin) continue;
+      const double sigma = path_.where_turned(a, b, rel);
+      const double g = (sigma - a) / (b - a);
+      if (g > edge_margin && g < 1.0 - edge_margin) out.push_back({sigma, d});
+    }
+    std::sort(out.begin(), out.end(), [](const Cut& x, const Cut& y) { return x.sigma < y.sigma; });
+    return out;
+  }
+
+  // Where a span no chain of grid nodes fits is halved: where the tangent runs along a grid
+  // direction nearest the middle of its turning, else at the chain junction nearest the
+  // middle of its length, else at the middle.
+  Cut fallback_cut(double a, double b) const {
+    const Vec2 ta = path_.at(a).tangent, tb = path_.at(b).tangent;
+    const double turn = turning_angle(ta, tb);
+    std::optional<Cut> nearest_half;
+    double off = 0.3;
+    if (std::abs(turn) > 1e-6)
+      for (const Cut& c : grid_cuts(a, b, all_)) {
+        const double f = turning_angle(ta, *c.step / norm(*c.step)) / turn;
+        if (std::abs(f - 0.5) < off) off = std::abs(f - 0.5), nearest_half = c;
+      }
+    if (nearest_half) return *nearest_half;
     const double mid = 0.5 * (a + b), width = b - a;
     double cut = mid, nearest = 0.3 * width;
     for (std::size_t i = 1; i < path_.segment_count(); ++i)
@@ -308,18 +371,19 @@ class SpanWriter {
         const double j = path_.segment_start(i) + offset;
         if (std::abs(j - mid) < nearest) nearest = std::abs(j - mid), cut = j;
       }
-    return {{cut, std::nullopt}};
+    return {cut, std::nullopt};
   }
 
   const ChainPath& path_;
   double budget_;
+  double flat_;
   ChainCubics& out_;
-  std::vector<Vec2> fine_ = grid_directions(5), coarse_ = grid_directions(13);
+  std::vector<Vec2> fine_ = grid_directions(5), all_ = grid_directions(13);
 };
 
 }  // namespace
 
-ChainCubics write_chain_as_cubics(const FairedChain& chain, double budget) {
+ChainCubics write_chain_as_cubics(const FairedChain& chain, double budget, double flat_curvature) {
   ChainCubics out;
   const ChainPath path(chain);
   const double total = path.total();
@@ -340,13 +404,13 @@ ChainCubics write_chain_as_cubics(const FairedChain& chain, double budget) {
   if (chain.closed && distinct.size() > 1 && distinct.front().sigma + total - distinct.back().sigma < 0.5) distinct.pop_back();
   if (chain.closed && distinct.empty()) distinct.push_back({0.0, std::nullopt});
 
-  SpanWriter writer(path, budget, out);
+  SpanWriter writer(path, budget, flat_curvature, out);
   std::vector<Piece> pieces;
   const std::size_t n = distinct.size(), spans = chain.closed ? n : n - 1;
   for (std::size_t i = 0; i < spans; ++i) {
     const RequiredNode& next = distinct[(i + 1) % n];
     const double b = i + 1 < n ? next.sigma : next.sigma + total;
-    writer.fit(distinct[i].sigma, b, next.grid_step, 0, pieces);
+    writer.fit(distinct[i].sigma, b, distinct[i].grid_step, next.grid_step, 0, pieces);
   }
   // Nodes: the start of every cubic (and an open chain's last end); a node's grid step is the
   // end step of the cubic before it.

@@ -2,8 +2,9 @@
 // the chain's ends (corners, inflections, line joins) and at every horizontal and vertical
 // extremum; between them as few cubics as the budget allows, each the G2 Hermite cubic of its
 // ends (geom/g2_hermite.hpp), so curvature matches on both sides of every node. A span whose
-// best cubic strays too far is cut where the tangent runs along a short grid direction near
-// the middle of its turning, preferring the cut whose node rounding can set finest.
+// best cubic strays too far becomes the fewest cubics whose inner nodes sit where the tangent
+// runs along a short grid direction (a shortest path over those places), and among as few the
+// ones whose coarsest node rounding can set finest, span ends included.
 #pragma once
 
 #include <vector>
@@ -18,6 +19,8 @@ struct ChainCubics {
   int g1_fallbacks = 0;            ///< spans where no G2 Hermite cubic existed within the depth limit
 };
 
-ChainCubics write_chain_as_cubics(const FairedChain& chain, double budget_units);
+/// `flat_curvature`: below it a node's curvature counts as zero (a line join), not as a
+/// curvature the grid must set finely.
+ChainCubics write_chain_as_cubics(const FairedChain& chain, double budget_units, double flat_curvature);
 
 }  // namespace gf

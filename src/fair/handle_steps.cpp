@@ -1,11 +1,13 @@
 #include "fair/handle_steps.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
 #include "geom/critical_points.hpp"
 #include "geom/curvature.hpp"
+#include "geom/polyline_distance.hpp"
 
 namespace gf {
 
@@ -53,12 +55,22 @@ std::vector<Vec2> handles_meeting_line(const OutlineNode& node, std::optional<Ve
   return {line_end.point + line_dir * std::round(dot(h - line_end.point, line_dir) / dot(line_dir, line_dir))};
 }
 
-// How far a cubic moved from its unrounded self, measured at the same parameters (a bound
-// on the distance between the two curves).
-double parametric_distance(const Cubic& a, const Cubic& b) {
+// How far a cubic moved from its unrounded self: measured at the same parameters (a bound on
+// the distance between the two curves) when that is within `within`, else as the two-sided
+// distance between the curves themselves, which a handle slid along its own tangent moves
+// far less than it moves the parameters.
+double moved_distance(const Cubic& a, const Cubic& b, double within) {
   double d = 0.0;
   for (int k = 0; k <= 8; ++k) d = std::max(d, distance(a.point_at(k / 8.0), b.point_at(k / 8.0)));
-  return d;
+  if (d <= within) return d;
+  constexpr int n = 24;
+  std::array<Vec2, n + 1> pa, pb;
+  for (int k = 0; k <= n; ++k) pa[k] = a.point_at(double(k) / n), pb[k] = b.point_at(double(k) / n);
+  // Past `within`, only that it is past: the middle, where a far move shows most, first.
+  const double middle = directed_hausdorff(std::span<const Vec2>(&pa[n / 2], 1), pb);
+  if (middle > within) return std::min(d, middle);
+  const double there = directed_hausdorff(pa, pb, within);
+  return std::min(d, there > within ? there : std::max(there, directed_hausdorff(pb, pa, within)));
 }
 
 // How often the sign of κ changes along a cubic (at ninths of its parameter; κ = 0 has no sign).
@@ -105,13 +117,13 @@ CubicChoices cubic_choices(const std::vector<OutlineNode>& nodes, const std::vec
   const Cubic unrounded = outline_cubic(ideal, i);
   const Vec2 p0 = nodes[i].point, p3 = nodes[j].point;
   // The rounded handles come first among the candidates: the cubic as rounding left it.
-  const double allowed = std::max(limits.allowance, parametric_distance(outline_cubic(nodes, i), unrounded));
+  const double allowed = std::max(limits.allowance, moved_distance(outline_cubic(nodes, i), unrounded, limits.allowance));
   const int ideal_changes = sign_changes(unrounded), ideal_extrema = inner_axis_extrema(unrounded);
   for (const Vec2 out : c.outs)
     for (const Vec2 in : c.ins) {
       const Cubic cubic{p0, out, in, p3};
       const double ks = node_curvature(cubic, SegmentEnd::start), ke = node_curvature(cubic, SegmentEnd::end);
-      const double moved = parametric_distance(cubic, unrounded);
+      const double moved = moved_distance(cubic, unrounded, allowed);
       double cost = moved > allowed ? infeasible : 0.01 * (moved / allowed) * (moved / allowed);
       // A curve meeting a line tangentially meets it with κ = 0.
       if (line_before) cost += jump_cost(jump(ks, 0.0, limits.flat_curvature));
@@ -186,6 +198,20 @@ struct OutlineJoins {
   }
 };
 
+// The curvature jump at node k: between its two cubics, or from zero where it meets a line;
+// none elsewhere.
+double join_jump(const OutlineJoins& joins, std::size_t k, double flat) {
+  const std::vector<OutlineNode>& nodes = joins.nodes;
+  const std::size_t n = nodes.size(), before = (k + n - 1) % n;
+  if (joins.joins_cubics(k))
+    return jump(node_curvature(outline_cubic(nodes, before), SegmentEnd::end),
+                node_curvature(outline_cubic(nodes, k), SegmentEnd::start), flat);
+  if (!joins.meets_line(k)) return 0.0;
+  const double kappa = joins.is_cubic(k) ? node_curvature(outline_cubic(nodes, k), SegmentEnd::start)
+                                         : node_curvature(outline_cubic(nodes, before), SegmentEnd::end);
+  return jump(kappa, 0.0, flat);
+}
+
 // Where whole steps alone leave a jump, the node itself may move a unit (its handles with it,
 // G1 stays exact) and its two handles a step or three: the curvatures of both its cubics
 // change at both their ends, so the jumps at the two neighbours count too.
@@ -195,15 +221,7 @@ void nudge_jumping_nodes(std::vector<OutlineNode>& nodes, const std::vector<Outl
   const std::size_t n = nodes.size();
   auto cubic_at = [&](std::size_t i) { return outline_cubic(nodes, i); };
   auto ideal_at = [&](std::size_t i) { return outline_cubic(ideal, i); };
-  auto node_cost = [&](std::size_t k) {
-    if (joins.joins_cubics(k))
-      return jump_cost(jump(node_curvature(cubic_at((k + n - 1) % n), SegmentEnd::end),
-                            node_curvature(cubic_at(k), SegmentEnd::start), limits.flat_curvature));
-    if (!joins.meets_line(k)) return 0.0;
-    const double kappa = joins.is_cubic(k) ? node_curvature(cubic_at(k), SegmentEnd::start)
-                                     : node_curvature(cubic_at((k + n - 1) % n), SegmentEnd::end);
-    return jump_cost(jump(kappa, 0.0, limits.flat_curvature));
-  };
+  auto node_cost = [&](std::size_t k) { return jump_cost(join_jump(joins, k, limits.flat_curvature)); };
   auto around = [&](std::size_t i) {
     double c = 0.0;
     for (const std::size_t k : {(i + n - 1) % n, i, (i + 1) % n}) c += node_cost(k);
@@ -217,8 +235,8 @@ void nudge_jumping_nodes(std::vector<OutlineNode>& nodes, const std::vector<Outl
   for (std::size_t i = 0; i < n; ++i) {
     if (!joins.joins_cubics(i) || !steps[i] || !fails_around(i)) continue;
     const std::size_t h = (i + n - 1) % n;
-    const double allowed_in = std::max(limits.allowance, parametric_distance(cubic_at(h), ideal_at(h)));
-    const double allowed_out = std::max(limits.allowance, parametric_distance(cubic_at(i), ideal_at(i)));
+    const double allowed_in = std::max(limits.allowance, moved_distance(cubic_at(h), ideal_at(h), limits.allowance));
+    const double allowed_out = std::max(limits.allowance, moved_distance(cubic_at(i), ideal_at(i), limits.allowance));
     // Nor may a nudge add an inflection or an H/V extremum without a node.
     const auto features = [](const Cubic& c) { return std::pair{sign_changes(c), inner_axis_extrema(c)}; };
     const auto most = [&](std::size_t k) {
@@ -248,7 +266,7 @@ void nudge_jumping_nodes(std::vector<OutlineNode>& nodes, const std::vector<Outl
           const double c = around(i);  // the cheap test first
           if (c >= best_cost) continue;
           const Cubic in = cubic_at(h), out = cubic_at(i);
-          if (parametric_distance(in, ideal_at(h)) > allowed_in || parametric_distance(out, ideal_at(i)) > allowed_out) continue;
+          if (moved_distance(in, ideal_at(h), allowed_in) > allowed_in || moved_distance(out, ideal_at(i), allowed_out) > allowed_out) continue;
           const auto [ci, ei] = features(in);
           const auto [co, eo] = features(out);
           if (ci > changes_in || co > changes_out || ei > extrema_in || eo > extrema_out) continue;

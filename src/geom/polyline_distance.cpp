@@ -28,9 +28,34 @@ double squared_distance_to_polyline(Vec2 p, std::span<const Vec2> polyline) {
 
 }  // namespace
 
-double directed_hausdorff(std::span<const Vec2> from, std::span<const Vec2> to_polyline) {
+double directed_hausdorff(std::span<const Vec2> from, std::span<const Vec2> to_polyline, double stop_above) {
+  const double stop2 = stop_above * stop_above;
+  if (to_polyline.size() < 2) {
+    double worst = 0.0;
+    for (const Vec2 p : from) worst = std::max(worst, squared_distance_to_polyline(p, to_polyline));
+    return std::sqrt(worst);
+  }
+  // Exact, with an early exit (Taha & Hanbury 2015): a point with any segment nearer than the
+  // worst so far cannot raise it. Segments are tried outwards from the one nearest the
+  // previous point, so along two curves traced the same way the exit comes at once.
+  const std::size_t segments = to_polyline.size() - 1;
   double worst = 0.0;
-  for (const Vec2 p : from) worst = std::max(worst, squared_distance_to_polyline(p, to_polyline));
+  std::size_t hint = 0;
+  for (const Vec2 p : from) {
+    double nearest = std::numeric_limits<double>::infinity();
+    std::size_t nearest_at = hint;
+    for (std::size_t k = 0; k < 2 * segments; ++k) {
+      const std::size_t step = (k + 1) / 2;
+      if (k % 2 == 1 ? hint + step >= segments : step > hint) continue;
+      const std::size_t i = k % 2 == 1 ? hint + step : hint - step;
+      const double d = squared_distance_to_segment(p, to_polyline[i], to_polyline[i + 1]);
+      if (d < nearest) nearest = d, nearest_at = i;
+      if (nearest <= worst) break;
+    }
+    hint = nearest_at;
+    worst = std::max(worst, nearest);
+    if (worst > stop2) break;
+  }
   return std::sqrt(worst);
 }
 

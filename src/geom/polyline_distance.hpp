@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <utility>
 #include <vector>
@@ -12,8 +13,10 @@
 
 namespace gf {
 
-/// max over `from` of the distance to the polyline through `to_polyline`.
-double directed_hausdorff(std::span<const Vec2> from, std::span<const Vec2> to_polyline);
+/// max over `from` of the distance to the polyline through `to_polyline`; or, as soon as that
+/// is known to exceed `stop_above`, some distance above it (for callers that only compare).
+double directed_hausdorff(std::span<const Vec2> from, std::span<const Vec2> to_polyline,
+                          double stop_above = std::numeric_limits<double>::infinity());
 
 /// A polyline bucketed on a uniform grid, for nearest-distance queries on long polylines
 /// (whole contours): a query looks at rings of cells outwards until no nearer segment can be.

@@ -10,6 +10,7 @@
 
 #include "geom/curvature.hpp"
 #include "io/source.hpp"
+#include "point_set_distance.hpp"
 #include "test_fonts.hpp"
 
 namespace gf {
@@ -22,19 +23,7 @@ std::vector<Vec2> dense(const Contour& c) {
   return out;
 }
 
-double brute_force_hausdorff(const Contour& a, const Contour& b) {
-  const std::vector<Vec2> pa = dense(a), pb = dense(b);
-  auto one_way = [](const std::vector<Vec2>& from, const std::vector<Vec2>& to) {
-    double worst = 0.0;
-    for (const Vec2 p : from) {
-      double best = 1e300;
-      for (const Vec2 q : to) best = std::min(best, distance(p, q));
-      worst = std::max(worst, best);
-    }
-    return worst;
-  };
-  return std::max(one_way(pa, pb), one_way(pb, pa));
-}
+double brute_force_hausdorff(const Contour& a, const Contour& b) { return test::point_set_hausdorff(dense(a), dense(b)); }
 
 void expect_faired(const std::string& font, const std::string& glyph, FairProfile profile) {
   SourceOptions options;
