@@ -35,6 +35,7 @@ struct ChainSpan {
   std::vector<double> s;  ///< arc lengths of its points (increasing; may pass L on a closed run)
   bool closed = false;
   bool zero_start = false, zero_end = false;
+  bool operator==(const ChainSpan&) const = default;
 };
 
 std::vector<ChainSpan> chain_spans(const std::vector<Junction>& junctions, const RunReference& ref, const SmoothRun& run) {
@@ -399,6 +400,9 @@ FairedRun fair_run(const SmoothRun& run, const FairSettings& settings, double bu
                                                      !run.closed && run.end.kind == RunEndKind::line,
                                                      junction_options(settings));
   bool too_far = false;
+  // A span whose chain was found is the same span in every later round (the rounds only cut
+  // and drop junctions of the spans that failed): its chain is kept, not solved again.
+  std::vector<std::pair<ChainSpan, ChainOutcome>> settled;
   for (int round = 0; round < max_rounds; ++round) {
     std::vector<double> cuts, drops;
     too_far = false;
@@ -408,7 +412,11 @@ FairedRun fair_run(const SmoothRun& run, const FairSettings& settings, double bu
     for (const ChainSpan& span : chain_spans(junctions, ref, run)) {
       // After half the rounds, a chain whose solve stalls is kept with its best angles; the
       // cubic writeback then meets the mean curvature at its junctions (G2 in the output).
-      ChainOutcome o = fair_chain(span, ref, source, guide_run, settings, budget, round >= max_rounds / 2);
+      const auto known = std::find_if(settled.begin(), settled.end(), [&](const auto& e) { return e.first == span; });
+      ChainOutcome o = known != settled.end()
+                           ? known->second
+                           : fair_chain(span, ref, source, guide_run, settings, budget, round >= max_rounds / 2);
+      if (known == settled.end() && o.chain && !o.adjusts()) settled.emplace_back(span, o);
       result.deviation = std::max(result.deviation, o.deviation);
       too_far = too_far || o.too_far;
       // A guided span with no chain when the rounds run out (or none to be had) is the guide.
