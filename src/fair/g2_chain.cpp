@@ -23,7 +23,6 @@ std::optional<Vec2> tangent_intersection(Vec2 q0, Vec2 d0, Vec2 q1, Vec2 d1) {
 
 constexpr double min_end_curvature_ratio = 1e-2;
 
-
 double sum_squares(const std::vector<double>& v) {
   double m = 0.0;
   for (const double x : v) m += x * x;

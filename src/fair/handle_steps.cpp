@@ -73,6 +73,12 @@ double moved_distance(const Cubic& a, const Cubic& b, double within) {
   return std::min(d, there > within ? there : std::max(there, directed_hausdorff(pb, pa, within)));
 }
 
+// How far a cubic may move from its unrounded self to gain G2: the allowance, or as far as
+// rounding alone already put it.
+double allowed_move(const Cubic& rounded, const Cubic& unrounded, const HandleStepLimits& limits) {
+  return std::max(limits.allowance, moved_distance(rounded, unrounded, limits.allowance));
+}
+
 // How often the sign of κ changes along a cubic (at ninths of its parameter; κ = 0 has no sign).
 int sign_changes(const Cubic& c) {
   int changes = 0;
@@ -117,7 +123,7 @@ CubicChoices cubic_choices(const std::vector<OutlineNode>& nodes, const std::vec
   const Cubic unrounded = outline_cubic(ideal, i);
   const Vec2 p0 = nodes[i].point, p3 = nodes[j].point;
   // The rounded handles come first among the candidates: the cubic as rounding left it.
-  const double allowed = std::max(limits.allowance, moved_distance(outline_cubic(nodes, i), unrounded, limits.allowance));
+  const double allowed = allowed_move(outline_cubic(nodes, i), unrounded, limits);
   const int ideal_changes = sign_changes(unrounded), ideal_extrema = inner_axis_extrema(unrounded);
   for (const Vec2 out : c.outs)
     for (const Vec2 in : c.ins) {
@@ -235,8 +241,8 @@ void nudge_jumping_nodes(std::vector<OutlineNode>& nodes, const std::vector<Outl
   for (std::size_t i = 0; i < n; ++i) {
     if (!joins.joins_cubics(i) || !steps[i] || !fails_around(i)) continue;
     const std::size_t h = (i + n - 1) % n;
-    const double allowed_in = std::max(limits.allowance, moved_distance(cubic_at(h), ideal_at(h), limits.allowance));
-    const double allowed_out = std::max(limits.allowance, moved_distance(cubic_at(i), ideal_at(i), limits.allowance));
+    const double allowed_in = allowed_move(cubic_at(h), ideal_at(h), limits);
+    const double allowed_out = allowed_move(cubic_at(i), ideal_at(i), limits);
     // Nor may a nudge add an inflection or an H/V extremum without a node.
     const auto features = [](const Cubic& c) { return std::pair{sign_changes(c), inner_axis_extrema(c)}; };
     const auto most = [&](std::size_t k) {

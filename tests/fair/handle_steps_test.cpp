@@ -17,13 +17,6 @@
 namespace gf {
 namespace {
 
-double kappa(const Cubic& c, SegmentEnd end) { return end_curvature(c, end).curvature.value_or(0.0); }
-
-Cubic cubic_from(const std::vector<OutlineNode>& nodes, std::size_t i) {
-  const OutlineNode &a = nodes[i], &b = nodes[(i + 1) % nodes.size()];
-  return {a.point, *a.out_handle, *b.in_handle, b.point};
-}
-
 // An ellipse x = a cos t, y = b sin t through the points where its tangent runs along the
 // given primitive grid directions (in order round it), as G2 Hermite cubics with the exact
 // curvature ab / (a² sin² t + b² cos² t)^{3/2} at the ends, off the grid.
@@ -86,14 +79,14 @@ TEST(HandleSteps, EllipsesKeepG2OnTheGrid) {
     for (std::size_t i = 0; i < n; ++i) {
       const OutlineNode& node = r[i];
       EXPECT_EQ(cross(node.point - *node.in_handle, *node.out_handle - node.point), 0.0);
-      const double k_in = kappa(cubic_from(r, (i + n - 1) % n), SegmentEnd::end);
-      const double k_out = kappa(cubic_from(r, i), SegmentEnd::start);
+      const double k_in = node_curvature(outline_cubic(r, (i + n - 1) % n), SegmentEnd::end);
+      const double k_out = node_curvature(outline_cubic(r, i), SegmentEnd::start);
       ++nodes;
       within += std::abs(k_in - k_out) / std::max(std::abs(k_in), std::abs(k_out)) <= 0.05;
       // No cubic farther from its unrounded self than the allowance, or than rounding alone
       // put it (2 % and 0.05 unit for the sampling on both sides).
-      const Cubic c0 = cubic_from(ideal, i);
-      EXPECT_LE(curve_distance(cubic_from(r, i), c0), 1.02 * std::max(1.0, curve_distance(cubic_from(plain, i), c0)) + 0.05);
+      const Cubic c0 = outline_cubic(ideal, i);
+      EXPECT_LE(curve_distance(outline_cubic(r, i), c0), 1.02 * std::max(1.0, curve_distance(outline_cubic(plain, i), c0)) + 0.05);
     }
   }
   // Whole steps cannot always meet 5 % on a short handle within a unit; nearly always they do
@@ -119,7 +112,7 @@ TEST(HandleSteps, ACurveLeavingALineStartsWithZeroCurvature) {
     nodes[2].grid_step = Vec2{0, 1};
     nodes[0].in_handle = Vec2{0.2, y + top + 40};
     const std::vector<OutlineNode> r = round_to_grid(nodes, true, {5e-4, 1.0});
-    const Cubic c = cubic_from(r, 1);
+    const Cubic c = outline_cubic(r, 1);
     EXPECT_EQ(cross(c.p[1] - c.p[0], c.p[2] - c.p[1]), 0.0) << "trial " << trial;
     EXPECT_EQ(cross(r[1].point - r[0].point, c.p[1] - c.p[0]), 0.0);  // G1 with the line
   }
@@ -182,10 +175,10 @@ TEST(HandleSteps, ACurveLeavingADiagonalLineMeetsItWithoutVisibleCurvature) {
     nodes[2].grid_step = Vec2{1, 1};
     nodes[0].in_handle = start + Vec2{-40, 60};
     const std::vector<OutlineNode> r = round_to_grid(nodes, true, {0.5e-3, 1.0});
-    const Cubic c = cubic_from(r, 1);
+    const Cubic c = outline_cubic(r, 1);
     EXPECT_EQ(cross(r[1].point - r[0].point, c.p[1] - c.p[0]), 0.0) << "trial " << trial;  // G1
-    EXPECT_LE(std::abs(kappa(c, SegmentEnd::start)) * 1000.0, 0.05) << "trial " << trial;
-    exact += kappa(c, SegmentEnd::start) == 0.0;
+    EXPECT_LE(std::abs(node_curvature(c, SegmentEnd::start)) * 1000.0, 0.05) << "trial " << trial;
+    exact += node_curvature(c, SegmentEnd::start) == 0.0;
   }
   EXPECT_GT(exact, 0);
 }
