@@ -304,6 +304,10 @@ ChainOutcome fair_chain(const ChainSpan& span, const RunReference& ref, const Ru
     G2Result g2 = make_g2(chain, G2Tolerance{0.0, 0.1 * max_relative_mismatch});
     if (g2.segments.empty()) return out;
     mismatch = g2.curvature_scale > 0.0 ? g2.max_mismatch / g2.curvature_scale : 0.0;
+    // A guided run has a C2 guide to fall back on, smoother than a chain left with its
+    // curvature jumps (the writeback would bend each junction to the mean curvature).
+    const bool guided = &source != &ref;
+    if (mismatch > max_relative_mismatch && accept_mismatch && guided) return out;
     if (mismatch > max_relative_mismatch && !accept_mismatch) {
       // No G2 within reach of these junctions: more freedom next to the worst junction.
       const auto worst = std::max_element(g2.mismatches.begin(), g2.mismatches.end(),
@@ -410,8 +414,9 @@ FairedRun fair_run(const SmoothRun& run, const FairSettings& settings, double bu
     result.guide_stretches = 0;
     result.deviation = 0.0;
     for (const ChainSpan& span : chain_spans(junctions, ref, run)) {
-      // After half the rounds, a chain whose solve stalls is kept with its best angles; the
-      // cubic writeback then meets the mean curvature at its junctions (G2 in the output).
+      // After half the rounds, a chain whose solve stalls is kept with its best angles (the
+      // cubic writeback then meets the mean curvature at its junctions), or, on a guided
+      // run, gives way to the guide.
       const auto known = std::find_if(settled.begin(), settled.end(), [&](const auto& e) { return e.first == span; });
       ChainOutcome o = known != settled.end()
                            ? known->second
