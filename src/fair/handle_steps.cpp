@@ -17,6 +17,11 @@ constexpr int reach = 3;              // whole steps either way from the rounded
 constexpr double target_jump = 0.03;  // below the check's 5 %, with room for its sampling
 constexpr double wrong_way = 1e4;     // an inflection or extremum the unrounded cubic lacks
 constexpr double infeasible = std::numeric_limits<double>::infinity();
+// Curvature variation a rounded cubic adds inside, relative to its unrounded largest |κ|: free
+// up to 5 %, then weighed a third of a matching curvature jump (whose cost rises 100 per unit),
+// so G2 stays first. Measured: Because We Learn TV 0.59 → 0.55× with g2-jumps 11.0 → 10.7 %.
+constexpr double free_variation = 0.05;
+constexpr double variation_weight = 3.0;
 
 // The jump between two curvatures, relative to the larger unless both are flat.
 double jump(double k1, double k2, double flat) {
@@ -60,8 +65,9 @@ std::vector<Vec2> handles_meeting_line(const OutlineNode& node, std::optional<Ve
 // distance between the curves themselves, which a handle slid along its own tangent moves
 // far less than it moves the parameters.
 double moved_distance(const Cubic& a, const Cubic& b, double within) {
+  // a(t) − b(t) is a cubic with control points p_i − q_i: by the convex hull, none farther.
   double d = 0.0;
-  for (int k = 0; k <= 8; ++k) d = std::max(d, distance(a.point_at(k / 8.0), b.point_at(k / 8.0)));
+  for (int k = 0; k < 4; ++k) d = std::max(d, distance(a.p[k], b.p[k]));
   if (d <= within) return d;
   constexpr int n = 24;
   std::array<Vec2, n + 1> pa, pb;
@@ -98,6 +104,18 @@ int inner_axis_extrema(const Cubic& c) {
   return static_cast<int>(std::count_if(all.begin(), all.end(), [](const AxisExtremum& e) { return e.t > 0.01 && e.t < 0.99; }));
 }
 
+// The total variation of κ along a cubic (at sixteenths of its parameter) and its largest |κ|.
+std::pair<double, double> curvature_variation(const Cubic& c) {
+  double tv = 0.0, most = 0.0, last = 0.0;
+  for (int k = 0; k <= 16; ++k) {
+    const double kappa = curvature(derivatives_at(c, k / 16.0)).value_or(0.0);
+    if (k > 0) tv += std::abs(kappa - last);
+    most = std::max(most, std::abs(kappa));
+    last = kappa;
+  }
+  return {tv, most};
+}
+
 // One cubic of the outline and every choice of its two handles (state = out·ins + in).
 struct CubicChoices {
   std::size_t start = 0, end = 0;  ///< node indices
@@ -125,6 +143,7 @@ CubicChoices cubic_choices(const std::vector<OutlineNode>& nodes, const std::vec
   // The rounded handles come first among the candidates: the cubic as rounding left it.
   const double allowed = allowed_move(outline_cubic(nodes, i), unrounded, limits);
   const int ideal_changes = sign_changes(unrounded), ideal_extrema = inner_axis_extrema(unrounded);
+  const auto [ideal_tv, ideal_most] = curvature_variation(unrounded);
   for (const Vec2 out : c.outs)
     for (const Vec2 in : c.ins) {
       const Cubic cubic{p0, out, in, p3};
@@ -139,6 +158,9 @@ CubicChoices cubic_choices(const std::vector<OutlineNode>& nodes, const std::vec
       if (sign_changes(cubic) > ideal_changes) cost += wrong_way;
       // Nor turn horizontal or vertical inside: an extremum without a node.
       if (inner_axis_extrema(cubic) > ideal_extrema) cost += wrong_way;
+      // Nor gain curvature variation inside (a spike a comb would show), beyond a little.
+      const double excess = (curvature_variation(cubic).first - ideal_tv) / std::max(ideal_most, limits.flat_curvature);
+      if (excess > free_variation) cost += variation_weight * (excess - free_variation);
       c.k_start.push_back(ks), c.k_end.push_back(ke), c.cost.push_back(cost);
     }
   return c;

@@ -36,7 +36,8 @@ std::vector<Vec2> handles_near_line(Vec2 node, Vec2 step, double sign, Vec2 line
 /// smooth nodes; then moves a node still jumping (or next to one) by a unit with its handles,
 /// where that helps. `ideal` is the outline before rounding; no cubic moves farther from it
 /// than the limits allow (as a curve: a handle slid along its tangent moves the curve little),
-/// and none gains an inflection or an H/V extremum.
+/// none gains an inflection or an H/V extremum, and curvature variation inside a cubic beyond
+/// its unrounded self's costs (a third of the weight of a matching jump at a node).
 void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal,
                          std::span<const std::optional<Vec2>> steps, bool closed, const HandleStepLimits& limits);
 

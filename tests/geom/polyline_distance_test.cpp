@@ -10,23 +10,10 @@
 #include <random>
 #include <vector>
 
+#include "point_set_distance.hpp"
+
 namespace gf {
 namespace {
-
-// max over `from` of min over the segments of `to`, straight from the definition.
-double brute_force(const std::vector<Vec2>& from, const std::vector<Vec2>& to) {
-  double worst = 0.0;
-  for (const Vec2 p : from) {
-    double nearest = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i + 1 < to.size(); ++i) {
-      const Vec2 d = to[i + 1] - to[i];
-      const double t = std::clamp(dot(p - to[i], d) / dot(d, d), 0.0, 1.0);
-      nearest = std::min(nearest, distance(p, to[i] + d * t));
-    }
-    worst = std::max(worst, nearest);
-  }
-  return worst;
-}
 
 // A wobbly open curve: n + 1 points along a random walk that turns a little at each step.
 std::vector<Vec2> wobbly(std::mt19937& rng, int n, Vec2 start) {
@@ -55,7 +42,7 @@ TEST(PolylineDistance, EarlyExitAndGridMatchTheDefinition) {
     std::vector<Vec2> b = a;  // a nearby curve traced the same way, sampled differently
     for (Vec2& p : b) p = p + Vec2{offset(rng), offset(rng)};
     if (trial % 2) b = wobbly(rng, 25, {offset(rng), offset(rng)});  // or another curve entirely
-    const double exact = brute_force(a, b);
+    const double exact = test::directed_to_polyline(a, b);
     EXPECT_NEAR(directed_hausdorff(a, b), exact, 1e-12 * (1.0 + exact));
     EXPECT_NEAR(directed_hausdorff(a, PolylineGrid(b, 4.0)), exact, 1e-12 * (1.0 + exact));
   }
@@ -65,7 +52,7 @@ TEST(PolylineDistance, StopAboveIsExactBelowAndSaysPastAbove) {
   std::mt19937 rng(8);
   for (int trial = 0; trial < 100; ++trial) {
     const std::vector<Vec2> a = wobbly(rng, 30, {0, 0}), b = wobbly(rng, 30, {1, 1});
-    const double exact = brute_force(a, b);
+    const double exact = test::directed_to_polyline(a, b);
     EXPECT_NEAR(directed_hausdorff(a, b, 1.5 * exact), exact, 1e-12 * (1.0 + exact));
     EXPECT_GT(directed_hausdorff(a, b, 0.5 * exact), 0.5 * exact);
     EXPECT_LE(directed_hausdorff(a, b, 0.5 * exact), exact * (1.0 + 1e-12));  // never more than the truth
