@@ -14,21 +14,31 @@ namespace gf {
 namespace {
 
 // Points along a contour, dense enough that chords stay within a small fraction of a unit of
-// the curve for glyph-sized curvature.
-std::vector<Vec2> contour_samples(const Contour& c) {
-  std::vector<Vec2> out;
-  for (const Segment& s : c.segments) {
+// the curve for glyph-sized curvature, and for each the segment whose stretch of polyline (to
+// the next point) it starts.
+struct ContourSamples {
+  std::vector<Vec2> points;
+  std::vector<std::size_t> segment_of;
+};
+
+ContourSamples contour_samples(const Contour& c) {
+  ContourSamples out;
+  for (std::size_t i = 0; i < c.segments.size(); ++i) {
+    const Segment& s = c.segments[i];
     if (is_line(s)) {
-      out.push_back(start_point(s));
+      out.points.push_back(start_point(s)), out.segment_of.push_back(i);
       continue;
     }
     double polygon = 0.0;
     Vec2 last = start_point(s);
     for_each_point(s, [&](Vec2 q) { polygon += distance(last, q), last = q; });
     const int n = std::clamp(static_cast<int>(polygon / 3.0), 16, 256);
-    for (int k = 0; k < n; ++k) out.push_back(point_at(s, static_cast<double>(k) / n));
+    for (int k = 0; k < n; ++k) out.points.push_back(point_at(s, static_cast<double>(k) / n)), out.segment_of.push_back(i);
   }
-  if (!c.segments.empty()) out.push_back(c.closed ? start_point(c.segments.front()) : end_point(c.segments.back()));
+  if (!c.segments.empty()) {
+    out.points.push_back(c.closed ? start_point(c.segments.front()) : end_point(c.segments.back()));
+    out.segment_of.push_back(c.segments.size() - 1);
+  }
   return out;
 }
 
@@ -130,14 +140,32 @@ void rotate_to_start(std::vector<OutlineNode>& nodes, Vec2 source_start) {
 
 // A contour's samples, bucketed for distances to it.
 struct SampledContour {
-  std::vector<Vec2> points;
+  ContourSamples samples;
   PolylineGrid grid;
-  explicit SampledContour(const Contour& c) : points(contour_samples(c)), grid(points, 8.0) {}
+  explicit SampledContour(const Contour& c) : samples(contour_samples(c)), grid(samples.points, 8.0) {}
+  const std::vector<Vec2>& points() const { return samples.points; }
 };
 
 double distance_between(const SampledContour& a, const SampledContour& b) {
-  if (a.points.empty() || b.points.empty()) return a.points.size() == b.points.size() ? 0.0 : 1e300;
-  return std::max(directed_hausdorff(a.points, b.grid), directed_hausdorff(b.points, a.grid));
+  if (a.points().empty() || b.points().empty()) return a.points().size() == b.points().size() ? 0.0 : 1e300;
+  return std::max(directed_hausdorff(a.points(), b.grid), directed_hausdorff(b.points(), a.grid));
+}
+
+// How far each segment of `faired` is from the source: its own points from the source, and the
+// source's points whose nearest faired point lies on it. A segment moved by at most the
+// tolerance less this keeps the contour within the tolerance, on both sides of the distance
+// (triangle inequality through the segment's unmoved points).
+std::vector<double> distance_by_segment(const SampledContour& faired, const SampledContour& source, std::size_t segments) {
+  std::vector<double> d(segments, 0.0);
+  if (faired.points().empty() || source.points().empty()) return d;
+  const std::vector<std::size_t>& of = faired.samples.segment_of;
+  for (std::size_t k = 0; k < faired.points().size(); ++k)
+    d[of[k]] = std::max(d[of[k]], source.grid.distance_to(faired.points()[k]));
+  for (const Vec2 p : source.points()) {
+    const PolylineGrid::Nearest n = faired.grid.nearest(p);
+    d[of[n.segment]] = std::max(d[of[n.segment]], n.distance);
+  }
+  return d;
 }
 
 }  // namespace
@@ -173,9 +201,11 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& settings)
     Contour faired = to_contour(a.nodes, source.closed);
     double d = distance_between(SampledContour(faired), sampled_source);
     if (settings.round_to_integers && d <= settings.tolerance_units) {
-      // What the float outline leaves of the tolerance is what rounding may spend on G2
-      // (the distance obeys the triangle inequality; 5 % kept for sampling).
-      const HandleStepLimits limits{settings.flat_curvature, 0.95 * (settings.tolerance_units - d)};
+      // What the float outline leaves of the tolerance, segment by segment, is what rounding
+      // may spend on G2 there (5 % kept for sampling).
+      HandleStepLimits limits{settings.flat_curvature, 0.95 * (settings.tolerance_units - d), {}};
+      for (const double e : distance_by_segment(SampledContour(faired), sampled_source, faired.segments.size()))
+        limits.allowance_by_cubic.push_back(0.95 * (settings.tolerance_units - e));
       faired = to_contour(round_to_grid(a.nodes, source.closed, limits), source.closed);
       d = distance_between(SampledContour(faired), sampled_source);
     }

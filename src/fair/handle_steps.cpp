@@ -79,10 +79,11 @@ double moved_distance(const Cubic& a, const Cubic& b, double within) {
   return std::min(d, there > within ? there : std::max(there, directed_hausdorff(pb, pa, within)));
 }
 
-// How far a cubic may move from its unrounded self to gain G2: the allowance, or as far as
-// rounding alone already put it.
-double allowed_move(const Cubic& rounded, const Cubic& unrounded, const HandleStepLimits& limits) {
-  return std::max(limits.allowance, moved_distance(rounded, unrounded, limits.allowance));
+// How far the cubic from node i may move from its unrounded self to gain G2: its allowance,
+// or as far as rounding alone already put it.
+double allowed_move(const Cubic& rounded, const Cubic& unrounded, const HandleStepLimits& limits, std::size_t i) {
+  const double allowance = limits.allowance_at(i);
+  return std::max(allowance, moved_distance(rounded, unrounded, allowance));
 }
 
 // How often the sign of κ changes along a cubic (at ninths of its parameter; κ = 0 has no sign).
@@ -141,7 +142,7 @@ CubicChoices cubic_choices(const std::vector<OutlineNode>& nodes, const std::vec
   const Cubic unrounded = outline_cubic(ideal, i);
   const Vec2 p0 = nodes[i].point, p3 = nodes[j].point;
   // The rounded handles come first among the candidates: the cubic as rounding left it.
-  const double allowed = allowed_move(outline_cubic(nodes, i), unrounded, limits);
+  const double allowed = allowed_move(outline_cubic(nodes, i), unrounded, limits, i);
   const int ideal_changes = sign_changes(unrounded), ideal_extrema = inner_axis_extrema(unrounded);
   const auto [ideal_tv, ideal_most] = curvature_variation(unrounded);
   for (const Vec2 out : c.outs)
@@ -263,8 +264,8 @@ void nudge_jumping_nodes(std::vector<OutlineNode>& nodes, const std::vector<Outl
   for (std::size_t i = 0; i < n; ++i) {
     if (!joins.joins_cubics(i) || !steps[i] || !fails_around(i)) continue;
     const std::size_t h = (i + n - 1) % n;
-    const double allowed_in = allowed_move(cubic_at(h), ideal_at(h), limits);
-    const double allowed_out = allowed_move(cubic_at(i), ideal_at(i), limits);
+    const double allowed_in = allowed_move(cubic_at(h), ideal_at(h), limits, h);
+    const double allowed_out = allowed_move(cubic_at(i), ideal_at(i), limits, i);
     // Nor may a nudge add an inflection or an H/V extremum without a node.
     const auto features = [](const Cubic& c) { return std::pair{sign_changes(c), inner_axis_extrema(c)}; };
     const auto most = [&](std::size_t k) {

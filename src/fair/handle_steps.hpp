@@ -23,6 +23,13 @@ struct HandleStepLimits {
   double flat_curvature = 5e-4;
   /// How far (units) a cubic may move from its unrounded self to gain G2.
   double allowance = 0.5;
+  /// The same for the cubic from each node, where given (what the unrounded outline leaves of
+  /// the tolerance there); else `allowance` for every cubic.
+  std::vector<double> allowance_by_cubic;
+
+  double allowance_at(std::size_t node) const {
+    return node < allowance_by_cubic.size() ? allowance_by_cubic[node] : allowance;
+  }
 };
 
 /// The handles node + sign·m·step (m ≥ 1 whole steps; sign −1 for an in-handle) nearest the

@@ -84,9 +84,10 @@ std::pair<long, long> PolylineGrid::cell_of(Vec2 p) const {
   return {c, r};
 }
 
-double PolylineGrid::distance_to(Vec2 p) const {
-  if (points_.size() == 1) return distance(p, points_[0]);
+PolylineGrid::Nearest PolylineGrid::nearest(Vec2 p) const {
+  if (points_.size() == 1) return {distance(p, points_[0]), 0};
   double best = std::numeric_limits<double>::infinity();  // squared
+  std::size_t best_at = 0;
   const auto [pc, pr] = cell_of(p);
   // The query's own distance to the grid's box, so rings far outside start counting right.
   const long extent = std::max(columns_, rows_);
@@ -96,15 +97,17 @@ double PolylineGrid::distance_to(Vec2 p) const {
       for (long c = pc - ring; c <= pc + ring; ++c) {
         if (c < 0 || c >= columns_) continue;
         if (std::max(std::abs(r - pr), std::abs(c - pc)) != ring) continue;
-        for (const std::uint32_t i : cells_[static_cast<std::size_t>(r * columns_ + c)])
-          best = std::min(best, squared_distance_to_segment(p, points_[i], points_[i + 1]));
+        for (const std::uint32_t i : cells_[static_cast<std::size_t>(r * columns_ + c)]) {
+          const double d = squared_distance_to_segment(p, points_[i], points_[i + 1]);
+          if (d < best) best = d, best_at = i;
+        }
       }
     }
     // Cells beyond this ring are at least `ring` cells away from p's cell.
     const double reach = static_cast<double>(ring) * cell_;
     if (best <= reach * reach) break;
   }
-  return std::sqrt(best);
+  return {std::sqrt(best), best_at};
 }
 
 double directed_hausdorff(std::span<const Vec2> from, const PolylineGrid& to) {

@@ -3,6 +3,7 @@
 // points (so the bound does not depend on how densely `to` was sampled along straight parts).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <span>
@@ -23,7 +24,13 @@ double directed_hausdorff(std::span<const Vec2> from, std::span<const Vec2> to_p
 class PolylineGrid {
  public:
   PolylineGrid(std::vector<Vec2> polyline, double cell_size);
-  double distance_to(Vec2 p) const;
+  double distance_to(Vec2 p) const { return nearest(p).distance; }
+
+  struct Nearest {
+    double distance = 0.0;
+    std::size_t segment = 0;  ///< from point `segment` to the next
+  };
+  Nearest nearest(Vec2 p) const;
 
  private:
   std::pair<long, long> cell_of(Vec2 p) const;

@@ -85,11 +85,11 @@ TEST(HandleSteps, EllipsesKeepG2OnTheGrid) {
         ellipse(a, b, {500.3 + u(rng), 400.7 + u(rng)}, {{0, 1}, {-1, 1}, {-1, 0}, {-1, -1}, {0, -1}, {1, -1}, {1, 0}, {1, 1}});
     const std::size_t n = ideal.size();
     // Rounded with no room to move, then given a unit to gain G2 in.
-    const std::vector<OutlineNode> plain = round_to_grid(ideal, true, {5e-4, 0.0});
+    const std::vector<OutlineNode> plain = round_to_grid(ideal, true, {5e-4, 0.0, {}});
     std::vector<std::optional<Vec2>> steps;
     for (const OutlineNode& node : plain) steps.push_back(primitive(*node.out_handle - node.point));
     std::vector<OutlineNode> r = plain;
-    choose_handle_steps(r, ideal, steps, true, {5e-4, 1.0});
+    choose_handle_steps(r, ideal, steps, true, {5e-4, 1.0, {}});
     for (std::size_t i = 0; i < n; ++i) {
       const OutlineNode& node = r[i];
       EXPECT_EQ(cross(node.point - *node.in_handle, *node.out_handle - node.point), 0.0);
@@ -134,7 +134,7 @@ TEST(HandleSteps, ACurveLeavingALineStartsWithZeroCurvature) {
     nodes[2].out_handle = Vec2{x + 150, y + top + 40};
     nodes[2].grid_step = Vec2{0, 1};
     nodes[0].in_handle = Vec2{0.2, y + top + 40};
-    const std::vector<OutlineNode> r = round_to_grid(nodes, true, {5e-4, 1.0});
+    const std::vector<OutlineNode> r = round_to_grid(nodes, true, {5e-4, 1.0, {}});
     const Cubic c = outline_cubic(r, 1);
     EXPECT_EQ(cross(c.p[1] - c.p[0], c.p[2] - c.p[1]), 0.0) << "trial " << trial;
     EXPECT_EQ(cross(r[1].point - r[0].point, c.p[1] - c.p[0]), 0.0);  // G1 with the line
@@ -197,7 +197,7 @@ TEST(HandleSteps, ACurveLeavingADiagonalLineMeetsItWithoutVisibleCurvature) {
     nodes[2].out_handle = far + diagonal * 60.0;
     nodes[2].grid_step = Vec2{1, 1};
     nodes[0].in_handle = start + Vec2{-40, 60};
-    const std::vector<OutlineNode> r = round_to_grid(nodes, true, {0.5e-3, 1.0});
+    const std::vector<OutlineNode> r = round_to_grid(nodes, true, {0.5e-3, 1.0, {}});
     const Cubic c = outline_cubic(r, 1);
     EXPECT_EQ(cross(r[1].point - r[0].point, c.p[1] - c.p[0]), 0.0) << "trial " << trial;  // G1
     EXPECT_LE(std::abs(node_curvature(c, SegmentEnd::start)) * 1000.0, 0.05) << "trial " << trial;

@@ -48,6 +48,24 @@ TEST(PolylineDistance, EarlyExitAndGridMatchTheDefinition) {
   }
 }
 
+TEST(PolylineDistance, TheGridNamesTheNearestSegment) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-20.0, 60.0);
+  for (int trial = 0; trial < 50; ++trial) {
+    const std::vector<Vec2> line = wobbly(rng, 30, {0, 0});
+    const PolylineGrid grid(line, 4.0);
+    for (int k = 0; k < 40; ++k) {
+      const Vec2 p{u(rng), u(rng)};
+      const double exact = test::directed_to_polyline({p}, line);
+      const PolylineGrid::Nearest n = grid.nearest(p);
+      ASSERT_LT(n.segment + 1, line.size());
+      EXPECT_NEAR(n.distance, exact, 1e-12 * (1.0 + exact));
+      // The segment named is one at that distance.
+      EXPECT_NEAR(test::directed_to_polyline({p}, {line[n.segment], line[n.segment + 1]}), exact, 1e-12 * (1.0 + exact));
+    }
+  }
+}
+
 TEST(PolylineDistance, StopAboveIsExactBelowAndSaysPastAbove) {
   std::mt19937 rng(8);
   for (int trial = 0; trial < 100; ++trial) {
