@@ -86,35 +86,32 @@ double allowed_move(const Cubic& rounded, const Cubic& unrounded, const HandleSt
   return std::max(allowance, moved_distance(rounded, unrounded, allowance));
 }
 
-// How often the sign of κ changes along a cubic (at ninths of its parameter; κ = 0 has no sign).
-int sign_changes(const Cubic& c) {
-  int changes = 0;
-  double last = 0.0;
-  for (int k = 0; k <= 8; ++k) {
-    const double kappa = curvature(derivatives_at(c, k / 8.0)).value_or(0.0);
-    if (std::abs(kappa) < 1e-12) continue;
-    changes += last * kappa < 0.0;
-    last = kappa;
-  }
-  return changes;
-}
-
 // Horizontal and vertical extrema away from the ends (those within 1 % of t sit on the node).
 int inner_axis_extrema(const Cubic& c) {
   const std::vector<AxisExtremum> all = axis_extrema(c);
   return static_cast<int>(std::count_if(all.begin(), all.end(), [](const AxisExtremum& e) { return e.t > 0.01 && e.t < 0.99; }));
 }
 
-// The total variation of κ along a cubic (at sixteenths of its parameter) and its largest |κ|.
-std::pair<double, double> curvature_variation(const Cubic& c) {
-  double tv = 0.0, most = 0.0, last = 0.0;
+// How κ runs along a cubic, at sixteenths of its parameter: how often its sign changes (κ = 0
+// has no sign), its total variation, and its largest magnitude.
+struct CurvatureShape {
+  int sign_changes = 0;
+  double variation = 0.0, largest = 0.0;
+};
+
+CurvatureShape curvature_shape(const Cubic& c) {
+  CurvatureShape shape;
+  double previous = 0.0, last_signed = 0.0;
   for (int k = 0; k <= 16; ++k) {
     const double kappa = curvature(derivatives_at(c, k / 16.0)).value_or(0.0);
-    if (k > 0) tv += std::abs(kappa - last);
-    most = std::max(most, std::abs(kappa));
-    last = kappa;
+    if (k > 0) shape.variation += std::abs(kappa - previous);
+    shape.largest = std::max(shape.largest, std::abs(kappa));
+    previous = kappa;
+    if (std::abs(kappa) < 1e-12) continue;
+    shape.sign_changes += last_signed * kappa < 0.0;
+    last_signed = kappa;
   }
-  return {tv, most};
+  return shape;
 }
 
 // One cubic of the outline and every choice of its two handles (state = out·ins + in).
@@ -143,24 +140,29 @@ CubicChoices cubic_choices(const std::vector<OutlineNode>& nodes, const std::vec
   const Vec2 p0 = nodes[i].point, p3 = nodes[j].point;
   // The rounded handles come first among the candidates: the cubic as rounding left it.
   const double allowed = allowed_move(outline_cubic(nodes, i), unrounded, limits, i);
-  const int ideal_changes = sign_changes(unrounded), ideal_extrema = inner_axis_extrema(unrounded);
-  const auto [ideal_tv, ideal_most] = curvature_variation(unrounded);
+  const CurvatureShape ideal_shape = curvature_shape(unrounded);
+  const int ideal_extrema = inner_axis_extrema(unrounded);
   for (const Vec2 out : c.outs)
     for (const Vec2 in : c.ins) {
       const Cubic cubic{p0, out, in, p3};
       const double ks = node_curvature(cubic, SegmentEnd::start), ke = node_curvature(cubic, SegmentEnd::end);
       const double moved = moved_distance(cubic, unrounded, allowed);
-      double cost = moved > allowed ? infeasible : 0.01 * (moved / allowed) * (moved / allowed);
+      if (moved > allowed) {
+        c.k_start.push_back(ks), c.k_end.push_back(ke), c.cost.push_back(infeasible);
+        continue;
+      }
+      double cost = 0.01 * (moved / allowed) * (moved / allowed);
       // A curve meeting a line tangentially meets it with κ = 0.
       if (line_before) cost += jump_cost(jump(ks, 0.0, limits.flat_curvature));
       if (line_after) cost += jump_cost(jump(ke, 0.0, limits.flat_curvature));
       // Where the grid allows only near zero, or a corner's handle moves, the cubic must not
       // bend the other way near its end: an inflection the unrounded cubic does not have.
-      if (sign_changes(cubic) > ideal_changes) cost += wrong_way;
+      const CurvatureShape shape = curvature_shape(cubic);
+      if (shape.sign_changes > ideal_shape.sign_changes) cost += wrong_way;
       // Nor turn horizontal or vertical inside: an extremum without a node.
       if (inner_axis_extrema(cubic) > ideal_extrema) cost += wrong_way;
       // Nor gain curvature variation inside (a spike a comb would show), beyond a little.
-      const double excess = (curvature_variation(cubic).first - ideal_tv) / std::max(ideal_most, limits.flat_curvature);
+      const double excess = (shape.variation - ideal_shape.variation) / std::max(ideal_shape.largest, limits.flat_curvature);
       if (excess > free_variation) cost += variation_weight * (excess - free_variation);
       c.k_start.push_back(ks), c.k_end.push_back(ke), c.cost.push_back(cost);
     }
@@ -267,7 +269,7 @@ void nudge_jumping_nodes(std::vector<OutlineNode>& nodes, const std::vector<Outl
     const double allowed_in = allowed_move(cubic_at(h), ideal_at(h), limits, h);
     const double allowed_out = allowed_move(cubic_at(i), ideal_at(i), limits, i);
     // Nor may a nudge add an inflection or an H/V extremum without a node.
-    const auto features = [](const Cubic& c) { return std::pair{sign_changes(c), inner_axis_extrema(c)}; };
+    const auto features = [](const Cubic& c) { return std::pair{curvature_shape(c).sign_changes, inner_axis_extrema(c)}; };
     const auto most = [&](std::size_t k) {
       const auto [a1, b1] = features(ideal_at(k));
       const auto [a2, b2] = features(cubic_at(k));
