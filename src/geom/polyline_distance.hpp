@@ -28,7 +28,7 @@ class PolylineGrid {
 
   struct Nearest {
     double distance = 0.0;
-    std::size_t segment = 0;  ///< from point `segment` to the next
+    std::size_t segment = 0;  ///< from point `segment` to the next (0 for a single point)
   };
   Nearest nearest(Vec2 p) const;
 
