@@ -152,13 +152,13 @@ double distance_between(const SampledContour& a, const SampledContour& b) {
 }
 
 // How far each segment of `faired` is from the source: its own points from the source, and the
-// source's points whose nearest faired point lies on it. A segment moved by at most the
-// tolerance less this keeps the contour within the tolerance, on both sides of the distance
-// (triangle inequality through the segment's unmoved points).
-std::vector<double> distance_by_segment(const SampledContour& faired, const SampledContour& source, std::size_t segments) {
-  std::vector<double> d(segments, 0.0);
-  if (faired.points().empty() || source.points().empty()) return d;
+// source's points whose nearest faired point lies on it. The largest is distance_between the
+// two; a segment moved by at most the tolerance less its own keeps the contour within the
+// tolerance, on both sides of the distance (triangle inequality through its unmoved points).
+std::vector<double> distance_by_segment(const SampledContour& faired, const SampledContour& source) {
   const std::vector<std::size_t>& of = faired.samples.segment_of;
+  std::vector<double> d(of.empty() ? 0 : of.back() + 1, 0.0);
+  if (faired.points().empty() || source.points().empty()) return d;
   for (std::size_t k = 0; k < faired.points().size(); ++k)
     d[of[k]] = std::max(d[of[k]], source.grid.distance_to(faired.points()[k]));
   for (const Vec2 p : source.points()) {
@@ -199,13 +199,15 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& settings)
     }
     rotate_to_start(a.nodes, source.node_point(0));
     Contour faired = to_contour(a.nodes, source.closed);
-    double d = distance_between(SampledContour(faired), sampled_source);
+    const SampledContour sampled(faired);
+    const std::vector<double> by_segment = distance_by_segment(sampled, sampled_source);
+    double d = by_segment.empty() ? distance_between(sampled, sampled_source)
+                                  : *std::max_element(by_segment.begin(), by_segment.end());
     if (settings.round_to_integers && d <= settings.tolerance_units) {
       // What the float outline leaves of the tolerance, segment by segment, is what rounding
       // may spend on G2 there (5 % kept for sampling).
       HandleStepLimits limits{settings.flat_curvature, 0.95 * (settings.tolerance_units - d), {}};
-      for (const double e : distance_by_segment(SampledContour(faired), sampled_source, faired.segments.size()))
-        limits.allowance_by_cubic.push_back(0.95 * (settings.tolerance_units - e));
+      for (const double e : by_segment) limits.allowance_by_cubic.push_back(0.95 * (settings.tolerance_units - e));
       faired = to_contour(round_to_grid(a.nodes, source.closed, limits), source.closed);
       d = distance_between(SampledContour(faired), sampled_source);
     }
