@@ -304,19 +304,20 @@ ChainOutcome fair_chain(const ChainSpan& span, const RunReference& ref, const Ru
     G2Result g2 = make_g2(chain, G2Tolerance{0.0, 0.1 * max_relative_mismatch});
     if (g2.segments.empty()) return out;
     mismatch = g2.curvature_scale > 0.0 ? g2.max_mismatch / g2.curvature_scale : 0.0;
-    // A guided run has a C2 guide to fall back on, smoother than a chain left with its
-    // curvature jumps (the writeback would bend each junction to the mean curvature).
-    const bool guided = &source != &ref;
-    if (mismatch > max_relative_mismatch && accept_mismatch && guided) return out;
-    if (mismatch > max_relative_mismatch && !accept_mismatch) {
-      // No G2 within reach of these junctions: more freedom next to the worst junction.
-      const auto worst = std::max_element(g2.mismatches.begin(), g2.mismatches.end(),
-                                          [](double a, double b) { return std::abs(a) < std::abs(b); });
-      const std::size_t j = g2.chain.first_free_junction() + static_cast<std::size_t>(worst - g2.mismatches.begin());
-      const std::size_t segments = chain.segment_count();
-      for (const std::size_t i : {(j + segments - 1) % segments, j % segments})
-        out.cuts.push_back(0.5 * (span.s[i] + segment_end_s(span, i, L)));
-      return out;
+    if (mismatch > max_relative_mismatch) {
+      // A guided run has a C2 guide to fall back on, smoother than a chain left with its
+      // curvature jumps (the writeback would bend each junction to the mean curvature).
+      if (accept_mismatch && &source != &ref) return out;
+      if (!accept_mismatch) {
+        // No G2 within reach of these junctions: more freedom next to the worst junction.
+        const auto worst = std::max_element(g2.mismatches.begin(), g2.mismatches.end(),
+                                            [](double a, double b) { return std::abs(a) < std::abs(b); });
+        const std::size_t j = g2.chain.first_free_junction() + static_cast<std::size_t>(worst - g2.mismatches.begin());
+        const std::size_t segments = chain.segment_count();
+        for (const std::size_t i : {(j + segments - 1) % segments, j % segments})
+          out.cuts.push_back(0.5 * (span.s[i] + segment_end_s(span, i, L)));
+        return out;
+      }
     }
     built = std::move(g2.segments);
     chain = std::move(g2.chain);
@@ -404,8 +405,9 @@ FairedRun fair_run(const SmoothRun& run, const FairSettings& settings, double bu
                                                      !run.closed && run.end.kind == RunEndKind::line,
                                                      junction_options(settings));
   bool too_far = false;
-  // A span whose chain was found is the same span in every later round (the rounds only cut
-  // and drop junctions of the spans that failed): its chain is kept, not solved again.
+  // A span that asked for no change is the same span in every later round (the rounds only
+  // cut and drop junctions of the spans that did): its outcome, a chain or none to be had, is
+  // kept, not solved again.
   std::vector<std::pair<ChainSpan, ChainOutcome>> settled;
   for (int round = 0; round < max_rounds; ++round) {
     std::vector<double> cuts, drops;
@@ -421,7 +423,7 @@ FairedRun fair_run(const SmoothRun& run, const FairSettings& settings, double bu
       ChainOutcome o = known != settled.end()
                            ? known->second
                            : fair_chain(span, ref, source, guide_run, settings, budget, round >= max_rounds / 2);
-      if (known == settled.end() && o.chain && !o.adjusts()) settled.emplace_back(span, o);
+      if (known == settled.end() && !o.adjusts()) settled.emplace_back(span, o);
       result.deviation = std::max(result.deviation, o.deviation);
       too_far = too_far || o.too_far;
       // A guided span with no chain when the rounds run out (or none to be had) is the guide.
