@@ -16,7 +16,7 @@ Vec2 rounded(Vec2 p) { return {std::round(p.x), std::round(p.y)}; }
 // node + sign·m·d: the handle m ≥ 1 whole grid steps from the node on its side (sign −1 for
 // an in-handle), m nearest to how far `handle` lies from `from` along d.
 Vec2 stepped_handle(Vec2 node, Vec2 d, double sign, Vec2 from, Vec2 handle) {
-  const double m = std::max(1.0, std::round(sign * dot(handle - from, d) / dot(d, d)));
+  const double m = std::max(1.0, whole_steps(from, handle, d, sign));
   return node + d * (sign * m);
 }
 

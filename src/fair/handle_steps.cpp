@@ -38,7 +38,7 @@ std::vector<Vec2> handle_candidates(const OutlineNode& node, std::optional<Vec2>
   std::vector<Vec2> c{h};
   if (step) {
     const double sign = out ? 1.0 : -1.0;
-    const double m0 = std::round(sign * dot(h - node.point, *step) / dot(*step, *step));
+    const double m0 = whole_steps(node.point, h, *step, sign);
     for (int k = -reach; k <= reach; ++k)
       if (k != 0 && m0 + k >= 1.0) c.push_back(node.point + *step * (sign * (m0 + k)));
   } else if (!node.smooth) {
@@ -57,7 +57,7 @@ std::vector<Vec2> handles_meeting_line(const OutlineNode& node, std::optional<Ve
   if (step) return handles_near_line(node.point, *step, out ? 1.0 : -1.0, line_end.point, line_dir);
   if (node.smooth) return {};
   const Vec2 h = out ? *node.out_handle : *node.in_handle;
-  return {line_end.point + line_dir * std::round(dot(h - line_end.point, line_dir) / dot(line_dir, line_dir))};
+  return {line_end.point + line_dir * whole_steps(line_end.point, h, line_dir, 1.0)};
 }
 
 // How far a cubic moved from its unrounded self: measured at the same parameters (a bound on
@@ -279,8 +279,8 @@ void nudge_jumping_nodes(std::vector<OutlineNode>& nodes, const std::vector<Outl
     const auto [changes_out, extrema_out] = most(i);
     const OutlineNode kept = nodes[i];
     const Vec2 d = *steps[i];
-    const double m_in = std::round(dot(kept.point - *kept.in_handle, d) / dot(d, d));
-    const double m_out = std::round(dot(*kept.out_handle - kept.point, d) / dot(d, d));
+    const double m_in = whole_steps(kept.point, *kept.in_handle, d, -1.0);
+    const double m_out = whole_steps(kept.point, *kept.out_handle, d, 1.0);
     OutlineNode best = kept;
     double best_cost = around(i);
     for (int k = 0; k < 9; ++k) {

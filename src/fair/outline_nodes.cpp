@@ -1,5 +1,7 @@
 #include "fair/outline_nodes.hpp"
 
+#include <cmath>
+
 namespace gf {
 
 Cubic outline_cubic(const std::vector<OutlineNode>& nodes, std::size_t i) {
@@ -19,6 +21,10 @@ Contour to_contour(const std::vector<OutlineNode>& nodes, bool closed) {
     else c.segments.emplace_back(Line{a.point, b.point});
   }
   return c;
+}
+
+double whole_steps(Vec2 from, Vec2 handle, Vec2 d, double sign) {
+  return std::round(sign * dot(handle - from, d) / dot(d, d));
 }
 
 double node_curvature(const Cubic& c, SegmentEnd end) { return end_curvature(c, end).curvature.value_or(0.0); }

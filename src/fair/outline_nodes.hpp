@@ -28,6 +28,10 @@ Cubic outline_cubic(const std::vector<OutlineNode>& nodes, std::size_t i);
 /// else a line. A closed contour's last segment returns to node 0.
 Contour to_contour(const std::vector<OutlineNode>& nodes, bool closed);
 
+/// How many whole steps of the grid direction d, nearest, `handle` lies from `from` on its side
+/// of the node: sign +1 for an out-handle, −1 for an in-handle (0 or less: not on its side).
+double whole_steps(Vec2 from, Vec2 handle, Vec2 d, double sign);
+
 /// Curvature where a cubic of the outline leaves its start or reaches its end
 /// (geom/curvature.hpp), 0 where a retracted handle leaves it unbounded.
 double node_curvature(const Cubic& c, SegmentEnd end);
