@@ -60,12 +60,12 @@ std::vector<Vec2> handles_meeting_line(const OutlineNode& node, std::optional<Ve
   return {line_end.point + line_dir * whole_steps(line_end.point, h, line_dir, 1.0)};
 }
 
-// How far a cubic moved from its unrounded self: measured at the same parameters (a bound on
-// the distance between the two curves) when that is within `within`, else as the two-sided
+// How far a cubic moved from its unrounded self: the largest move of a control point (a bound
+// on the distance between the two curves) when that is within `within`, else the two-sided
 // distance between the curves themselves, which a handle slid along its own tangent moves
-// far less than it moves the parameters.
+// far less than it moves the control point.
 double moved_distance(const Cubic& a, const Cubic& b, double within) {
-  // a(t) − b(t) is a cubic with control points p_i − q_i: by the convex hull, none farther.
+  // a(t) − b(t) is the cubic with control points p_i − q_i: by the convex hull, none farther.
   double d = 0.0;
   for (int k = 0; k < 4; ++k) d = std::max(d, distance(a.p[k], b.p[k]));
   if (d <= within) return d;
@@ -283,10 +283,10 @@ void nudge_jumping_nodes(std::vector<OutlineNode>& nodes, const std::vector<Outl
     const double m_out = whole_steps(kept.point, *kept.out_handle, d, 1.0);
     OutlineNode best = kept;
     double best_cost = around(i);
+    // Still on a grid point next to the nearest one, as rounding placed every node.
+    const Vec2 nearest{std::round(ideal[i].point.x), std::round(ideal[i].point.y)};
     for (int k = 0; k < 9; ++k) {
       const Vec2 p = kept.point + Vec2{double(k % 3 - 1), double(k / 3 - 1)};
-      // Still on a grid point next to the nearest one, as rounding placed every node.
-      const Vec2 nearest{std::round(ideal[i].point.x), std::round(ideal[i].point.y)};
       if (std::abs(p.x - nearest.x) > 1.0 || std::abs(p.y - nearest.y) > 1.0) continue;
       for (int a = -reach; a <= reach; ++a)
         for (int b = -reach; b <= reach; ++b) {
