@@ -102,7 +102,7 @@ int FairCommand::run() const {
             << " contours kept as they were; largest distance from the source " << deviation << " units (tolerance "
             << settings.tolerance_units << "); largest relative curvature mismatch left by a chain solve " << mismatch
             << "; " << g1_nodes << " smooth nodes G1 only; " << guide_stretches
-            << " spans written from the smoothing guide (no log-aesthetic chain within the budget)\n";
+            << " spans written from the smoothing guide (no G2 log-aesthetic chain within the budget)\n";
   return exit_code::ok;
 }
 

@@ -18,7 +18,7 @@ struct ContourFairing {
   double deviation = 0.0;  ///< two-sided Hausdorff distance to the source, font units (measured)
   double max_curvature_mismatch = 0.0;  ///< of the log-aesthetic chains, relative
   int g1_nodes = 0;        ///< smooth nodes with G1 only: no G2 Hermite cubic was found for a span
-  int guide_stretches = 0; ///< spans written from the smoothing guide: no log-aesthetic chain within the budget
+  int guide_stretches = 0; ///< spans written from the smoothing guide: no G2 log-aesthetic chain within the budget
 };
 
 ContourFairing fair_contour(const Contour& source, const FairSettings& settings);

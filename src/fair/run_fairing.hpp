@@ -17,7 +17,7 @@
 namespace gf {
 
 /// A stretch of a run's smoothing guide between two frames: what a span of a handwriting run
-/// becomes when no chain of log-aesthetic segments within the budget exists for it. The guide
+/// becomes when no G2 chain of log-aesthetic segments within the budget exists for it. The guide
 /// is C2, so the stretch is G2 throughout; its end frames are the ones its neighbouring chains
 /// have, so the joins are G2 too.
 struct GuideStretch {
