@@ -353,7 +353,7 @@ std::optional<SmoothRun> guide_for(const SmoothRun& run, const RunReference& sou
   if (!run.closed && run.start.kind == RunEndKind::line) ends.start_tangent = run.start.tangent;
   if (!run.closed && run.end.kind == RunEndKind::line) ends.end_tangent = run.end.tangent;
   const int spans = std::clamp(static_cast<int>(std::ceil(L / (0.5 * window))), run.closed ? 4 : 1, 80);
-  const BSplineFit fit = fit_smoothing_spline(points, tolerance, spans, run.closed, ends);
+  const BSplineFit fit = fit_smoothing_spline(points, tolerance, spans, run.closed, ends, SmoothingPenalty::sparse);
   if (fit.spans.empty() || fit.max_residual > 1.05 * tolerance) return std::nullopt;
   SmoothRun guide = run;
   guide.cubics = fit.spans;

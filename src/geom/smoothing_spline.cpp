@@ -73,21 +73,20 @@ class SmoothingProblem {
     // The penalty: each span's third derivative p3 − 3p2 + 3p1 − p0 of its Bézier form (constant
     // on the span), as weights on the span's four controls. On periodic knots these are the
     // third differences of the controls; the clamped end spans differ.
-    penalty_ = Normal(unknowns_);
     std::vector<Vec2> unit(static_cast<std::size_t>(n));
+    terms_.resize(static_cast<std::size_t>(spans));
     for (int s = 0; s < spans; ++s) {
+      SpanTerm& t = terms_[static_cast<std::size_t>(s)];
       const int first = basis_.at((s + 0.5) / spans).first;
-      int index[4];
-      double w[4];
       for (int k = 0; k < 4; ++k) {
-        index[k] = basis_.control(first + k);
-        unit[static_cast<std::size_t>(index[k])] = {1.0, 0.0};
+        t.index[k] = basis_.control(first + k);
+        unit[static_cast<std::size_t>(t.index[k])] = {1.0, 0.0};
         const Cubic c = basis_.span_cubic(unit, s);
-        unit[static_cast<std::size_t>(index[k])] = {};
-        w[k] = (c.p[3] - 3.0 * c.p[2] + 3.0 * c.p[1] - c.p[0]).x;
+        unit[static_cast<std::size_t>(t.index[k])] = {};
+        t.w[k] = (c.p[3] - 3.0 * c.p[2] + 3.0 * c.p[1] - c.p[0]).x;
       }
-      penalty_.add(controls_, index, w, {});
     }
+    weigh_spans(std::vector<double>(terms_.size(), 1.0));
     // Chord-length parameters (a closed sequence's closing chord included).
     u_.assign(points.size(), 0.0);
     for (std::size_t i = 1; i < points.size(); ++i) u_[i] = u_[i - 1] + distance(points[i], points[i - 1]);
@@ -96,6 +95,27 @@ class SmoothingProblem {
   }
 
   int unknowns() const { return unknowns_; }
+
+  /// The penalty with span s weighed by weight[s].
+  void weigh_spans(std::span<const double> weight) {
+    penalty_ = Normal(unknowns_);
+    for (std::size_t s = 0; s < terms_.size(); ++s) {
+      double w[4];
+      for (int k = 0; k < 4; ++k) w[k] = terms_[s].w[k] * std::sqrt(weight[s]);
+      penalty_.add(controls_, terms_[s].index, w, {});
+    }
+  }
+
+  /// The length of the third derivative on each span of the spline with these controls.
+  std::vector<double> third_derivatives(std::span<const Vec2> c) const {
+    std::vector<double> out;
+    for (const SpanTerm& t : terms_) {
+      Vec2 d{};
+      for (int k = 0; k < 4; ++k) d += c[static_cast<std::size_t>(t.index[k])] * t.w[k];
+      out.push_back(norm(d));
+    }
+    return out;
+  }
 
   void fit_data() {
     data_ = Normal(unknowns_);
@@ -142,16 +162,35 @@ class SmoothingProblem {
   std::span<const Vec2> points_;
   BSplineBasis basis_;
   std::vector<Control> controls_;
+  struct SpanTerm {
+    int index[4];
+    double w[4];
+  };
+  std::vector<SpanTerm> terms_;
   int unknowns_ = 0;
   std::vector<double> u_;
   Normal data_{0}, penalty_{0};
   double scale_ = 1.0;
 };
 
+// Iteratively reweighted least squares towards Σ|r'''_s|: each span's weight 1/(|r'''_s| + ε),
+// ε a tenth of the mean (so a straight stretch does not take all the weight), scaled to a mean
+// of 1 so λ keeps its scale.
+std::vector<double> sparse_weights(std::span<const double> third) {
+  double mean = 0.0;
+  for (const double v : third) mean += v;
+  mean /= static_cast<double>(third.size());
+  std::vector<double> weight;
+  double total = 0.0;
+  for (const double v : third) total += weight.emplace_back(1.0 / (v + 0.1 * mean + 1e-300));
+  for (double& w : weight) w *= static_cast<double>(weight.size()) / total;
+  return weight;
+}
+
 }  // namespace
 
 BSplineFit fit_smoothing_spline(std::span<const Vec2> points, double tolerance, int span_count, bool closed,
-                                const SmoothingEnds& ends) {
+                                const SmoothingEnds& ends, SmoothingPenalty penalty) {
   BSplineFit fit;
   if (closed && points.size() > 1 && points.back() == points.front()) points = points.first(points.size() - 1);
   const int m = static_cast<int>(points.size());
@@ -159,26 +198,36 @@ BSplineFit fit_smoothing_spline(std::span<const Vec2> points, double tolerance, 
   if (spans < (closed ? 4 : 1)) return fit;
   SmoothingProblem problem(points, spans, closed, ends);
   // log10 λ (relative): low smoothing to high; each round narrows around the last choice.
-  double lo = -8.0, hi = 4.0, chosen = lo;
   std::vector<double> feet, best_feet;
-  for (int round = 0; round < 3; ++round) {
-    problem.fit_data();
-    const int steps = round == 0 ? 14 : 8;
-    bool any = false;
-    for (int k = 0; k < steps; ++k) {
-      const double e = 0.5 * (lo + hi);
-      const std::vector<Vec2> c = problem.solve(e);
-      if (problem.project(problem.spans(c), feet) <= tolerance) lo = e, any = true, best_feet = feet;
-      else hi = e;
+  const auto choose = [&](double lo, double hi, int rounds) {
+    double chosen = lo;
+    for (int round = 0; round < rounds; ++round) {
+      problem.fit_data();
+      const int steps = round == 0 ? 14 : 8;
+      bool any = false;
+      for (int k = 0; k < steps; ++k) {
+        const double e = 0.5 * (lo + hi);
+        const std::vector<Vec2> c = problem.solve(e);
+        if (problem.project(problem.spans(c), feet) <= tolerance) lo = e, any = true, best_feet = feet;
+        else hi = e;
+      }
+      chosen = lo;
+      if (!any) {
+        const std::vector<Vec2> c = problem.solve(lo);
+        problem.project(problem.spans(c), best_feet);
+      }
+      problem.move_parameters(best_feet);
+      lo = chosen - 1.5, hi = chosen + 1.5;
     }
-    chosen = lo;
-    if (!any) {
-      const std::vector<Vec2> c = problem.solve(lo);
-      problem.project(problem.spans(c), best_feet);
+    return chosen;
+  };
+  double chosen = choose(-8.0, 4.0, 3);
+  if (penalty == SmoothingPenalty::sparse)
+    for (int round = 0; round < 2; ++round) {
+      problem.fit_data();
+      problem.weigh_spans(sparse_weights(problem.third_derivatives(problem.solve(chosen))));
+      chosen = choose(chosen - 4.0, chosen + 4.0, 2);
     }
-    problem.move_parameters(best_feet);
-    lo = chosen - 1.5, hi = chosen + 1.5;
-  }
   problem.fit_data();
   const std::vector<Vec2> c = problem.solve(chosen);
   fit.spans = problem.spans(c);

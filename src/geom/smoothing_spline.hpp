@@ -3,7 +3,9 @@
 // tolerance. On uniform knots Δ³c is the spline's third derivative on a span, so the penalty is
 // a discrete ∫|r'''|², which grows with the change of curvature: wobbles go first, the drawn
 // shape stays. The fairing of handwriting builds on it (seed 000 [0038]–[0045] fits a spline
-// to the pen's points; this one also smooths them).
+// to the pen's points; this one also smooths them). The sparse penalty approaches λ·Σ|Δ³c|
+// instead (the L1 norm, as in L1 trend filtering): the change of curvature gathers in few
+// spans, so fewer curvature extrema and inflections survive the same tolerance.
 #pragma once
 
 #include <optional>
@@ -12,6 +14,11 @@
 #include "geom/bspline_fit.hpp"
 
 namespace gf {
+
+enum class SmoothingPenalty {
+  squared,  ///< λ·Σ|Δ³c|²
+  sparse,   ///< λ·Σ|Δ³c|, by two rounds of reweighted least squares
+};
 
 struct SmoothingEnds {
   std::optional<Vec2> start_tangent, end_tangent;  ///< held when given (open sequences only)
@@ -23,6 +30,7 @@ struct SmoothingEnds {
 /// parameters corrected to their feet on the curve; max_residual is the largest distance of a
 /// point from the curve, above `tolerance` only when even the least smoothing exceeds it.
 BSplineFit fit_smoothing_spline(std::span<const Vec2> points, double tolerance, int span_count, bool closed,
-                                const SmoothingEnds& ends = {});
+                                const SmoothingEnds& ends = {},
+                                SmoothingPenalty penalty = SmoothingPenalty::squared);
 
 }  // namespace gf

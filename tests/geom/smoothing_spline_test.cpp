@@ -1,11 +1,13 @@
 // The smoothing spline against oracles: a parabola lies in the penalty's null space (no third
 // derivative), so a tight fit smooths as hard as it can and still keeps its curvature; a circle with
 // noise inside the tolerance comes back within the tolerance with its curvature of one sign
-// and near 1/R; held end tangents and interpolated ends are exact.
+// and near 1/R; held end tangents and interpolated ends are exact; a noisy rounded rectangle keeps
+// its curvature's eight extrema, its variation and its straight sides under the sparse penalty.
 #include "geom/smoothing_spline.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -82,6 +84,86 @@ TEST(SmoothingSpline, HeldEndTangentsAndEndPointsAreExact) {
   EXPECT_GT(t0.y, 0.0);
   EXPECT_NEAR(t1.x, 0.0, 1e-9);
   EXPECT_LT(t1.y, 0.0);
+}
+
+}  // namespace
+}  // namespace gf
+
+namespace gf {
+namespace {
+
+// A rounded rectangle: κ is 0 on the sides and 1/r on the corners, so its curvature has eight
+// extrema (each corner's rise and fall end on a plateau) and no inflection.
+std::vector<Vec2> noisy_rounded_rectangle(double w, double h, double r, double amplitude, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> noise(-amplitude, amplitude);
+  const double quarter = std::numbers::pi / 2 * r, perimeter = 2 * (w - 2 * r) + 2 * (h - 2 * r) + 4 * quarter;
+  const double side[4] = {w - 2 * r, h - 2 * r, w - 2 * r, h - 2 * r};
+  const Vec2 start[4] = {{r, 0.0}, {w, r}, {w - r, h}, {0.0, h - r}};
+  const Vec2 dir[4] = {{1.0, 0.0}, {0.0, 1.0}, {-1.0, 0.0}, {0.0, -1.0}};
+  std::vector<Vec2> pts;
+  for (double s = 0.0; s < perimeter; s += 1.5) {
+    double rest = s;
+    Vec2 p{}, n{};
+    for (int k = 0; k < 4; ++k) {
+      if (rest < side[k]) {
+        p = start[k] + dir[k] * rest, n = Vec2{dir[k].y, -dir[k].x};
+        break;
+      }
+      rest -= side[k];
+      if (rest < quarter) {
+        const Vec2 centre = start[k] + dir[k] * side[k] + Vec2{-dir[k].y, dir[k].x} * r;
+        const double a = std::atan2(-dir[k].x, dir[k].y) + rest / r;  // from the outward normal
+        n = Vec2{std::cos(a), std::sin(a)}, p = centre + n * r;
+        break;
+      }
+      rest -= quarter;
+    }
+    pts.push_back(p + n * noise(rng));
+  }
+  return pts;
+}
+
+// Around a closed fit, from its largest κ: the extrema of κ (a rise or fall counted once it
+// exceeds 5 % of the largest |κ|), its total variation and its least value.
+struct CurvatureWalk {
+  int extrema = 1;  // the largest κ, where the walk starts
+  double variation = 0.0, least = 0.0;
+};
+
+CurvatureWalk walk_curvature(const BSplineFit& fit) {
+  std::vector<double> k;
+  for (const Cubic& c : fit.spans)
+    for (int i = 0; i < 16; ++i) k.push_back(*curvature(derivatives_at(c, i / 16.0)));
+  const auto top = std::max_element(k.begin(), k.end());
+  std::rotate(k.begin(), top, k.end());
+  k.push_back(k.front());
+  CurvatureWalk w;
+  int direction = -1;
+  double anchor = k.front();
+  for (std::size_t i = 1; i < k.size(); ++i) {
+    w.variation += std::abs(k[i] - k[i - 1]);
+    w.least = std::min(w.least, k[i]);
+    if (direction < 0 ? k[i] < anchor : k[i] > anchor) anchor = k[i];
+    else if (std::abs(k[i] - anchor) > 0.05 * k.front()) ++w.extrema, direction = -direction, anchor = k[i];
+  }
+  return w;
+}
+
+// The rounded rectangle's κ rises and falls once per corner (eight extrema, total variation
+// 8/r) and is 0 on the sides. Wobbles of 2 units under a tolerance of 3 leave a squared penalty
+// little room: it spreads the change of curvature, so the sides bend (κ·r about −0.075) and the
+// variation grows by a quarter; the sparse penalty keeps the change at the corners.
+TEST(SmoothingSpline, TheSparsePenaltyKeepsTheChangeOfCurvatureWhereItIs) {
+  const double r = 60.0, tolerance = 3.0;
+  const std::vector<Vec2> pts = noisy_rounded_rectangle(400.0, 300.0, r, 2.0, 7);
+  const BSplineFit fit = fit_smoothing_spline(pts, tolerance, 80, true, {}, SmoothingPenalty::sparse);
+  ASSERT_EQ(fit.spans.size(), 80u);
+  EXPECT_LE(fit.max_residual, tolerance * 1.001);
+  const CurvatureWalk w = walk_curvature(fit);
+  EXPECT_EQ(w.extrema, 8);
+  EXPECT_LT(w.variation * r, 8.0 * 1.25);
+  EXPECT_GT(w.least * r, -0.05);
 }
 
 }  // namespace
