@@ -222,11 +222,21 @@ BSplineFit fit_smoothing_spline(std::span<const Vec2> points, double tolerance, 
     return chosen;
   };
   double chosen = choose(-8.0, 4.0, 3);
-  if (penalty == SmoothingPenalty::sparse)
+  const auto within = [&](double e) {
+    problem.fit_data();
+    return problem.project(problem.spans(problem.solve(e)), feet) <= tolerance;
+  };
+  if (penalty == SmoothingPenalty::sparse && within(chosen))
     for (int round = 0; round < 2; ++round) {
-      problem.fit_data();
+      // A reweighted problem with no λ within the tolerance keeps the last one that had one.
+      const SmoothingProblem before = problem;
       problem.weigh_spans(sparse_weights(problem.third_derivatives(problem.solve(chosen))));
-      chosen = choose(chosen - 4.0, chosen + 4.0, 2);
+      const double reweighted = choose(chosen - 8.0, chosen + 4.0, 2);
+      if (!within(reweighted)) {
+        problem = before;
+        break;
+      }
+      chosen = reweighted;
     }
   problem.fit_data();
   const std::vector<Vec2> c = problem.solve(chosen);
