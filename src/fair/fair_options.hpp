@@ -24,7 +24,8 @@ struct FairOptions {
 ///   handwriting: tolerance 1 % of the em; corners from 30° (fonts traced from scans break
 ///                their curves by 3–20° at many joins; a stroke end or a sharp turn of the pen
 ///                turns by far more), and wobbles up to the tolerance smoothed away: each run
-///                is first replaced by the smoothest spline within 0.8 of the chain's budget.
+///                is first replaced by the smoothest spline within 0.8 of the chain's budget
+///                (geom/smoothing_spline's sparse penalty: fewest changes of curvature).
 struct FairSettings {
   FairProfile profile = FairProfile::text;
   Continuity continuity = Continuity::g2;
