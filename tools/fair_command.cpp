@@ -12,6 +12,7 @@
 #include "exit_codes.hpp"
 #include "fair/glyph_fairing.hpp"
 #include "glyph_stream.hpp"
+#include "io/file_extension.hpp"
 #include "io/input_error.hpp"
 #include "io/ufo_writer.hpp"
 #include "outline_output.hpp"

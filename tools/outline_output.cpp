@@ -1,19 +1,12 @@
 #include "outline_output.hpp"
 
-#include <algorithm>
-
+#include "io/file_extension.hpp"
 #include "io/input_error.hpp"
 #include "io/json_writer.hpp"
 #include "io/svg_writer.hpp"
 #include "io/ufo_writer.hpp"
 
 namespace gf {
-
-std::string lower_extension(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext;
-}
 
 OutlineFormat outline_format_for(const std::filesystem::path& output) {
   const std::string ext = lower_extension(output);

@@ -13,9 +13,6 @@ enum class OutlineFormat { ufo, svg, json };
 /// From OUT's extension (any case); InputError for anything else.
 OutlineFormat outline_format_for(const std::filesystem::path& output);
 
-/// The extension of `path`, lower case (".pdf").
-std::string lower_extension(const std::filesystem::path& path);
-
 /// Written atomically, never over one of `inputs`.
 void write_outlines(const GlyphSet& glyphs, const std::filesystem::path& target, OutlineFormat format,
                     std::span<const std::filesystem::path> inputs);

@@ -4,6 +4,7 @@
 #include <unordered_map>
 #include <variant>
 
+#include "io/file_extension.hpp"
 #include "io/input_error.hpp"
 #include "io/point_sequence_reader.hpp"
 #include "io/svg_reader.hpp"
@@ -53,8 +54,7 @@ GlyphSource::~GlyphSource() = default;
 
 GlyphSource GlyphSource::open(const fs::path& path, const SourceOptions& options) {
   const std::string file = path.string();
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  const std::string ext = lower_extension(path);
   std::error_code ec;
   const bool is_ufo = ext == ".ufo" || fs::is_directory(path, ec);
   const bool is_svg = ext == ".svg";

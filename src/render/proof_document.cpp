@@ -13,6 +13,7 @@
 #include "check/contour_checks.hpp"
 #include "geom/curvature_profile.hpp"
 #include "io/atomic_output.hpp"
+#include "io/file_extension.hpp"
 #include "io/input_error.hpp"
 #include "render/cairo_helpers.hpp"
 #include "render/curvature_plot.hpp"
@@ -220,8 +221,7 @@ void check(cairo_surface_t* surface, cairo_t* cr, const fs::path& target) {
 }  // namespace
 
 std::optional<ProofFormat> proof_format_for(const fs::path& target) {
-  std::string ext = target.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  const std::string ext = lower_extension(target);
   if (ext == ".pdf") return ProofFormat::pdf;
   if (ext == ".png") return ProofFormat::png;
   if (ext == ".svg") return ProofFormat::svg;
