@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -221,27 +222,29 @@ BSplineFit fit_smoothing_spline(std::span<const Vec2> points, double tolerance, 
     }
     return chosen;
   };
-  double chosen = choose(-8.0, 4.0, 3);
-  const auto within = [&](double e) {
+  // The controls at λ = 10^e on the parameters as they are, and the largest distance.
+  const auto solve_at = [&](double e) {
     problem.fit_data();
-    return problem.project(problem.spans(problem.solve(e)), feet) <= tolerance;
+    std::vector<Vec2> c = problem.solve(e);
+    const double r = problem.project(problem.spans(c), feet);
+    return std::pair{std::move(c), r};
   };
-  if (penalty == SmoothingPenalty::sparse && within(chosen))
+  double chosen = choose(-8.0, 4.0, 3);
+  auto [controls, residual] = solve_at(chosen);
+  if (penalty == SmoothingPenalty::sparse && residual <= tolerance)
     for (int round = 0; round < 2; ++round) {
-      // A reweighted problem with no λ within the tolerance keeps the last one that had one.
       const SmoothingProblem before = problem;
-      problem.weigh_spans(sparse_weights(problem.third_derivatives(problem.solve(chosen))));
-      const double reweighted = choose(chosen - 8.0, chosen + 4.0, 2);
-      if (!within(reweighted)) {
+      problem.weigh_spans(sparse_weights(problem.third_derivatives(controls)));
+      const double e = choose(chosen - 8.0, chosen + 4.0, 2);
+      auto [c, r] = solve_at(e);
+      if (r > tolerance) {  // no λ within the tolerance: the round before stands
         problem = before;
         break;
       }
-      chosen = reweighted;
+      chosen = e, controls = std::move(c), residual = r;
     }
-  problem.fit_data();
-  const std::vector<Vec2> c = problem.solve(chosen);
-  fit.spans = problem.spans(c);
-  fit.max_residual = problem.project(fit.spans, feet);
+  fit.spans = problem.spans(controls);
+  fit.max_residual = residual;
   return fit;
 }
 
