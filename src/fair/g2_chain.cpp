@@ -35,14 +35,13 @@ double max_abs(const std::vector<double>& v) {
   return m;
 }
 
-// The two segments either side of junction j with φ_j set to `phi` (turning φ_j moves only
-// them); nullopt where one does not exist.
+// The two segments either side of junction j (turning φ_j moves only them); nullopt where one
+// does not exist.
 struct AroundJunction {
   std::size_t before, after;  ///< segment indices
   LogAestheticSegment into, out_of;
 };
-std::optional<AroundJunction> segments_around(LacChain chain, std::size_t j, double phi) {
-  chain.tangent_angles[j] = phi;
+std::optional<AroundJunction> segments_around(const LacChain& chain, std::size_t j) {
   const std::size_t n = chain.segment_count(), before = (j + n - 1) % n, after = j % n;
   SegmentFit a = build_chain_segment(chain, before), b = build_chain_segment(chain, after);
   if (!a.ok() || !b.ok()) return std::nullopt;
@@ -50,8 +49,9 @@ std::optional<AroundJunction> segments_around(LacChain chain, std::size_t j, dou
 }
 
 // D_j as a function of φ_j alone; nullopt where a neighbouring segment does not exist.
-std::optional<double> junction_mismatch(const LacChain& chain, std::size_t j, double phi) {
-  const std::optional<AroundJunction> s = segments_around(chain, j, phi);
+std::optional<double> junction_mismatch(LacChain chain, std::size_t j, double phi) {
+  chain.tangent_angles[j] = phi;
+  const std::optional<AroundJunction> s = segments_around(chain, j);
   if (!s) return std::nullopt;
   return s->into.end().curvature - s->out_of.start().curvature;
 }
@@ -165,13 +165,13 @@ G2Result make_g2(LacChain chain, G2Tolerance tolerance_spec, int max_iterations)
     Eigen::MatrixXd jacobian = Eigen::MatrixXd::Zero(m, m);
     for (int c = 0; c < m; ++c) {
       const std::size_t j = first + static_cast<std::size_t>(c);
-      std::optional<AroundJunction> around = segments_around(chain, j, chain.tangent_angles[j] + h);
+      LacChain moved = chain;
+      moved.tangent_angles[j] += h;
+      std::optional<AroundJunction> around = segments_around(moved, j);
       if (!around) {
         result.reason = "junction " + std::to_string(j) + " sits at the edge of its feasible range";
         break;
       }
-      LacChain moved = chain;
-      moved.tangent_angles[j] += h;
       std::vector<LogAestheticSegment> probe = built.segments;
       probe[around->before] = std::move(around->into);
       probe[around->after] = std::move(around->out_of);
