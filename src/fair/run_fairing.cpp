@@ -260,17 +260,16 @@ void make_drawable(LacChain& chain, const ChainSpan& span, const RunReference& r
 }
 
 // Fidelity, piece by piece against the source between the same junctions (the guide's arc
-// length mapped onto the source's in proportion; with a guide, the source side gets a margin
-// for the difference and the source is compared with the piece and its neighbours). Pieces
-// over the budget are cut in the middle.
+// length mapped onto the source's in proportion; with a guide (`guided`: ref is the guide,
+// not the source), the source side gets a margin for the difference and the source is
+// compared with the piece and its neighbours). Pieces over the budget are cut in the middle.
 void check_fidelity(const std::vector<LogAestheticSegment>& built, const ChainSpan& span, const RunReference& ref,
-                    const RunReference& source, double budget, ChainOutcome& out) {
+                    const RunReference& source, bool guided, double budget, ChainOutcome& out) {
   const std::size_t segments = built.size();
   const double L = ref.length();
   std::vector<std::vector<Vec2>> lac(segments);
   for (std::size_t i = 0; i < segments; ++i)
     for (const LacPoint& p : built[i].sample(samples_for(built[i], budget))) lac[i].push_back(p.point);
-  const bool guided = &source != &ref;
   const double scale = source.length() / L, margin = guided ? 0.02 * source.length() : 0.0;
   for (std::size_t i = 0; i < segments; ++i) {
     const double s0 = span.s[i], s1 = segment_end_s(span, i, L);
@@ -288,8 +287,9 @@ void check_fidelity(const std::vector<LogAestheticSegment>& built, const ChainSp
   }
 }
 
-ChainOutcome fair_chain(const ChainSpan& span, const RunReference& ref, const RunReference& source, const SmoothRun& run,
-                        const FairSettings& settings, double budget, bool accept_mismatch) {
+// `guided`: ref is the run's smoothing guide, source the run itself (else both are the source).
+ChainOutcome fair_chain(const ChainSpan& span, const RunReference& ref, const RunReference& source, bool guided,
+                        const SmoothRun& run, const FairSettings& settings, double budget, bool accept_mismatch) {
   ChainOutcome out;
   const double L = ref.length();
   out.cuts = missing_junctions(span, L);
@@ -307,7 +307,7 @@ ChainOutcome fair_chain(const ChainSpan& span, const RunReference& ref, const Ru
     if (mismatch > max_relative_mismatch) {
       // A guided run has a C2 guide to fall back on, smoother than a chain left with its
       // curvature jumps (the writeback would bend each junction to the mean curvature).
-      if (accept_mismatch && &source != &ref) return out;
+      if (accept_mismatch && guided) return out;
       if (!accept_mismatch) {
         // No G2 within reach of these junctions: more freedom next to the worst junction.
         const auto worst = std::max_element(g2.mismatches.begin(), g2.mismatches.end(),
@@ -324,7 +324,7 @@ ChainOutcome fair_chain(const ChainSpan& span, const RunReference& ref, const Ru
   } else {
     built = build_chain(chain).segments;
   }
-  check_fidelity(built, span, ref, source, budget, out);
+  check_fidelity(built, span, ref, source, guided, budget, out);
   if (out.adjusts()) return out;
   FairedChain faired;
   faired.segments = std::move(built);
@@ -422,7 +422,8 @@ FairedRun fair_run(const SmoothRun& run, const FairSettings& settings, double bu
       const auto known = std::find_if(settled.begin(), settled.end(), [&](const auto& e) { return e.first == span; });
       ChainOutcome o = known != settled.end()
                            ? known->second
-                           : fair_chain(span, ref, source, guide_run, settings, budget, round >= max_rounds / 2);
+                           : fair_chain(span, ref, source, guide.has_value(), guide_run, settings, budget,
+                                        round >= max_rounds / 2);
       if (known == settled.end() && !o.adjusts()) settled.emplace_back(span, o);
       result.deviation = std::max(result.deviation, o.deviation);
       too_far = too_far || o.too_far;
