@@ -24,6 +24,13 @@ Polynomial Polynomial::derivative() const {
   return d;
 }
 
+Polynomial Polynomial::antiderivative() const {
+  Polynomial a;
+  a.degree_ = std::min(degree_ + 1, max_degree);
+  for (int i = 0; i < a.degree_; ++i) a.c_[i + 1] = c_[i] / (i + 1);
+  return a;
+}
+
 double Polynomial::magnitude() const {
   double m = 0.0;
   for (int i = 0; i <= degree_; ++i) m = std::max(m, std::abs(c_[i]));

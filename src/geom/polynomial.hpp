@@ -24,6 +24,8 @@ class Polynomial {
   double coefficient(int i) const { return i <= degree_ ? c_[i] : 0.0; }
   double operator()(double t) const;
   Polynomial derivative() const;
+  /// ∫₀ᵗ p: zero at t = 0. The degree must stay within max_degree.
+  Polynomial antiderivative() const;
   /// Largest coefficient magnitude: the scale against which cancellation is judged.
   double magnitude() const;
 

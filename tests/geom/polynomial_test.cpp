@@ -60,5 +60,15 @@ TEST(Polynomial, NegligiblePolynomialHasNoRoots) {
   EXPECT_TRUE(sign_changes_in_unit_interval(Polynomial(), 0.0).empty());
 }
 
+TEST(Polynomial, AntiderivativeUndoesTheDerivativeAndStartsAtZero) {
+  const Polynomial p(std::vector<double>{2.0, -1.0, 0.5, 3.0});
+  const Polynomial a = p.antiderivative();
+  EXPECT_EQ(a.degree(), 4);
+  EXPECT_EQ(a(0.0), 0.0);
+  for (const double t : {-1.0, 0.3, 2.0}) EXPECT_NEAR(a.derivative()(t), p(t), 1e-14);
+  // ∫₀¹ p = 2 − 1/2 + 1/6 + 3/4
+  EXPECT_NEAR(a(1.0), 2.0 - 0.5 + 0.5 / 3.0 + 0.75, 1e-15);
+}
+
 }  // namespace
 }  // namespace gf

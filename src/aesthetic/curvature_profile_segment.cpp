@@ -1,0 +1,185 @@
+#include "aesthetic/curvature_profile_segment.hpp"
+
+#include <array>
+#include <cmath>
+#include <complex>
+
+#include <Eigen/Dense>
+#include <boost/math/quadrature/gauss.hpp>
+#include <boost/math/tools/roots.hpp>
+
+#include "aesthetic/clothoid_g1.hpp"
+
+namespace gf {
+
+namespace {
+
+// The power basis of the cubic Bézier with control values c₀…c₃.
+Polynomial cubic_bezier(double c0, double c1, double c2, double c3) {
+  const double a[] = {c0, 3.0 * (c1 - c0), 3.0 * (c0 - 2.0 * c1 + c2), -c0 + 3.0 * c1 - 3.0 * c2 + c3};
+  return Polynomial(a);
+}
+
+}  // namespace
+
+CurvatureProfileSegment::CurvatureProfileSegment(const CurvatureEnd& start, double length, double start_leg,
+                                                 double end_leg, double end_curvature, double end_curvature_slope)
+    : origin_(start.point), length_(length), start_leg_(start_leg), end_leg_(end_leg) {
+  s_ = cubic_bezier(0.0, start_leg, length - end_leg, length);
+  kappa_ = cubic_bezier(start.curvature, start.curvature + start_leg * start.curvature_slope,
+                        end_curvature - end_leg * end_curvature_slope, end_curvature);
+  const double theta0[] = {start.tangent_angle};
+  theta_ = Polynomial(theta0) + (kappa_ * s_.derivative()).antiderivative();
+}
+
+std::vector<Vec2> CurvatureProfileSegment::profile_controls() const {
+  const double k0 = kappa_(0.0), k1 = kappa_(1.0);
+  const double slope0 = kappa_.derivative()(0.0) / s_.derivative()(0.0);
+  const double slope1 = kappa_.derivative()(1.0) / s_.derivative()(1.0);
+  return {{0.0, k0},
+          {start_leg_, k0 + start_leg_ * slope0},
+          {length_ - end_leg_, k1 - end_leg_ * slope1},
+          {length_, k1}};
+}
+
+Vec2 CurvatureProfileSegment::displacement(double t0, double t1) const {
+  using Rule = boost::math::quadrature::gauss<double, 30>;
+  const Polynomial speed = s_.derivative();
+  const auto f = [&](double t) { return std::polar(speed(t), theta_(t)); };
+  const int panels = std::max(1, static_cast<int>(std::ceil(4.0 * std::abs(t1 - t0))));
+  std::complex<double> sum = 0.0;
+  for (int k = 0; k < panels; ++k)
+    sum += Rule::integrate(f, t0 + (t1 - t0) * k / panels, t0 + (t1 - t0) * (k + 1) / panels);
+  return {sum.real(), sum.imag()};
+}
+
+LacPoint CurvatureProfileSegment::state(double t, Vec2 point) const {
+  const double speed = s_.derivative()(t);
+  LacPoint p{point, direction_of(theta_(t)), kappa_(t), std::nullopt};
+  if (speed > 0.0) p.curvature_derivative = kappa_.derivative()(t) / speed;
+  return p;
+}
+
+LacPoint CurvatureProfileSegment::at_parameter(double t) const {
+  return state(t, origin_ + displacement(0.0, t));
+}
+
+double CurvatureProfileSegment::parameter_at(double sigma) const {
+  if (sigma <= 0.0) return 0.0;
+  if (sigma >= length_) return 1.0;
+  const Polynomial speed = s_.derivative();
+  std::uintmax_t iterations = 60;
+  return boost::math::tools::newton_raphson_iterate(
+      [&](double t) { return std::make_pair(s_(t) - sigma, speed(t)); }, sigma / length_, 0.0, 1.0, 50, iterations);
+}
+
+LacPoint CurvatureProfileSegment::at(double sigma) const { return at_parameter(parameter_at(sigma)); }
+
+std::vector<LacPoint> CurvatureProfileSegment::sample(int n) const {
+  std::vector<LacPoint> out;
+  out.reserve(static_cast<std::size_t>(n) + 1);
+  Vec2 point = origin_;
+  double t = 0.0;
+  out.push_back(state(0.0, point));
+  for (int k = 1; k <= n; ++k) {
+    const double next = k == n ? 1.0 : parameter_at(length_ * k / n);
+    point += displacement(t, next);
+    t = next;
+    out.push_back(state(t, point));
+  }
+  return out;
+}
+
+bool CurvatureProfileSegment::arc_length_monotone() const {
+  if (!(start_leg_ > 0.0 && end_leg_ > 0.0 && length_ > 0.0)) return false;
+  const Polynomial speed = s_.derivative();
+  return sign_changes_in_unit_interval(speed, 1e-12 * speed.magnitude()).empty();
+}
+
+bool CurvatureProfileSegment::curvature_monotone() const {
+  const Polynomial slope = kappa_.derivative();
+  return sign_changes_in_unit_interval(slope, 1e-12 * slope.magnitude()).empty();
+}
+
+ProfileFit fit_curvature_profile(const CurvatureEnd& start, const CurvatureEnd& end) {
+  ProfileFit fit;
+  const Vec2 chord = end.point - start.point;
+  const double r = norm(chord);
+  if (!(r > 0.0) || !std::isfinite(r)) {
+    fit.reason = "the end points coincide";
+    return fit;
+  }
+  // The problem scaled to a unit chord along +x: κ scales by r, κ′ by r².
+  const double phi = angle_of(chord);
+  const CurvatureEnd unit_start{{0.0, 0.0}, start.tangent_angle - phi, start.curvature * r,
+                                start.curvature_slope * r * r};
+  const double end_angle = end.tangent_angle - phi;
+  const double end_curvature = end.curvature * r, end_slope = end.curvature_slope * r * r;
+  using Params = Eigen::Vector3d;
+  const auto residual = [&](const Params& p) {
+    const CurvatureProfileSegment segment(unit_start, p[0], p[1], p[2], end_curvature, end_slope);
+    const Vec2 e = segment.end().point;
+    return Params(segment.tangent_angle_at_parameter(1.0) - end_angle, e.x - 1.0, e.y);
+  };
+  // Newton with an FD Jacobian and backtracking on ‖F‖₂; iterates may leave the valid region
+  // on the way (§7.1), only S > 0 is kept. nullopt, with the reason, where it fails.
+  const auto newton = [&](Params p) -> std::optional<Params> {
+    constexpr double tolerance = 1e-12;
+    constexpr int max_iterations = 60;
+    Params f = residual(p);
+    for (int iteration = 0;; ++iteration, ++fit.iterations) {
+      fit.residual = f.cwiseAbs().maxCoeff();
+      if (!std::isfinite(fit.residual)) {
+        fit.reason = "the curvature-profile Newton iteration left the finite numbers";
+        return std::nullopt;
+      }
+      if (fit.residual < tolerance) return p;
+      if (iteration == max_iterations) {
+        fit.reason = "the curvature-profile Newton iteration did not reach 1e-12 in 60 steps (residual " +
+                     std::to_string(fit.residual) + ")";
+        return std::nullopt;
+      }
+      Eigen::Matrix3d jacobian;
+      for (int c = 0; c < 3; ++c) {
+        Params q = p;
+        const double h = 1e-7 * std::max(1.0, std::abs(p[c]));
+        q[c] += h;
+        jacobian.col(c) = (residual(q) - f) / h;
+      }
+      const Params step = jacobian.fullPivLu().solve(-f);
+      bool moved = false;
+      for (double damping = 1.0; damping > 1e-6 && !moved; damping *= 0.5) {
+        const Params q = p + damping * step;
+        if (!(q[0] > 0.0)) continue;
+        const Params fq = residual(q);
+        if (fq.allFinite() && fq.norm() < f.norm()) p = q, f = fq, moved = true;
+      }
+      if (!moved) {
+        fit.reason = "the curvature-profile Newton iteration stalled (residual " + std::to_string(fit.residual) + ")";
+        return std::nullopt;
+      }
+    }
+  };
+  // Start from the G1 clothoid's length (§7.1: naive guesses fail in 3 of 4 tries), legs S/3;
+  // where that converges to a profile that runs backwards, from other legs.
+  const ClothoidFit clothoid = fit_clothoid_g1({0.0, 0.0}, unit_start.tangent_angle, {1.0, 0.0}, end_angle);
+  const double turning = std::abs(end_angle - unit_start.tangent_angle);
+  const double guess = clothoid.ok() ? clothoid.arc->length
+                                     : (turning > 1e-3 ? 0.5 * turning / std::sin(std::min(0.5 * turning, 1.5)) : 1.0);
+  constexpr double leg_starts[][2] = {{1.0 / 3, 1.0 / 3}, {0.2, 0.2}, {0.45, 0.45}, {0.2, 0.45}, {0.45, 0.2}};
+  for (const auto& legs : leg_starts) {
+    const std::optional<Params> p = newton(Params(guess, legs[0] * guess, legs[1] * guess));
+    if (!p) continue;
+    const CurvatureProfileSegment segment(start, (*p)[0] * r, (*p)[1] * r, (*p)[2] * r, end.curvature,
+                                          end.curvature_slope);
+    if (segment.arc_length_monotone()) {
+      fit.segment = segment;
+      fit.reason.clear();
+      return fit;
+    }
+    fit.reason = "the profiles found run backwards in arc length (a leg ≤ 0 or s′ ≤ 0)";
+  }
+  return fit;
+}
+
+}  // namespace gf
