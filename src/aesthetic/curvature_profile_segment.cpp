@@ -1,11 +1,7 @@
 #include "aesthetic/curvature_profile_segment.hpp"
 
-#include <array>
 #include <cmath>
-#include <complex>
 
-#include <Eigen/Dense>
-#include <boost/math/quadrature/gauss.hpp>
 #include <boost/math/tools/roots.hpp>
 
 #include "aesthetic/clothoid_g1.hpp"
@@ -42,17 +38,6 @@ std::vector<Vec2> CurvatureProfileSegment::profile_controls() const {
           {length_, k1}};
 }
 
-Vec2 CurvatureProfileSegment::displacement(double t0, double t1) const {
-  using Rule = boost::math::quadrature::gauss<double, 30>;
-  const Polynomial speed = s_.derivative();
-  const auto f = [&](double t) { return std::polar(speed(t), theta_(t)); };
-  const int panels = std::max(1, static_cast<int>(std::ceil(4.0 * std::abs(t1 - t0))));
-  std::complex<double> sum = 0.0;
-  for (int k = 0; k < panels; ++k)
-    sum += Rule::integrate(f, t0 + (t1 - t0) * k / panels, t0 + (t1 - t0) * (k + 1) / panels);
-  return {sum.real(), sum.imag()};
-}
-
 LacPoint CurvatureProfileSegment::state(double t, Vec2 point) const {
   const double speed = s_.derivative()(t);
   LacPoint p{point, direction_of(theta_(t)), kappa_(t), std::nullopt};
@@ -61,7 +46,7 @@ LacPoint CurvatureProfileSegment::state(double t, Vec2 point) const {
 }
 
 LacPoint CurvatureProfileSegment::at_parameter(double t) const {
-  return state(t, origin_ + displacement(0.0, t));
+  return state(t, origin_ + direction_integral(theta_, s_.derivative(), 0.0, t));
 }
 
 double CurvatureProfileSegment::parameter_at(double sigma) const {
@@ -83,7 +68,7 @@ std::vector<LacPoint> CurvatureProfileSegment::sample(int n) const {
   out.push_back(state(0.0, point));
   for (int k = 1; k <= n; ++k) {
     const double next = k == n ? 1.0 : parameter_at(length_ * k / n);
-    point += displacement(t, next);
+    point += direction_integral(theta_, s_.derivative(), t, next);
     t = next;
     out.push_back(state(t, point));
   }
@@ -103,75 +88,35 @@ bool CurvatureProfileSegment::curvature_monotone() const {
 
 ProfileFit fit_curvature_profile(const CurvatureEnd& start, const CurvatureEnd& end) {
   ProfileFit fit;
-  const Vec2 chord = end.point - start.point;
-  const double r = norm(chord);
-  if (!(r > 0.0) || !std::isfinite(r)) {
+  const UnitChordProblem unit(start, end);
+  if (unit.degenerate()) {
     fit.reason = "the end points coincide";
     return fit;
   }
-  // The problem scaled to a unit chord along +x: κ scales by r, κ′ by r².
-  const double phi = angle_of(chord);
-  const CurvatureEnd unit_start{{0.0, 0.0}, start.tangent_angle - phi, start.curvature * r,
-                                start.curvature_slope * r * r};
-  const double end_angle = end.tangent_angle - phi;
-  const double end_curvature = end.curvature * r, end_slope = end.curvature_slope * r * r;
-  using Params = Eigen::Vector3d;
-  const auto residual = [&](const Params& p) {
-    const CurvatureProfileSegment segment(unit_start, p[0], p[1], p[2], end_curvature, end_slope);
-    const Vec2 e = segment.end().point;
-    return Params(segment.tangent_angle_at_parameter(1.0) - end_angle, e.x - 1.0, e.y);
-  };
-  // Newton with an FD Jacobian and backtracking on ‖F‖₂; iterates may leave the valid region
-  // on the way (§7.1), only S > 0 is kept. nullopt, with the reason, where it fails.
-  const auto newton = [&](Params p) -> std::optional<Params> {
-    constexpr double tolerance = 1e-12;
-    constexpr int max_iterations = 60;
-    Params f = residual(p);
-    for (int iteration = 0;; ++iteration, ++fit.iterations) {
-      fit.residual = f.cwiseAbs().maxCoeff();
-      if (!std::isfinite(fit.residual)) {
-        fit.reason = "the curvature-profile Newton iteration left the finite numbers";
-        return std::nullopt;
-      }
-      if (fit.residual < tolerance) return p;
-      if (iteration == max_iterations) {
-        fit.reason = "the curvature-profile Newton iteration did not reach 1e-12 in 60 steps (residual " +
-                     std::to_string(fit.residual) + ")";
-        return std::nullopt;
-      }
-      Eigen::Matrix3d jacobian;
-      for (int c = 0; c < 3; ++c) {
-        Params q = p;
-        const double h = 1e-7 * std::max(1.0, std::abs(p[c]));
-        q[c] += h;
-        jacobian.col(c) = (residual(q) - f) / h;
-      }
-      const Params step = jacobian.fullPivLu().solve(-f);
-      bool moved = false;
-      for (double damping = 1.0; damping > 1e-6 && !moved; damping *= 0.5) {
-        const Params q = p + damping * step;
-        if (!(q[0] > 0.0)) continue;
-        const Params fq = residual(q);
-        if (fq.allFinite() && fq.norm() < f.norm()) p = q, f = fq, moved = true;
-      }
-      if (!moved) {
-        fit.reason = "the curvature-profile Newton iteration stalled (residual " + std::to_string(fit.residual) + ")";
-        return std::nullopt;
-      }
-    }
+  const auto residual = [&](const Eigen::Vector3d& p) {
+    const CurvatureProfileSegment s(unit.start, p[0], p[1], p[2], unit.end.curvature, unit.end.curvature_slope);
+    const Vec2 e = s.end().point;
+    return Eigen::Vector3d(s.tangent_angle_at_parameter(1.0) - unit.end.tangent_angle, e.x - 1.0, e.y);
   };
   // Start from the G1 clothoid's length (§7.1: naive guesses fail in 3 of 4 tries), legs S/3;
-  // where that converges to a profile that runs backwards, from other legs.
-  const ClothoidFit clothoid = fit_clothoid_g1({0.0, 0.0}, unit_start.tangent_angle, {1.0, 0.0}, end_angle);
-  const double turning = std::abs(end_angle - unit_start.tangent_angle);
+  // where that converges to a profile that runs backwards, from other legs. Iterates may leave
+  // the valid region on the way (§7.1); only S > 0 is kept.
+  const ClothoidFit clothoid = fit_clothoid_g1({0.0, 0.0}, unit.start.tangent_angle, {1.0, 0.0}, unit.end.tangent_angle);
+  const double turning = std::abs(unit.end.tangent_angle - unit.start.tangent_angle);
   const double guess = clothoid.ok() ? clothoid.arc->length
                                      : (turning > 1e-3 ? 0.5 * turning / std::sin(std::min(0.5 * turning, 1.5)) : 1.0);
   constexpr double leg_starts[][2] = {{1.0 / 3, 1.0 / 3}, {0.2, 0.2}, {0.45, 0.45}, {0.2, 0.45}, {0.45, 0.2}};
   for (const auto& legs : leg_starts) {
-    const std::optional<Params> p = newton(Params(guess, legs[0] * guess, legs[1] * guess));
-    if (!p) continue;
-    const CurvatureProfileSegment segment(start, (*p)[0] * r, (*p)[1] * r, (*p)[2] * r, end.curvature,
-                                          end.curvature_slope);
+    const EndMatch m = match_end(residual, Eigen::Vector3d(guess, legs[0] * guess, legs[1] * guess),
+                                 [](const Eigen::Vector3d& q) { return q[0] > 0.0; });
+    fit.iterations += m.iterations, fit.residual = m.residual;
+    if (!m.parameters) {
+      fit.reason = "curvature profile: " + m.reason;
+      continue;
+    }
+    const Eigen::Vector3d& p = *m.parameters;
+    const double r = unit.chord;
+    const CurvatureProfileSegment segment(start, p[0] * r, p[1] * r, p[2] * r, end.curvature, end.curvature_slope);
     if (segment.arc_length_monotone()) {
       fit.segment = segment;
       fit.reason.clear();

@@ -3,7 +3,7 @@
 //   P1 = (0, κ₀),  P2 = P1 + λ₀(1, κ′₀),  P3 = P4 − λ₁(1, κ′₁),  P4 = (S, κ₁),
 // so κ and dκ/ds are given at both ends; the curve follows from
 //   Θ(t) = θ₀ + ∫₀ᵗ K s′ dτ   (a degree-6 polynomial, exact),
-//   p(t) = p₀ + ∫₀ᵗ (cos Θ, sin Θ) s′ dτ   (Gauss–Legendre, 30 nodes per quarter of t).
+//   p(t) = p₀ + ∫₀ᵗ (cos Θ, sin Θ) s′ dτ   (aesthetic/end_matching.hpp's direction_integral).
 // Two such segments sharing an end's κ and κ′ join G3: this is glyphfair's G3 segment.
 #pragma once
 
@@ -11,19 +11,12 @@
 #include <string>
 #include <vector>
 
+#include "aesthetic/end_matching.hpp"
 #include "aesthetic/log_aesthetic_segment.hpp"
 #include "geom/polynomial.hpp"
 #include "geom/vec2.hpp"
 
 namespace gf {
-
-/// What a G3 join fixes at one end of a segment.
-struct CurvatureEnd {
-  Vec2 point;
-  double tangent_angle;    ///< radians; the end's minus the start's is the segment's turning, as given
-  double curvature;        ///< κ, left turns positive
-  double curvature_slope;  ///< κ′ = dκ/ds
-};
 
 class CurvatureProfileSegment {
  public:
@@ -56,7 +49,6 @@ class CurvatureProfileSegment {
 
  private:
   double parameter_at(double sigma) const;
-  Vec2 displacement(double t0, double t1) const;
   LacPoint state(double t, Vec2 point) const;
 
   Vec2 origin_;

@@ -17,7 +17,12 @@ Per glyph (a–z A–Z by default, through the font's cmap), both versions:
 Bars (--profile handwriting|text) as the issue states them; prints a line per glyph and a
 summary; exit 1 when a bar fails.
 
-usage: fairing_bars.py FONT FAIRED.ufo --profile handwriting|text [--glyphs a,b,...] [--json OUT]
+With --continuity g3, also the G3 issue's bars on the cubics: the median over smooth joins
+between cubics of |κ′− − κ′+| / max(|κ′−|, |κ′+|), and (given --g2-ufo) the nodes against
+the G2 output.
+
+usage: fairing_bars.py FONT FAIRED.ufo --profile handwriting|text [--glyphs a,b,...]
+                       [--continuity g3 [--g2-ufo G2.ufo]] [--json OUT]
 """
 import argparse
 import json
@@ -32,7 +37,7 @@ from fontTools.ufoLib import UFOReader
 from scipy.spatial import cKDTree
 
 from compare_outlines import segments
-from independent_checks import cross, dot, join_counts, norm, sub, tangent
+from independent_checks import cross, dot, end_curvature_slope, join_counts, norm, sub, tangent
 
 SMOOTH_DEG, CORNER_DEG = 0.05, 3.0
 
@@ -129,6 +134,26 @@ def measures(contours, upm):
     return tv, infl, ext
 
 
+def g3_jumps(contours):
+    """At every smooth join (≤ 0.05°) between two cubics, |κ′− − κ′+| / max(|κ′−|, |κ′+|)
+    (0 where both are 0): the G3 bar's measure."""
+    out = []
+    for segs in contours:
+        for i in range(len(segs)):
+            a, b = segs[i - 1], segs[i]
+            tin, tout = tangent(a, True), tangent(b, False)
+            if tin is None or tout is None:
+                continue
+            if abs(math.degrees(math.atan2(cross(tin, tout), dot(tin, tout)))) > SMOOTH_DEG:
+                continue
+            d1, d2 = end_curvature_slope(a, True), end_curvature_slope(b, False)
+            if d1 is None or d2 is None:
+                continue
+            big = max(abs(d1), abs(d2))
+            out.append(abs(d1 - d2) / big if big > 0 else 0.0)
+    return out
+
+
 def dense(contours, spacing=0.25):
     pts = []
     for segs in contours:
@@ -165,6 +190,9 @@ def main():
     ap.add_argument("ufo")
     ap.add_argument("--profile", choices=["handwriting", "text"], required=True)
     ap.add_argument("--glyphs", default="abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ")
+    ap.add_argument("--continuity", choices=["g2", "g3"], default="g2",
+                    help="g3: also the G3 bars (median κ′ jump; nodes against --g2-ufo)")
+    ap.add_argument("--g2-ufo", help="the G2 output of the same glyphs, for the G3 node bar")
     ap.add_argument("--json")
     args = ap.parse_args()
     font = TTFont(args.font)
@@ -172,7 +200,10 @@ def main():
     cmap = font.getBestCmap()
     src_gs = font.getGlyphSet()
     ufo_gs = UFOReader(args.ufo, validate=True).getGlyphSet()
+    g2_gs = UFOReader(args.g2_ufo, validate=True).getGlyphSet() if args.g2_ufo else None
     rows = []
+    slope_jumps = []
+    g2_nodes = 0
     for ch in args.glyphs:
         name = cmap.get(ord(ch))
         if name is None or name not in ufo_gs:
@@ -182,6 +213,9 @@ def main():
         tv_a, infl_a, ext_a = measures(a, upm)
         tv_b, infl_b, ext_b = measures(b, upm)
         kinks, jumps, smooth, missing = join_counts(b, upm)
+        slope_jumps += g3_jumps(b)
+        if g2_gs is not None:
+            g2_nodes += sum(len(c) for c in glyph_contours(g2_gs, name, True))
         row = {
             "glyph": name, "tv": [tv_a, tv_b], "inflections": [infl_a, infl_b], "extrema": [ext_a, ext_b],
             "nodes": [sum(len(c) for c in a), sum(len(c) for c in b)],
@@ -227,6 +261,12 @@ def main():
             ("nodes <= 1.3x", total_ratio("nodes"), total_ratio("nodes") <= 1.3),
             ("contour count and direction kept", sum(not r["contours_kept"] for r in rows), all(r["contours_kept"] for r in rows)),
         ]
+    if args.continuity == "g3":
+        median_jump = statistics.median(slope_jumps) if slope_jumps else 0.0
+        bars.append(("dk/ds jump at smooth joins, median < 0.05", median_jump, median_jump < 0.05))
+        if g2_gs is not None:
+            growth = sum(r["nodes"][1] for r in rows) / max(g2_nodes, 1)
+            bars.append(("nodes <= 1.2x the G2 output", growth, growth <= 1.2))
     failed = 0
     for name, value, ok in bars:
         failed += not ok

@@ -72,6 +72,23 @@ def end_curvature(seg, at_end):
     return -k if at_end else k  # walking the reversed points flips the turn
 
 
+def end_curvature_slope(seg, at_end):
+    """dκ/ds at an end of a cubic (None for lines and quadratics), signed along travel:
+    (|B′|²(B′ × B‴) − 3(B′ × B″)(B′ · B″)) / |B′|⁶ at t = 0 of the points walked from that
+    end. Walking backwards flips both κ and s, so the far end needs no sign change."""
+    if len(seg) != 4:
+        return None
+    p = list(reversed(seg)) if at_end else list(seg)
+    d1 = tuple(3 * (p[1][i] - p[0][i]) for i in range(2))
+    d2 = tuple(6 * (p[2][i] - 2 * p[1][i] + p[0][i]) for i in range(2))
+    d3 = tuple(6 * (p[3][i] - 3 * p[2][i] + 3 * p[1][i] - p[0][i]) for i in range(2))
+    v2 = dot(d1, d1)
+    if v2 == 0:
+        return None
+    slope = (v2 * cross(d1, d3) - 3 * cross(d1, d2) * dot(d1, d2)) / v2 ** 3
+    return slope  # reversed walk: κ → −κ and s → −s, so dκ/ds is unchanged
+
+
 def point(seg, t):
     pts = list(seg)
     while len(pts) > 1:

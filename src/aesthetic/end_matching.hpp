@@ -1,0 +1,112 @@
+// What the G3 segments share (lac-math.md §7.1): the curve from its tangent angle, the end
+// data scaled to a unit chord, and the 3×3 Newton that makes a segment meet its far end.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <optional>
+#include <string>
+
+#include <Eigen/Dense>
+#include <boost/math/quadrature/gauss.hpp>
+
+#include "geom/polynomial.hpp"
+#include "geom/vec2.hpp"
+
+namespace gf {
+
+/// What a G3 join fixes at one end of a segment.
+struct CurvatureEnd {
+  Vec2 point;
+  double tangent_angle;    ///< radians; the end's minus the start's is the segment's turning, as given
+  double curvature;        ///< κ, left turns positive
+  double curvature_slope;  ///< κ′ = dκ/ds
+};
+
+/// ∫_{t0}^{t1} (cos Θ, sin Θ) · speed dt for polynomial Θ(t) and speed(t): Gauss–Legendre with
+/// 30 nodes on every quarter of t (Θ has degree ≤ 6 and turns by well under 2π; 4 × 40 nodes
+/// reproduce the ends to 1e-15 in check_07).
+inline Vec2 direction_integral(const Polynomial& theta, const Polynomial& speed, double t0, double t1) {
+  using Rule = boost::math::quadrature::gauss<double, 30>;
+  const auto f = [&](double t) { return std::polar(speed(t), theta(t)); };
+  const int panels = std::max(1, static_cast<int>(std::ceil(4.0 * std::abs(t1 - t0))));
+  std::complex<double> sum = 0.0;
+  for (int k = 0; k < panels; ++k)
+    sum += Rule::integrate(f, t0 + (t1 - t0) * k / panels, t0 + (t1 - t0) * (k + 1) / panels);
+  return {sum.real(), sum.imag()};
+}
+
+/// The end data moved to start at the origin with a chord of 1 along +x: κ scales by the chord
+/// r, κ′ by r², lengths by 1/r.
+struct UnitChordProblem {
+  double chord = 0.0;
+  double chord_angle = 0.0;
+  CurvatureEnd start, end;
+
+  UnitChordProblem(const CurvatureEnd& s, const CurvatureEnd& e) {
+    const Vec2 d = e.point - s.point;
+    chord = norm(d);
+    chord_angle = angle_of(d);
+    const auto unit = [&](const CurvatureEnd& c, Vec2 p) {
+      return CurvatureEnd{p, c.tangent_angle - chord_angle, c.curvature * chord, c.curvature_slope * chord * chord};
+    };
+    start = unit(s, {0.0, 0.0}), end = unit(e, {1.0, 0.0});
+  }
+  bool degenerate() const { return !(chord > 0.0) || !std::isfinite(chord); }
+};
+
+struct EndMatch {
+  std::optional<Eigen::Vector3d> parameters;  ///< nullopt: `reason` says why
+  int iterations = 0;
+  double residual = 0.0;  ///< max |F| reached
+  std::string reason;
+};
+
+/// Newton on F(p) = 0, F: R³ → R³ (an end's angle and position misses), from `p`: a
+/// finite-difference Jacobian, backtracking on ‖F‖₂, iterates kept where `admissible`, done at
+/// max |F| < 1e-12 (§7.1's recipe).
+template <typename Residual, typename Admissible>
+EndMatch match_end(Residual residual, Eigen::Vector3d p, Admissible admissible) {
+  using Params = Eigen::Vector3d;
+  constexpr double tolerance = 1e-12;
+  constexpr int max_iterations = 60;
+  EndMatch m;
+  Params f = residual(p);
+  for (;; ++m.iterations) {
+    m.residual = f.cwiseAbs().maxCoeff();
+    if (!std::isfinite(m.residual)) {
+      m.reason = "the Newton iteration left the finite numbers";
+      return m;
+    }
+    if (m.residual < tolerance) {
+      m.parameters = p;
+      return m;
+    }
+    if (m.iterations == max_iterations) {
+      m.reason = "the Newton iteration did not reach 1e-12 in 60 steps (residual " + std::to_string(m.residual) + ")";
+      return m;
+    }
+    Eigen::Matrix3d jacobian;
+    for (int c = 0; c < 3; ++c) {
+      Params q = p;
+      const double h = 1e-7 * std::max(1.0, std::abs(p[c]));
+      q[c] += h;
+      jacobian.col(c) = (residual(q) - f) / h;
+    }
+    const Params step = jacobian.fullPivLu().solve(-f);
+    bool moved = false;
+    for (double damping = 1.0; damping > 1e-6 && !moved; damping *= 0.5) {
+      const Params q = p + damping * step;
+      if (!admissible(q)) continue;
+      const Params fq = residual(q);
+      if (fq.allFinite() && fq.norm() < f.norm()) p = q, f = fq, moved = true;
+    }
+    if (!moved) {
+      m.reason = "the Newton iteration stalled (residual " + std::to_string(m.residual) + ")";
+      return m;
+    }
+  }
+}
+
+}  // namespace gf
