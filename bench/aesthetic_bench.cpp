@@ -2,7 +2,10 @@
 // 1e-12 accuracy) and dense sampling.
 #include <benchmark/benchmark.h>
 
+#include "aesthetic/clothoid_g1.hpp"
+#include "aesthetic/curvature_profile_segment.hpp"
 #include "aesthetic/lcg_slope.hpp"
+#include "aesthetic/polynomial_spiral.hpp"
 #include "aesthetic/segment_fit.hpp"
 
 namespace gf {
@@ -24,6 +27,25 @@ void inflection_start_construction(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(fit_inflection_start({0, 0}, {1.8, 0}, {2.414, 1}));
 }
 BENCHMARK(inflection_start_construction);
+
+void clothoid_g1_fit(benchmark::State& state) {
+  for (auto _ : state) benchmark::DoNotOptimize(fit_clothoid_g1({0, 0}, 0.3, {2, 1}, -0.4));
+}
+BENCHMARK(clothoid_g1_fit);
+
+// The G3 segments on check_07's reference problem (lac-math.md §7.1), to 1e-12.
+const CurvatureEnd g3_start{{0, 0}, 0.0, 1.0, 0.5};
+const CurvatureEnd g3_end{{0.751193112803, 0.733640070028}, 1.766325, 2.0, 0.8};
+
+void curvature_profile_fit(benchmark::State& state) {
+  for (auto _ : state) benchmark::DoNotOptimize(fit_curvature_profile(g3_start, g3_end));
+}
+BENCHMARK(curvature_profile_fit);
+
+void polynomial_spiral_fit(benchmark::State& state) {
+  for (auto _ : state) benchmark::DoNotOptimize(fit_polynomial_spiral(g3_start, g3_end));
+}
+BENCHMARK(polynomial_spiral_fit);
 
 void sampling(benchmark::State& state) {
   const LogAestheticSegment s = *fit_three_point({0, 0}, {1, 0}, {2, 0.8}, 1.5).segment;

@@ -8,18 +8,25 @@
 namespace gf {
 
 FresnelMoments generalised_fresnel(double a, double b, double c) {
+  // Gauss–Legendre on [0, ½] and [½, 1], one cos/sin per node for all three moments.
   using Rule = boost::math::quadrature::gauss<double, 30>;
+  const auto& x = Rule::abscissa();
+  const auto& w = Rule::weights();
   FresnelMoments m{};
-  for (int k = 0; k < 3; ++k) {
-    const auto moment = [&](bool sine) {
-      const auto f = [&](double t) {
-        const double phase = 0.5 * a * t * t + b * t + c;
-        return std::pow(t, k) * (sine ? std::sin(phase) : std::cos(phase));
-      };
-      return Rule::integrate(f, 0.0, 0.5) + Rule::integrate(f, 0.5, 1.0);
-    };
-    m.x[k] = moment(false);
-    m.y[k] = moment(true);
+  const auto add = [&](double t, double weight) {
+    const double phase = 0.5 * a * t * t + b * t + c;
+    const double cs = weight * std::cos(phase), sn = weight * std::sin(phase);
+    m.x[0] += cs, m.y[0] += sn;
+    m.x[1] += t * cs, m.y[1] += t * sn;
+    m.x[2] += t * t * cs, m.y[2] += t * t * sn;
+  };
+  for (const double mid : {0.25, 0.75}) {
+    // The rule stores the non-negative abscissae of [−1, 1] (0 once, when present).
+    for (std::size_t k = 0; k < x.size(); ++k) {
+      const double weight = 0.25 * w[k];
+      add(mid + 0.25 * x[k], weight);
+      if (x[k] != 0.0) add(mid - 0.25 * x[k], weight);
+    }
   }
   return m;
 }

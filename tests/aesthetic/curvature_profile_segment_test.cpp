@@ -133,7 +133,7 @@ TEST(CurvatureProfileSegment, RandomProblemsConvergeAndMeetTheirEnds) {
     EXPECT_NEAR(fit.segment->tangent_angle_at_parameter(1.0), turning, 1e-11);
     EXPECT_NEAR(*e.curvature_derivative, dk2, 1e-9 * std::max(1.0, std::abs(dk2)));
   }
-  EXPECT_GT(tried, 190);
+  EXPECT_EQ(tried, 200);  // none turns by more than 0.9 · 2π with this seed
 }
 
 TEST(CurvatureProfileSegment, CoincidentEndsSayWhy) {
