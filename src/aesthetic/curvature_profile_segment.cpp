@@ -77,14 +77,10 @@ std::vector<LacPoint> CurvatureProfileSegment::sample(int n) const {
 
 bool CurvatureProfileSegment::arc_length_monotone() const {
   if (!(start_leg_ > 0.0 && end_leg_ > 0.0 && length_ > 0.0)) return false;
-  const Polynomial speed = s_.derivative();
-  return sign_changes_in_unit_interval(speed, 1e-12 * speed.magnitude()).empty();
+  return never_turns_back(s_);
 }
 
-bool CurvatureProfileSegment::curvature_monotone() const {
-  const Polynomial slope = kappa_.derivative();
-  return sign_changes_in_unit_interval(slope, 1e-12 * slope.magnitude()).empty();
-}
+bool CurvatureProfileSegment::curvature_monotone() const { return never_turns_back(kappa_); }
 
 ProfileFit fit_curvature_profile(const CurvatureEnd& start, const CurvatureEnd& end) {
   ProfileFit fit;

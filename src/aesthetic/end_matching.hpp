@@ -37,6 +37,13 @@ inline Vec2 direction_integral(const Polynomial& theta, const Polynomial& speed,
   return {sum.real(), sum.imag()};
 }
 
+/// p′ keeps one sign on (0, 1): p never turns back there (a curvature profile that is monotone,
+/// an arc length that runs one way).
+inline bool never_turns_back(const Polynomial& p) {
+  const Polynomial slope = p.derivative();
+  return sign_changes_in_unit_interval(slope, 1e-12 * slope.magnitude()).empty();
+}
+
 /// The end data moved to start at the origin with a chord of 1 along +x: κ scales by the chord
 /// r, κ′ by r², lengths by 1/r.
 struct UnitChordProblem {

@@ -46,10 +46,7 @@ std::vector<LacPoint> PolynomialSpiral::sample(int n) const {
   return out;
 }
 
-bool PolynomialSpiral::curvature_monotone() const {
-  const Polynomial slope = kappa_.derivative();
-  return sign_changes_in_unit_interval(slope, 1e-12 * slope.magnitude()).empty();
-}
+bool PolynomialSpiral::curvature_monotone() const { return never_turns_back(kappa_); }
 
 SpiralFit fit_polynomial_spiral(const CurvatureEnd& start, const CurvatureEnd& end) {
   SpiralFit fit;

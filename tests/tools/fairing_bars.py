@@ -37,7 +37,7 @@ from fontTools.ufoLib import UFOReader
 from scipy.spatial import cKDTree
 
 from compare_outlines import segments
-from independent_checks import cross, dot, end_curvature_slope, join_counts, norm, sub, tangent
+from independent_checks import end_curvature_slope, join_angle, join_counts, joins, norm, sub
 
 SMOOTH_DEG, CORNER_DEG = 0.05, 3.0
 
@@ -69,13 +69,6 @@ def curvature_samples(seg, n=64):
         k = (d1[:, 0] * d2[:, 1] - d1[:, 1] * d2[:, 0]) / speed ** 3
     ok = np.isfinite(k)
     return pt, k[ok], ok
-
-
-def join_angle(a, b):
-    tin, tout = tangent(a, True), tangent(b, False)
-    if tin is None or tout is None:
-        return None
-    return abs(math.degrees(math.atan2(cross(tin, tout), dot(tin, tout))))
 
 
 def stretches(segs):
@@ -139,12 +132,8 @@ def g3_jumps(contours):
     (0 where both are 0): the G3 bar's measure."""
     out = []
     for segs in contours:
-        for i in range(len(segs)):
-            a, b = segs[i - 1], segs[i]
-            tin, tout = tangent(a, True), tangent(b, False)
-            if tin is None or tout is None:
-                continue
-            if abs(math.degrees(math.atan2(cross(tin, tout), dot(tin, tout)))) > SMOOTH_DEG:
+        for a, b, angle in joins(segs):
+            if angle > SMOOTH_DEG:
                 continue
             d1, d2 = end_curvature_slope(a, True), end_curvature_slope(b, False)
             if d1 is None or d2 is None:

@@ -130,18 +130,31 @@ def derivative_roots(seg, axis):
     return []
 
 
+def join_angle(a, b):
+    """|Turning| in degrees from segment a's end to segment b's start; None where either has
+    no direction there."""
+    tin, tout = tangent(a, True), tangent(b, False)
+    if tin is None or tout is None:
+        return None
+    return abs(math.degrees(math.atan2(cross(tin, tout), dot(tin, tout))))
+
+
+def joins(segs):
+    """(incoming, outgoing, |turning| in degrees) at every join of a closed contour whose two
+    segments both have a direction there."""
+    for i in range(len(segs)):
+        angle = join_angle(segs[i - 1], segs[i])
+        if angle is not None:
+            yield segs[i - 1], segs[i], angle
+
+
 def join_counts(contours, upm):
     """Kinks, g2-jumps and missing extrema of one glyph's contours (closed, segments without
     zero-length ones), and how many smooth joins there were."""
     kinks = jumps = smooth = missing = 0
     nodes = [s[0] for c in contours for s in c] + [s[-1] for c in contours for s in c]
     for segs in contours:
-        for i in range(len(segs)):
-            a, b = segs[i - 1], segs[i]
-            tin, tout = tangent(a, True), tangent(b, False)
-            if tin is None or tout is None:
-                continue
-            angle = abs(math.degrees(math.atan2(cross(tin, tout), dot(tin, tout))))
+        for a, b, angle in joins(segs):
             if 0.05 < angle < 3:
                 kinks += 1
             elif angle <= 0.05:
