@@ -74,7 +74,7 @@ ClothoidFit fit_clothoid_g1(Vec2 p0, double theta0, Vec2 p1, double theta1) {
     if (!(std::abs(slope) > 0.0)) break;
     a -= m.y[0] / slope;
   }
-  fit.reason = "the G1 clothoid's Newton iteration did not reach 1e-12 in " + std::to_string(max_iterations) +
+  fit.reason = "the G1 clothoid's Newton iteration found no solution to 1e-12 in " + std::to_string(max_iterations) +
                " steps";
   return fit;
 }

@@ -28,16 +28,6 @@ CurvatureProfileSegment::CurvatureProfileSegment(const CurvatureEnd& start, doub
   theta_ = Polynomial(theta0) + (kappa_ * s_.derivative()).antiderivative();
 }
 
-std::vector<Vec2> CurvatureProfileSegment::profile_controls() const {
-  const double k0 = kappa_(0.0), k1 = kappa_(1.0);
-  const double slope0 = kappa_.derivative()(0.0) / s_.derivative()(0.0);
-  const double slope1 = kappa_.derivative()(1.0) / s_.derivative()(1.0);
-  return {{0.0, k0},
-          {start_leg_, k0 + start_leg_ * slope0},
-          {length_ - end_leg_, k1 - end_leg_ * slope1},
-          {length_, k1}};
-}
-
 LacPoint CurvatureProfileSegment::state(double t, Vec2 point) const {
   const double speed = s_.derivative()(t);
   LacPoint p{point, direction_of(theta_(t)), kappa_(t), std::nullopt};

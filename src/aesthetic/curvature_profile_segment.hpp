@@ -4,7 +4,7 @@
 // so κ and dκ/ds are given at both ends; the curve follows from
 //   Θ(t) = θ₀ + ∫₀ᵗ K s′ dτ   (a degree-6 polynomial, exact),
 //   p(t) = p₀ + ∫₀ᵗ (cos Θ, sin Θ) s′ dτ   (aesthetic/end_matching.hpp's direction_integral).
-// Two such segments sharing an end's κ and κ′ join G3: this is glyphfair's G3 segment.
+// Two such segments sharing an end's κ and κ′ join G3.
 #pragma once
 
 #include <optional>
@@ -28,8 +28,6 @@ class CurvatureProfileSegment {
   double length() const { return length_; }
   double start_leg() const { return start_leg_; }
   double end_leg() const { return end_leg_; }
-  /// The profile's four control points as (s, κ).
-  std::vector<Vec2> profile_controls() const;
 
   LacPoint start() const { return at_parameter(0.0); }
   LacPoint end() const { return at_parameter(1.0); }
