@@ -264,6 +264,7 @@ class SpanWriter {
   struct Cut {
     double sigma;
     std::optional<Vec2> step;
+    double turn_fraction = 0.0;  ///< of the span's turning, at a grid cut
   };
 
   // How coarsely whole grid steps set the curvature κ at a node whose handle is h long
@@ -344,7 +345,7 @@ class SpanWriter {
       if (f <= edge_margin || f >= 1.0 - edge_margin) continue;
       const double sigma = path_.where_turned(a, b, rel);
       const double g = (sigma - a) / (b - a);
-      if (g > edge_margin && g < 1.0 - edge_margin) out.push_back({sigma, d});
+      if (g > edge_margin && g < 1.0 - edge_margin) out.push_back({sigma, d, f});
     }
     std::sort(out.begin(), out.end(), [](const Cut& x, const Cut& y) { return x.sigma < y.sigma; });
     return out;
@@ -354,15 +355,10 @@ class SpanWriter {
   // direction nearest the middle of its turning, else at the chain junction nearest the
   // middle of its length, else at the middle.
   Cut fallback_cut(double a, double b) const {
-    const Vec2 ta = path_.at(a).tangent, tb = path_.at(b).tangent;
-    const double turn = turning_angle(ta, tb);
     std::optional<Cut> nearest_half;
     double off = 0.3;
-    if (std::abs(turn) > 1e-6)
-      for (const Cut& c : grid_cuts(a, b, all_)) {
-        const double f = turning_angle(ta, *c.step / norm(*c.step)) / turn;
-        if (std::abs(f - 0.5) < off) off = std::abs(f - 0.5), nearest_half = c;
-      }
+    for (const Cut& c : grid_cuts(a, b, all_))
+      if (std::abs(c.turn_fraction - 0.5) < off) off = std::abs(c.turn_fraction - 0.5), nearest_half = c;
     if (nearest_half) return *nearest_half;
     const double mid = 0.5 * (a + b), width = b - a;
     double cut = mid, nearest = 0.3 * width;
