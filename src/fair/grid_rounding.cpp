@@ -11,8 +11,6 @@ namespace gf {
 
 namespace {
 
-Vec2 rounded(Vec2 p) { return {std::round(p.x), std::round(p.y)}; }
-
 // node + sign·m·d: the handle m ≥ 1 whole grid steps from the node on its side (sign −1 for
 // an in-handle), m nearest to how far `handle` lies from `from` along d.
 Vec2 stepped_handle(Vec2 node, Vec2 d, double sign, Vec2 from, Vec2 handle) {
@@ -36,7 +34,7 @@ Choice collinear_choice(Vec2 point, std::optional<Vec2> in, std::optional<Vec2> 
   const double shortest = std::min(in ? norm(point - *in) : 1e300, out ? norm(*out - point) : 1e300);
   const int reach = std::clamp(static_cast<int>(shortest), 1, 64);
   const bool steep = std::abs(dir.y) > std::abs(dir.x);
-  const Vec2 base = rounded(point);
+  const Vec2 base = nearest_grid_point(point);
   Choice best;
   for (int major = 1; major <= reach; ++major) {
     const double minor_exact = major * (steep ? dir.x / std::abs(dir.y) : dir.y / std::abs(dir.x));
@@ -100,7 +98,7 @@ void resolve_handle_lengths(std::vector<OutlineNode>& nodes, const std::vector<O
     auto place = [&](std::size_t node, Vec2 exact, double sign) -> std::optional<Vec2> {
       const OutlineNode& q = nodes[node];
       if (steps[node]) return stepped_handle(q.point, *steps[node], sign, q.point, exact);
-      if (!q.smooth) return rounded(exact);
+      if (!q.smooth) return nearest_grid_point(exact);
       return std::nullopt;
     };
     if (const auto h = place(i, best->p[1], 1.0)) updated[i].out_handle = h;
@@ -120,7 +118,7 @@ std::vector<OutlineNode> round_to_grid(const std::vector<OutlineNode>& nodes, bo
   for (std::size_t i = 0; i < n; ++i) {
     const OutlineNode& src = nodes[i];
     OutlineNode& dst = r[i];
-    dst.point = rounded(src.point);
+    dst.point = nearest_grid_point(src.point);
     const bool both = src.in_handle && src.out_handle;
     if (src.smooth && both && src.grid_step) {
       // Steps along the exact direction: G1 exact on the grid, lengths within half a step.
@@ -129,8 +127,8 @@ std::vector<OutlineNode> round_to_grid(const std::vector<OutlineNode>& nodes, bo
       dst.out_handle = stepped_handle(dst.point, d, 1.0, src.point, *src.out_handle);
       steps[i] = d;
     } else {
-      if (src.in_handle) dst.in_handle = rounded(*src.in_handle);
-      if (src.out_handle) dst.out_handle = rounded(*src.out_handle);
+      if (src.in_handle) dst.in_handle = nearest_grid_point(*src.in_handle);
+      if (src.out_handle) dst.out_handle = nearest_grid_point(*src.out_handle);
     }
   }
   // Smooth nodes between two curves without a grid direction: the nearest exact collinear choice.

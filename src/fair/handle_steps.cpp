@@ -284,7 +284,7 @@ void nudge_jumping_nodes(std::vector<OutlineNode>& nodes, const std::vector<Outl
     OutlineNode best = kept;
     double best_cost = around(i);
     // Still on a grid point next to the nearest one, as rounding placed every node.
-    const Vec2 nearest{std::round(ideal[i].point.x), std::round(ideal[i].point.y)};
+    const Vec2 nearest = nearest_grid_point(ideal[i].point);
     for (int k = 0; k < 9; ++k) {
       const Vec2 p = kept.point + Vec2{double(k % 3 - 1), double(k / 3 - 1)};
       if (std::abs(p.x - nearest.x) > 1.0 || std::abs(p.y - nearest.y) > 1.0) continue;

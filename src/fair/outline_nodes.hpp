@@ -2,6 +2,7 @@
 // integer grid: what a type designer sees in the editor.
 #pragma once
 
+#include <cmath>
 #include <optional>
 #include <vector>
 
@@ -27,6 +28,9 @@ Cubic outline_cubic(const std::vector<OutlineNode>& nodes, std::size_t i);
 /// Node i starts segment i: a cubic when node i has an out-handle and node i + 1 an in-handle,
 /// else a line. A closed contour's last segment returns to node 0.
 Contour to_contour(const std::vector<OutlineNode>& nodes, bool closed);
+
+/// The integer grid point nearest p.
+inline Vec2 nearest_grid_point(Vec2 p) { return {std::round(p.x), std::round(p.y)}; }
 
 /// How many whole steps of the grid direction d, nearest, `handle` lies from `from` on its side
 /// of the node: sign +1 for an out-handle, −1 for an in-handle (0 or less: not on its side).

@@ -95,8 +95,6 @@ class SmoothingProblem {
     for (double& v : u_) v /= total;
   }
 
-  int unknowns() const { return unknowns_; }
-
   /// The penalty with span s weighed by weight[s].
   void weigh_spans(std::span<const double> weight) {
     penalty_ = Normal(unknowns_);
