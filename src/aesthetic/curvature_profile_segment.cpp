@@ -81,8 +81,7 @@ ProfileFit fit_curvature_profile(const CurvatureEnd& start, const CurvatureEnd& 
   }
   const auto residual = [&](const Eigen::Vector3d& p) {
     const CurvatureProfileSegment s(unit.start, p[0], p[1], p[2], unit.end.curvature, unit.end.curvature_slope);
-    const Vec2 e = s.end().point;
-    return Eigen::Vector3d(s.tangent_angle_at_parameter(1.0) - unit.end.tangent_angle, e.x - 1.0, e.y);
+    return unit.miss(s.tangent_angle_at_parameter(1.0), s.end().point);
   };
   // Start from the G1 clothoid's length (§7.1: naive guesses fail in 3 of 4 tries), legs S/3;
   // where that converges to a profile that runs backwards, from other legs. Iterates may leave

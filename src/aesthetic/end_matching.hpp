@@ -61,6 +61,11 @@ struct UnitChordProblem {
     start = unit(s, {0.0, 0.0}), end = unit(e, {1.0, 0.0});
   }
   bool degenerate() const { return !(chord > 0.0) || !std::isfinite(chord); }
+  /// F of the Newton below: how far a candidate's far end (its unwrapped tangent angle and its
+  /// point, on the unit problem) misses the end's.
+  Eigen::Vector3d miss(double angle, Vec2 point) const {
+    return {angle - end.tangent_angle, point.x - end.point.x, point.y - end.point.y};
+  }
 };
 
 struct EndMatch {

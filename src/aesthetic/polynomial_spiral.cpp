@@ -57,8 +57,7 @@ SpiralFit fit_polynomial_spiral(const CurvatureEnd& start, const CurvatureEnd& e
   }
   const auto residual = [&](const Eigen::Vector3d& p) {
     const PolynomialSpiral s(unit.start, p[0], unit.end.curvature, unit.end.curvature_slope, p[1], p[2]);
-    const Vec2 e = s.end().point;
-    return Eigen::Vector3d(s.tangent_angle_at(p[0]) - unit.end.tangent_angle, e.x - 1.0, e.y);
+    return unit.miss(s.tangent_angle_at(p[0]), s.end().point);
   };
   const ClothoidFit clothoid = fit_clothoid_g1({0.0, 0.0}, unit.start.tangent_angle, {1.0, 0.0}, unit.end.tangent_angle);
   const EndMatch m = match_end(residual, Eigen::Vector3d(clothoid.ok() ? clothoid.arc->length : 1.0, 0.0, 0.0),
