@@ -1,13 +1,11 @@
 #include "fair/handle_steps.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 
-#include "geom/critical_points.hpp"
+#include "fair/cubic_change.hpp"
 #include "geom/curvature.hpp"
-#include "geom/polyline_distance.hpp"
 
 namespace gf {
 
@@ -60,58 +58,11 @@ std::vector<Vec2> handles_meeting_line(const OutlineNode& node, std::optional<Ve
   return {line_end.point + line_dir * whole_steps(line_end.point, h, line_dir, 1.0)};
 }
 
-// How far a cubic moved from its unrounded self: the largest move of a control point (a bound
-// on the distance between the two curves) when that is within `within`, else the two-sided
-// distance between the curves themselves, which a handle slid along its own tangent moves
-// far less than it moves the control point.
-double moved_distance(const Cubic& a, const Cubic& b, double within) {
-  // a(t) − b(t) is the cubic with control points p_i − q_i: by the convex hull, none farther.
-  double d = 0.0;
-  for (int k = 0; k < 4; ++k) d = std::max(d, distance(a.p[k], b.p[k]));
-  if (d <= within) return d;
-  constexpr int n = 24;
-  std::array<Vec2, n + 1> pa, pb;
-  for (int k = 0; k <= n; ++k) pa[k] = a.point_at(double(k) / n), pb[k] = b.point_at(double(k) / n);
-  // Past `within`, only that it is past: the middle, where a far move shows most, first.
-  const double middle = directed_hausdorff(std::span<const Vec2>(&pa[n / 2], 1), pb);
-  if (middle > within) return std::min(d, middle);
-  const double there = directed_hausdorff(pa, pb, within);
-  return std::min(d, there > within ? there : std::max(there, directed_hausdorff(pb, pa, within)));
-}
-
 // How far the cubic from node i may move from its unrounded self to gain G2: its allowance,
 // or as far as rounding alone already put it.
 double allowed_move(const Cubic& rounded, const Cubic& unrounded, const HandleStepLimits& limits, std::size_t i) {
   const double allowance = limits.allowance_at(i);
   return std::max(allowance, moved_distance(rounded, unrounded, allowance));
-}
-
-// Horizontal and vertical extrema away from the ends (those within 1 % of t sit on the node).
-int inner_axis_extrema(const Cubic& c) {
-  const std::vector<AxisExtremum> all = axis_extrema(c);
-  return static_cast<int>(std::count_if(all.begin(), all.end(), [](const AxisExtremum& e) { return e.t > 0.01 && e.t < 0.99; }));
-}
-
-// How κ runs along a cubic, at sixteenths of its parameter: how often its sign changes (κ = 0
-// has no sign), its total variation, and its largest magnitude.
-struct CurvatureShape {
-  int sign_changes = 0;
-  double variation = 0.0, largest = 0.0;
-};
-
-CurvatureShape curvature_shape(const Cubic& c) {
-  CurvatureShape shape;
-  double previous = 0.0, last_signed = 0.0;
-  for (int k = 0; k <= 16; ++k) {
-    const double kappa = curvature(derivatives_at(c, k / 16.0)).value_or(0.0);
-    if (k > 0) shape.variation += std::abs(kappa - previous);
-    shape.largest = std::max(shape.largest, std::abs(kappa));
-    previous = kappa;
-    if (std::abs(kappa) < 1e-12) continue;
-    shape.sign_changes += last_signed * kappa < 0.0;
-    last_signed = kappa;
-  }
-  return shape;
 }
 
 // One cubic of the outline and every choice of its two handles (state = out·ins + in).

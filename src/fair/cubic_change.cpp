@@ -1,0 +1,49 @@
+#include "fair/cubic_change.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <span>
+#include <vector>
+
+#include "geom/critical_points.hpp"
+#include "geom/curvature.hpp"
+#include "geom/polyline_distance.hpp"
+
+namespace gf {
+
+double moved_distance(const Cubic& a, const Cubic& b, double within) {
+  double d = 0.0;
+  for (int k = 0; k < 4; ++k) d = std::max(d, distance(a.p[k], b.p[k]));
+  if (d <= within) return d;
+  constexpr int n = 24;
+  std::array<Vec2, n + 1> pa, pb;
+  for (int k = 0; k <= n; ++k) pa[k] = a.point_at(double(k) / n), pb[k] = b.point_at(double(k) / n);
+  // The middle, where a far move shows most, first.
+  const double middle = directed_hausdorff(std::span<const Vec2>(&pa[n / 2], 1), pb);
+  if (middle > within) return std::min(d, middle);
+  const double there = directed_hausdorff(pa, pb, within);
+  return std::min(d, there > within ? there : std::max(there, directed_hausdorff(pb, pa, within)));
+}
+
+int inner_axis_extrema(const Cubic& c) {
+  const std::vector<AxisExtremum> all = axis_extrema(c);
+  return static_cast<int>(std::count_if(all.begin(), all.end(), [](const AxisExtremum& e) { return e.t > 0.01 && e.t < 0.99; }));
+}
+
+CurvatureShape curvature_shape(const Cubic& c) {
+  CurvatureShape shape;
+  double previous = 0.0, last_signed = 0.0;
+  for (int k = 0; k <= 16; ++k) {
+    const double kappa = curvature(derivatives_at(c, k / 16.0)).value_or(0.0);
+    if (k > 0) shape.variation += std::abs(kappa - previous);
+    shape.largest = std::max(shape.largest, std::abs(kappa));
+    previous = kappa;
+    if (std::abs(kappa) < 1e-12) continue;
+    shape.sign_changes += last_signed * kappa < 0.0;
+    last_signed = kappa;
+  }
+  return shape;
+}
+
+}  // namespace gf

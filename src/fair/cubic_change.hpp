@@ -1,0 +1,28 @@
+// How a cubic of the outline changed from the one it replaces: how far it moved, and what its
+// curvature does inside (sign changes, variation, extrema), so that rounding and G3 can move
+// handles without adding a wobble, an inflection or an extremum the faired outline lacks.
+#pragma once
+
+#include "geom/bezier.hpp"
+
+namespace gf {
+
+/// How far cubic a moved from cubic b: the largest move of a control point (a bound on the
+/// distance between the two curves, by the convex hull of their difference) when that is
+/// within `within`, else the two-sided distance between the curves themselves, which a handle
+/// slid along its own tangent moves far less than it moves the control point. Past `within`,
+/// only that it is past.
+double moved_distance(const Cubic& a, const Cubic& b, double within);
+
+/// Horizontal and vertical extrema away from the ends (those within 1 % of t sit on the node).
+int inner_axis_extrema(const Cubic& c);
+
+/// How κ runs along a cubic, at sixteenths of its parameter: how often its sign changes (κ = 0
+/// has no sign), its total variation, and its largest magnitude.
+struct CurvatureShape {
+  int sign_changes = 0;
+  double variation = 0.0, largest = 0.0;
+};
+CurvatureShape curvature_shape(const Cubic& c);
+
+}  // namespace gf
