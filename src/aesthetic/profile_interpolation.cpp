@@ -1,0 +1,140 @@
+#include "aesthetic/profile_interpolation.hpp"
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <optional>
+#include <numbers>
+
+#include "aesthetic/clothoid_g1.hpp"
+
+namespace gf {
+
+namespace {
+
+// The direction of travel a → b → c of the circle through them: at the middle point b
+// parallel to the chord a → c; at the end a, the chord a → b turned away from the chord a → c
+// by the angle between them (tangent–chord theorem). Collinear points give the line.
+double circle_tangent_at_middle(Vec2 a, Vec2 c) { return angle_of(c - a); }
+double circle_tangent_at_start(Vec2 a, Vec2 b, Vec2 c) {
+  const double to_middle = angle_of(b - a);
+  return to_middle + std::remainder(to_middle - angle_of(c - a), 2.0 * std::numbers::pi);
+}
+
+// The chosen tangents, moved so that the G1 clothoids of the spans come nearest the given
+// curvatures at their ends (Gauss–Newton, least squares over κ·chord): a span whose clothoid
+// already bends as asked leaves its profile little to do.
+void settle_tangents(std::span<const InterpolationPoint> points, std::vector<double>& theta) {
+  const std::size_t n = points.size();
+  std::vector<std::size_t> free;
+  for (std::size_t i = 0; i < n; ++i)
+    if (!points[i].tangent_angle) free.push_back(i);
+  if (free.empty()) return;
+  const auto residuals = [&](const std::vector<double>& th) -> std::optional<Eigen::VectorXd> {
+    Eigen::VectorXd r(static_cast<Eigen::Index>(2 * (n - 1)));
+    for (std::size_t i = 0; i + 1 < n; ++i) {
+      const ClothoidFit c = fit_clothoid_g1(points[i].point, th[i], points[i + 1].point, th[i + 1]);
+      if (!c.ok()) return std::nullopt;
+      const double chord = distance(points[i].point, points[i + 1].point);
+      const ClothoidArc& a = *c.arc;
+      r[static_cast<Eigen::Index>(2 * i)] = (a.curvature - points[i].curvature) * chord;
+      r[static_cast<Eigen::Index>(2 * i + 1)] = (a.curvature + a.curvature_slope * a.length - points[i + 1].curvature) * chord;
+    }
+    return r;
+  };
+  std::optional<Eigen::VectorXd> r = residuals(theta);
+  for (int it = 0; it < 30 && r && r->norm() > 1e-12; ++it) {
+    Eigen::MatrixXd J(r->size(), static_cast<Eigen::Index>(free.size()));
+    for (std::size_t j = 0; j < free.size(); ++j) {
+      std::vector<double> th = theta;
+      th[free[j]] += 1e-7;
+      const std::optional<Eigen::VectorXd> rh = residuals(th);
+      if (!rh) return;
+      J.col(static_cast<Eigen::Index>(j)) = (*rh - *r) / 1e-7;
+    }
+    const Eigen::VectorXd step = J.colPivHouseholderQr().solve(-*r);
+    bool stepped = false;
+    for (double t = 1.0; t > 1e-3 && !stepped; t *= 0.5) {
+      std::vector<double> th = theta;
+      for (std::size_t j = 0; j < free.size(); ++j) th[free[j]] += t * step[static_cast<Eigen::Index>(j)];
+      const std::optional<Eigen::VectorXd> rt = residuals(th);
+      if (rt && rt->norm() < r->norm()) theta = th, r = rt, stepped = true;
+    }
+    if (!stepped) return;
+  }
+}
+
+}  // namespace
+
+ProfileSpline interpolate_curvature_profiles(std::span<const InterpolationPoint> points) {
+  ProfileSpline out;
+  const std::size_t n = points.size();
+  if (n < 2) {
+    out.reason = "at least two points are needed";
+    return out;
+  }
+  for (std::size_t i = 0; i + 1 < n; ++i)
+    if (distance(points[i].point, points[i + 1].point) == 0.0) {
+      out.reason = "points " + std::to_string(i) + " and " + std::to_string(i + 1) + " coincide";
+      return out;
+    }
+  // Tangents.
+  std::vector<double> theta(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (points[i].tangent_angle) {
+      theta[i] = *points[i].tangent_angle;
+    } else if (n == 2) {
+      theta[i] = angle_of(points[1].point - points[0].point);
+    } else if (i == 0) {
+      theta[i] = circle_tangent_at_start(points[0].point, points[1].point, points[2].point);
+    } else if (i + 1 == n) {
+      // The end of the reversed run, turned round.
+      theta[i] = circle_tangent_at_start(points[n - 1].point, points[n - 2].point, points[n - 3].point) + std::numbers::pi;
+    } else {
+      theta[i] = circle_tangent_at_middle(points[i - 1].point, points[i + 1].point);
+    }
+  }
+  // Each span turns as its chord says: unwrap so θᵢ₊₁ − θᵢ is that turning.
+  for (std::size_t i = 1; i < n; ++i) {
+    const double chord = angle_of(points[i].point - points[i - 1].point);
+    const double leave = std::remainder(theta[i - 1] - chord, 2.0 * std::numbers::pi);
+    const double arrive = std::remainder(theta[i] - chord, 2.0 * std::numbers::pi);
+    theta[i] = theta[i - 1] + (arrive - leave);
+  }
+  settle_tangents(points, theta);
+  // Curvature slopes from the secants over the clothoid lengths.
+  std::vector<double> secant(n - 1);
+  for (std::size_t i = 0; i + 1 < n; ++i) {
+    const ClothoidFit c = fit_clothoid_g1(points[i].point, theta[i], points[i + 1].point, theta[i + 1]);
+    if (!c.ok()) {
+      out.reason = "span " + std::to_string(i) + ": no clothoid joins its tangents (" + c.reason + ")";
+      return out;
+    }
+    secant[i] = (points[i + 1].curvature - points[i].curvature) / c.arc->length;
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    double slope = 0.0;
+    if (points[i].curvature_slope) {
+      slope = *points[i].curvature_slope;
+    } else if (i == 0) {
+      slope = secant.front();
+    } else if (i + 1 == n) {
+      slope = secant.back();
+    } else if (secant[i - 1] * secant[i] > 0.0) {
+      slope = 2.0 * secant[i - 1] * secant[i] / (secant[i - 1] + secant[i]);
+    }
+    out.ends.push_back({points[i].point, theta[i], points[i].curvature, slope});
+  }
+  std::vector<CurvatureProfileSegment> segments;
+  for (std::size_t i = 0; i + 1 < n; ++i) {
+    ProfileFit fit = fit_curvature_profile(out.ends[i], out.ends[i + 1]);
+    if (!fit.ok()) {
+      out.reason = "span " + std::to_string(i) + ": " + fit.reason;
+      return out;
+    }
+    segments.push_back(std::move(*fit.segment));
+  }
+  out.segments = std::move(segments);
+  return out;
+}
+
+}  // namespace gf
