@@ -6,6 +6,7 @@
 #include "aesthetic/curvature_profile_segment.hpp"
 #include "aesthetic/lcg_slope.hpp"
 #include "aesthetic/polynomial_spiral.hpp"
+#include "aesthetic/profile_interpolation.hpp"
 #include "aesthetic/segment_fit.hpp"
 
 namespace gf {
@@ -46,6 +47,16 @@ void polynomial_spiral_fit(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(fit_polynomial_spiral(g3_start, g3_end));
 }
 BENCHMARK(polynomial_spiral_fit);
+
+// Five points of the clothoid κ = 0.2 + 0.5 s with their curvatures only: tangents settled by
+// least squares, κ′ from the secants, four seed-004 segments.
+void profile_interpolation(benchmark::State& state) {
+  const CurvatureProfileSegment c({{0, 0}, 0.3, 0.2, 0.5}, 2.4, 0.8, 0.8, 1.4, 0.5);
+  std::vector<InterpolationPoint> pts;
+  for (int k = 0; k <= 4; ++k) pts.push_back({c.at_parameter(k / 4.0).point, c.at_parameter(k / 4.0).curvature, {}, {}});
+  for (auto _ : state) benchmark::DoNotOptimize(interpolate_curvature_profiles(pts));
+}
+BENCHMARK(profile_interpolation);
 
 void sampling(benchmark::State& state) {
   const LogAestheticSegment s = *fit_three_point({0, 0}, {1, 0}, {2, 0.8}, 1.5).segment;
