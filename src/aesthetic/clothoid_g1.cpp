@@ -33,10 +33,6 @@ FresnelMoments generalised_fresnel(double a, double b, double c) {
 
 namespace {
 
-double wrapped(double angle) {
-  return angle - 2.0 * std::numbers::pi * std::round(angle / (2.0 * std::numbers::pi));
-}
-
 // The initial A of Bertolazzi & Frego's fit (lac-math.md §7.2), good to a few per cent.
 double initial_a(double phi0, double phi1) {
   constexpr double c[] = {2.989696028701907,  0.716228953608281, -0.458969738821509,
@@ -57,7 +53,7 @@ ClothoidFit fit_clothoid_g1(Vec2 p0, double theta0, Vec2 p1, double theta1) {
     return fit;
   }
   const double phi = angle_of(chord);
-  const double phi0 = wrapped(theta0 - phi), phi1 = wrapped(theta1 - phi), delta = phi1 - phi0;
+  const double phi0 = wrapped_angle(theta0 - phi), phi1 = wrapped_angle(theta1 - phi), delta = phi1 - phi0;
   // g(A) = Y₀(2A, δ − A, φ₀) = 0 puts P1 on the chord; g′(A) = X₂ − X₁.
   double a = initial_a(phi0, phi1);
   constexpr double tolerance = 1e-12;

@@ -17,7 +17,7 @@ namespace {
 double circle_tangent_at_middle(Vec2 a, Vec2 c) { return angle_of(c - a); }
 double circle_tangent_at_start(Vec2 a, Vec2 b, Vec2 c) {
   const double to_middle = angle_of(b - a);
-  return to_middle + std::remainder(to_middle - angle_of(c - a), 2.0 * std::numbers::pi);
+  return to_middle + wrapped_angle(to_middle - angle_of(c - a));
 }
 
 // The chosen tangents, moved so that the G1 clothoids of the spans come nearest the given
@@ -96,8 +96,8 @@ ProfileSpline interpolate_curvature_profiles(std::span<const InterpolationPoint>
   // Each span turns as its chord says: unwrap so θᵢ₊₁ − θᵢ is that turning.
   for (std::size_t i = 1; i < n; ++i) {
     const double chord = angle_of(points[i].point - points[i - 1].point);
-    const double leave = std::remainder(theta[i - 1] - chord, 2.0 * std::numbers::pi);
-    const double arrive = std::remainder(theta[i] - chord, 2.0 * std::numbers::pi);
+    const double leave = wrapped_angle(theta[i - 1] - chord);
+    const double arrive = wrapped_angle(theta[i] - chord);
     theta[i] = theta[i - 1] + (arrive - leave);
   }
   settle_tangents(points, theta);

@@ -19,12 +19,6 @@ using cplx = std::complex<double>;
 
 cplx cx(Vec2 v) { return {v.x, v.y}; }
 
-double wrap(double a) {
-  while (a > std::numbers::pi) a -= 2 * std::numbers::pi;
-  while (a <= -std::numbers::pi) a += 2 * std::numbers::pi;
-  return a;
-}
-
 // Λ for end-curvature ratio r = e^x of the forward segment θ ∈ [0, θ_d] (§2.1).
 double lambda_of(double alpha, double theta_d, double x) {
   if (x == 0.0) return 0.0;
@@ -57,7 +51,7 @@ std::optional<Triangle> triangle(Vec2 a, Vec2 b, Vec2 c, std::string& reason) {
     reason = "the end points coincide";
     return std::nullopt;
   }
-  const double turning = wrap(std::arg(t1) - std::arg(t0));
+  const double turning = wrapped_angle(std::arg(t1) - std::arg(t0));
   if (std::abs(turning) < 1e-14) {
     reason = "the control points are collinear: a straight line, not an aesthetic curve";
     return std::nullopt;
@@ -66,8 +60,8 @@ std::optional<Triangle> triangle(Vec2 a, Vec2 b, Vec2 c, std::string& reason) {
     reason = "the tangents turn by π or more";
     return std::nullopt;
   }
-  const double e = std::abs(wrap(std::arg(chord) - std::arg(t0)));
-  const double f = std::abs(wrap(std::arg(t1) - std::arg(chord)));
+  const double e = std::abs(wrapped_angle(std::arg(chord) - std::arg(t0)));
+  const double f = std::abs(wrapped_angle(std::arg(t1) - std::arg(chord)));
   return Triangle{p0, p2, std::abs(turning), e, f, turning < 0};
 }
 

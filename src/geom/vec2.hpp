@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cmath>
+#include <numbers>
 
 namespace gf {
 
@@ -31,6 +32,11 @@ inline double distance(Vec2 a, Vec2 b) { return norm(a - b); }
 inline double angle_of(Vec2 a) { return std::atan2(a.y, a.x); }
 /// The unit vector at `angle` radians: the inverse of angle_of.
 inline Vec2 direction_of(double angle) { return {std::cos(angle), std::sin(angle)}; }
+/// The angle a less whole turns, in (−π, π].
+inline double wrapped_angle(double a) {
+  const double r = std::remainder(a, 2.0 * std::numbers::pi);
+  return r <= -std::numbers::pi ? r + 2.0 * std::numbers::pi : r;
+}
 /// Signed angle in (-pi, pi] that turns direction a into direction b (left positive).
 inline double turning_angle(Vec2 a, Vec2 b) { return std::atan2(cross(a, b), dot(a, b)); }
 
