@@ -4,8 +4,6 @@
 
 #include <boost/math/tools/roots.hpp>
 
-#include "aesthetic/clothoid_g1.hpp"
-
 namespace gf {
 
 namespace {
@@ -86,10 +84,8 @@ ProfileFit fit_curvature_profile(const CurvatureEnd& start, const CurvatureEnd& 
   // Start from the G1 clothoid's length (§7.1: naive guesses fail in 3 of 4 tries), legs S/3;
   // where that converges to a profile that runs backwards, from other legs. Iterates may leave
   // the valid region on the way (§7.1); only S > 0 is kept.
-  const ClothoidFit clothoid = fit_clothoid_g1({0.0, 0.0}, unit.start.tangent_angle, {1.0, 0.0}, unit.end.tangent_angle);
   const double turning = std::abs(unit.end.tangent_angle - unit.start.tangent_angle);
-  const double guess = clothoid.ok() ? clothoid.arc->length
-                                     : (turning > 1e-3 ? 0.5 * turning / std::sin(std::min(0.5 * turning, 1.5)) : 1.0);
+  const double guess = unit.clothoid_length().value_or(turning > 1e-3 ? 0.5 * turning / std::sin(std::min(0.5 * turning, 1.5)) : 1.0);
   constexpr double leg_starts[][2] = {{1.0 / 3, 1.0 / 3}, {0.2, 0.2}, {0.45, 0.45}, {0.2, 0.45}, {0.45, 0.2}};
   for (const auto& legs : leg_starts) {
     const EndMatch m = match_end(residual, Eigen::Vector3d(guess, legs[0] * guess, legs[1] * guess),

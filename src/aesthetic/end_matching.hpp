@@ -1,5 +1,6 @@
 // What the G3 segments share (lac-math.md §7.1): the curve from its tangent angle, the end
-// data scaled to a unit chord, and the 3×3 Newton that makes a segment meet its far end.
+// data scaled to a unit chord with the clothoid length their Newton starts from, and the 3×3
+// Newton that makes a segment meet its far end.
 #pragma once
 
 #include <algorithm>
@@ -11,6 +12,7 @@
 #include <Eigen/Dense>
 #include <boost/math/quadrature/gauss.hpp>
 
+#include "aesthetic/clothoid_g1.hpp"
 #include "geom/polynomial.hpp"
 #include "geom/vec2.hpp"
 
@@ -61,6 +63,12 @@ struct UnitChordProblem {
     start = unit(s, {0.0, 0.0}), end = unit(e, {1.0, 0.0});
   }
   bool degenerate() const { return !(chord > 0.0) || !std::isfinite(chord); }
+  /// The length of the G1 clothoid between the two ends (on the unit problem), where there is
+  /// one: where the G3 fits' Newton starts (§7.1).
+  std::optional<double> clothoid_length() const {
+    const ClothoidFit c = fit_clothoid_g1({0.0, 0.0}, start.tangent_angle, {1.0, 0.0}, end.tangent_angle);
+    return c.ok() ? std::optional<double>(c.arc->length) : std::nullopt;
+  }
   /// F of the Newton below: how far a candidate's far end (its unwrapped tangent angle and its
   /// point, on the unit problem) misses the end's.
   Eigen::Vector3d miss(double angle, Vec2 point) const {

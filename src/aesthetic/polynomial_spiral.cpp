@@ -2,8 +2,6 @@
 
 #include <cmath>
 
-#include "aesthetic/clothoid_g1.hpp"
-
 namespace gf {
 
 PolynomialSpiral::PolynomialSpiral(const CurvatureEnd& start, double length, double end_curvature,
@@ -59,8 +57,7 @@ SpiralFit fit_polynomial_spiral(const CurvatureEnd& start, const CurvatureEnd& e
     const PolynomialSpiral s(unit.start, p[0], unit.end.curvature, unit.end.curvature_slope, p[1], p[2]);
     return unit.miss(s.tangent_angle_at(p[0]), s.end().point);
   };
-  const ClothoidFit clothoid = fit_clothoid_g1({0.0, 0.0}, unit.start.tangent_angle, {1.0, 0.0}, unit.end.tangent_angle);
-  const EndMatch m = match_end(residual, Eigen::Vector3d(clothoid.ok() ? clothoid.arc->length : 1.0, 0.0, 0.0),
+  const EndMatch m = match_end(residual, Eigen::Vector3d(unit.clothoid_length().value_or(1.0), 0.0, 0.0),
                                [](const Eigen::Vector3d& q) { return q[0] > 0.0; });
   fit.iterations = m.iterations, fit.residual = m.residual;
   if (!m.parameters) {
