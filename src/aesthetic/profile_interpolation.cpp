@@ -20,6 +20,17 @@ double circle_tangent_at_start(Vec2 a, Vec2 b, Vec2 c) {
   return to_middle + wrapped_angle(to_middle - angle_of(c - a));
 }
 
+// Each span's G1 clothoid between the tangents θ, in order, up to the first span that has none.
+std::vector<ClothoidArc> span_clothoids(std::span<const InterpolationPoint> points, const std::vector<double>& theta) {
+  std::vector<ClothoidArc> out;
+  for (std::size_t i = 0; i + 1 < points.size(); ++i) {
+    const ClothoidFit c = fit_clothoid_g1(points[i].point, theta[i], points[i + 1].point, theta[i + 1]);
+    if (!c.ok()) break;
+    out.push_back(*c.arc);
+  }
+  return out;
+}
+
 // The chosen tangents, moved so that the G1 clothoids of the spans come nearest the given
 // curvatures at their ends (Gauss–Newton, least squares over κ·chord): a span whose clothoid
 // already bends as asked leaves its profile little to do.
@@ -30,12 +41,12 @@ void settle_tangents(std::span<const InterpolationPoint> points, std::vector<dou
     if (!points[i].tangent_angle) free.push_back(i);
   if (free.empty()) return;
   const auto residuals = [&](const std::vector<double>& th) -> std::optional<Eigen::VectorXd> {
+    const std::vector<ClothoidArc> arcs = span_clothoids(points, th);
+    if (arcs.size() + 1 < n) return std::nullopt;
     Eigen::VectorXd r(static_cast<Eigen::Index>(2 * (n - 1)));
     for (std::size_t i = 0; i + 1 < n; ++i) {
-      const ClothoidFit c = fit_clothoid_g1(points[i].point, th[i], points[i + 1].point, th[i + 1]);
-      if (!c.ok()) return std::nullopt;
       const double chord = distance(points[i].point, points[i + 1].point);
-      const ClothoidArc& a = *c.arc;
+      const ClothoidArc& a = arcs[i];
       r[static_cast<Eigen::Index>(2 * i)] = (a.curvature - points[i].curvature) * chord;
       r[static_cast<Eigen::Index>(2 * i + 1)] = (a.curvature + a.curvature_slope * a.length - points[i + 1].curvature) * chord;
     }
@@ -102,15 +113,13 @@ ProfileSpline interpolate_curvature_profiles(std::span<const InterpolationPoint>
   }
   settle_tangents(points, theta);
   // Curvature slopes from the secants over the clothoid lengths.
-  std::vector<double> secant(n - 1);
-  for (std::size_t i = 0; i + 1 < n; ++i) {
-    const ClothoidFit c = fit_clothoid_g1(points[i].point, theta[i], points[i + 1].point, theta[i + 1]);
-    if (!c.ok()) {
-      out.reason = "span " + std::to_string(i) + ": no clothoid joins its tangents (" + c.reason + ")";
-      return out;
-    }
-    secant[i] = (points[i + 1].curvature - points[i].curvature) / c.arc->length;
+  const std::vector<ClothoidArc> arcs = span_clothoids(points, theta);
+  if (arcs.size() + 1 < n) {
+    out.reason = "span " + std::to_string(arcs.size()) + ": no G1 clothoid joins its tangents";
+    return out;
   }
+  std::vector<double> secant(n - 1);
+  for (std::size_t i = 0; i + 1 < n; ++i) secant[i] = (points[i + 1].curvature - points[i].curvature) / arcs[i].length;
   for (std::size_t i = 0; i < n; ++i) {
     double slope = 0.0;
     if (points[i].curvature_slope) {
