@@ -74,6 +74,7 @@ class FairCommand : public Subcommand {
   std::optional<double> corner_angle_;
   bool no_round_ = false;
   std::string proof_;
+  std::string segments_;
   int jobs_ = 0;
 };
 

@@ -1,4 +1,4 @@
-// glyphfair fair SRC [selection] -o OUT.ufo|.svg|.json [--continuity g1|g2] [--tolerance UNITS]
+// glyphfair fair SRC [selection] -o OUT.ufo|.svg|.json [--continuity g1|g2|g3] [--tolerance UNITS]
 //                [--profile text|handwriting] [--corner-angle DEG] [--no-round] [--proof FILE.pdf]
 //                [--jobs N]
 #include <algorithm>
@@ -15,6 +15,7 @@
 #include "io/file_extension.hpp"
 #include "io/input_error.hpp"
 #include "io/ufo_writer.hpp"
+#include "faired_segments_output.hpp"
 #include "outline_output.hpp"
 #include "render/proof_document.hpp"
 
@@ -34,8 +35,9 @@ void FairCommand::add_to(CLI::App& app) {
                     "OUT.ufo, OUT.svg or OUT.json");
   c.add_option("--profile", profile_, "text (professional fonts: tight) or handwriting (smooths scan noise)")
       ->check(CLI::IsMember({"text", "handwriting"}));
-  c.add_option("--continuity", continuity_, "g2 (curvature matched at every smooth join) or g1")
-      ->check(CLI::IsMember({"g1", "g2"}));
+  c.add_option("--continuity", continuity_,
+               "g2 (curvature matched at every smooth join), g3 (its rate of change too) or g1")
+      ->check(CLI::IsMember({"g1", "g2", "g3"}));
   c.add_option("--tolerance", tolerance_,
                "Largest distance from the source, font units (default 0.1 % of the em for text, 1 % for handwriting)")
       ->check(CLI::PositiveNumber);
@@ -44,15 +46,19 @@ void FairCommand::add_to(CLI::App& app) {
       ->check(CLI::Range(0.0, 180.0));
   c.add_flag("--no-round", no_round_, "Keep fractional coordinates instead of rounding to the integer grid");
   c.add_option("--proof", proof_, "Also draw a before/after proof of every faired glyph (PDF)");
+  c.add_option("--segments", segments_,
+               "Also write the faired curve before the cubic writeback: every piece with its end κ and κ′ (JSON)");
   c.add_option("--jobs", jobs_, "Glyphs faired in parallel (default: every core)")->check(CLI::PositiveNumber);
 }
 
 int FairCommand::run() const {
   const OutlineFormat format = outline_format_for(output_);
   if (!proof_.empty() && lower_extension(proof_) != ".pdf") throw InputError(proof_ + ": the proof must be a .pdf");
+  if (!segments_.empty() && lower_extension(segments_) != ".json")
+    throw InputError(segments_ + ": the segments must go to a .json file");
   FairOptions options;
   options.profile = *parse_fair_profile(profile_);
-  options.continuity = continuity_ == "g1" ? Continuity::g1 : Continuity::g2;
+  options.continuity = *parse_continuity(continuity_);
   options.tolerance_units = tolerance_;
   options.corner_angle_deg = corner_angle_;
   options.round_to_integers = !no_round_;
@@ -70,7 +76,10 @@ int FairCommand::run() const {
   const Progress progress(isatty(STDERR_FILENO));
   const std::string name = fs::path(source_).filename().string();
 
-  std::size_t glyphs_faired = 0, contours_kept = 0, g1_nodes = 0, guide_stretches = 0;
+  std::optional<FairedSegmentsOutput> segments;
+  if (!segments_.empty()) segments.emplace(name, settings, font.units_per_em);
+  std::size_t glyphs_faired = 0, contours_kept = 0, g1_nodes = 0, guide_stretches = 0, g3_runs = 0, g2_runs = 0,
+              g2_line_joins = 0;
   double deviation = 0.0, mismatch = 0.0;
   stream_glyphs<GlyphFairing>(
       source, chunk_size, progress, name, [&](const Glyph& g) { return fair_glyph(g, settings); },
@@ -79,6 +88,14 @@ int FairCommand::run() const {
           progress.clear();
           std::cerr << "glyphfair: warning: " << name << ": glyph '" << r.glyph.name << "': " << why << " (kept unfaired)\n";
         }
+        for (const std::string& why : r.g3_shortfalls) {
+          progress.clear();
+          std::cerr << "glyphfair: note: " << name << ": glyph '" << r.glyph.name << "': " << why << " (kept G2)\n";
+        }
+        g3_runs += static_cast<std::size_t>(r.g3_runs);
+        g2_line_joins += static_cast<std::size_t>(r.g2_line_joins);
+        g2_runs += r.g3_shortfalls.size();
+        if (segments) segments->add(r);
         contours_kept += r.kept.size();
         g1_nodes += static_cast<std::size_t>(r.g1_nodes);
         guide_stretches += static_cast<std::size_t>(r.guide_stretches);
@@ -91,6 +108,7 @@ int FairCommand::run() const {
       });
   if (ufo) ufo->commit();
   else write_outlines(whole, output_, format, inputs);
+  if (segments) segments->write(segments_, inputs);
   if (!proof_.empty()) {
     ProofOptions proof;
     proof.title = name + " faired (" + to_string(options.profile) + ", tolerance " + std::to_string(settings.tolerance_units) + " units)";
@@ -103,7 +121,11 @@ int FairCommand::run() const {
             << " contours kept as they were; largest distance from the source " << deviation << " units (tolerance "
             << settings.tolerance_units << "); largest relative curvature mismatch left by a chain solve " << mismatch
             << "; " << g1_nodes << " smooth nodes G1 only; " << guide_stretches
-            << " spans written from the smoothing guide (no G2 log-aesthetic chain within the budget)\n";
+            << " spans written from the smoothing guide (no G2 log-aesthetic chain within the budget)";
+  if (settings.continuity == Continuity::g3)
+    std::cerr << "; G3 on " << g3_runs << " of " << g3_runs + g2_runs << " smooth runs (" << g2_line_joins
+              << " of their line joins G2 only: too little line to slide along)";
+  std::cerr << "\n";
   return exit_code::ok;
 }
 

@@ -6,7 +6,11 @@ namespace gf {
 
 PolynomialSpiral::PolynomialSpiral(const CurvatureEnd& start, double length, double end_curvature,
                                    double end_curvature_slope, double symmetric_bump, double odd_bump)
-    : origin_(start.point), length_(length), c1_(symmetric_bump), c2_(odd_bump) {
+    : origin_(start.point),
+      length_(length),
+      c1_(symmetric_bump),
+      c2_(odd_bump),
+      ends_{{start.curvature, start.curvature_slope}, {end_curvature, end_curvature_slope}} {
   const double k0 = start.curvature, d0 = length * start.curvature_slope;
   const double k1 = end_curvature, d1 = length * end_curvature_slope;
   // Hermite basis H₀₀ = 1 − 3u² + 2u³, H₁₀ = u − 2u² + u³, H₀₁ = 3u² − 2u³, H₁₁ = u³ − u²;
@@ -24,6 +28,10 @@ PolynomialSpiral::PolynomialSpiral(const CurvatureEnd& start, double length, dou
 }
 
 LacPoint PolynomialSpiral::state(double u, Vec2 point) const {
+  if (u == 0.0 || u == 1.0) {
+    const double* end = ends_[u == 0.0 ? 0 : 1];
+    return {point, direction_of(theta_(u)), end[0], end[1]};
+  }
   return {point, direction_of(theta_(u)), kappa_(u), kappa_.derivative()(u) / length_};
 }
 
@@ -44,7 +52,18 @@ std::vector<LacPoint> PolynomialSpiral::sample(int n) const {
   return out;
 }
 
-bool PolynomialSpiral::curvature_monotone() const { return never_turns_back(kappa_); }
+// Monotone when κ's total variation over (0, 1) is |κ(1) − κ(0)|: a turn of κ′ that moves κ by
+// less than 1e-9 of its size is rounding (a κ′ = 0 end comes out as ±1e-21).
+bool PolynomialSpiral::curvature_monotone() const {
+  const Polynomial slope = kappa_.derivative();
+  double variation = 0.0, last = kappa_(0.0);
+  for (const SignChange& turn : sign_changes_in_unit_interval(slope, 1e-12 * slope.magnitude())) {
+    variation += std::abs(kappa_(turn.t) - last);
+    last = kappa_(turn.t);
+  }
+  variation += std::abs(kappa_(1.0) - last);
+  return variation - std::abs(kappa_(1.0) - kappa_(0.0)) <= 1e-9 * kappa_.magnitude();
+}
 
 SpiralFit fit_polynomial_spiral(const CurvatureEnd& start, const CurvatureEnd& end) {
   SpiralFit fit;

@@ -33,7 +33,8 @@ class PolynomialSpiral {
   double odd_bump() const { return c2_; }
   LacPoint start() const { return at(0.0); }
   LacPoint end() const { return at(length_); }
-  /// At arc length σ ∈ [0, length()].
+  /// At arc length σ ∈ [0, length()]. At the ends, κ and κ′ are the given ones exactly, so two
+  /// spirals sharing an end's data join G3 to the last bit.
   LacPoint at(double sigma) const;
   /// Θ(σ), unwrapped: Θ(S) − Θ(0) is the turning.
   double tangent_angle_at(double sigma) const { return theta_(sigma / length_); }
@@ -47,6 +48,7 @@ class PolynomialSpiral {
 
   Vec2 origin_;
   double length_, c1_, c2_;
+  double ends_[2][2];  ///< {κ, κ′} at u = 0 and u = 1, as given: the polynomial gives them only to rounding
   Polynomial kappa_, theta_, speed_;  ///< κ(u), Θ(u) and ds/du = S
 };
 

@@ -80,39 +80,91 @@ struct Attempt {
   double mismatch = 0.0;
   int g1_nodes = 0;
   int guide_stretches = 0;
+  int g3_runs = 0, g2_line_joins = 0;
+  std::vector<std::string> g3_shortfalls;
+  FairedPieces pieces;
 };
+
+LacPoint line_frame(Vec2 at, Vec2 direction) { return {at, direction / norm(direction), 0.0, 0.0}; }
+
+// The chain's pieces for export, the first one's join as `smooth_start` says.
+void record_chain(const FairedChain& chain, bool smooth_start, FairedPieces& out) {
+  const std::size_t first = out.size();
+  for (const LogAestheticSegment& s : chain.segments)
+    out.push_back({FairedPieceKind::log_aesthetic, s.length(), s.start(), s.end(), s.alpha(), true});
+  for (const PolynomialSpiral& s : chain.spirals)
+    out.push_back({FairedPieceKind::polynomial_spiral, s.length(), s.start(), s.end(), std::nullopt, true});
+  if (chain.guide) {
+    const GuideStretch& g = *chain.guide;
+    const RunReference& ref = *g.guide;
+    const auto frame = [&](double s) { return LacPoint{ref.point_at(s), ref.tangent_at(s), ref.curvature_at(s), std::nullopt}; };
+    LacPoint a = chain.closed ? frame(g.s0) : g.start, b = chain.closed ? frame(g.s1) : g.end;
+    a.curvature_derivative = b.curvature_derivative = std::nullopt;
+    out.push_back({FairedPieceKind::guide, g.s1 - g.s0, a, b, std::nullopt, true});
+  }
+  if (out.size() > first) out[first].smooth_start = smooth_start;
+}
+
+// Where a piece starts and ends once faired: a G3 run may have slid its ends along the lines
+// it meets (fair/g3_run.hpp), and the lines follow.
+Vec2 faired_start(const FairedRun& run) {
+  const FairedChain& c = run.chains.front();
+  return c.spirals.empty() ? c.segments.front().start().point : c.spirals.front().start().point;
+}
+Vec2 faired_end(const FairedRun& run) {
+  const FairedChain& c = run.chains.back();
+  return c.spirals.empty() ? c.segments.back().end().point : c.spirals.back().end().point;
+}
 
 Attempt fair_with_budgets(const ContourPlan& plan, const FairSettings& settings, Budgets budgets) {
   Attempt a;
+  const std::size_t count = plan.pieces.size();
+  std::vector<std::optional<FairedRun>> runs(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const SmoothRun* run = std::get_if<SmoothRun>(&plan.pieces[i]);
+    if (!run) continue;
+    runs[i] = fair_run(*run, settings, budgets.chain);
+    if (!runs[i]->ok) {
+      a.failure = runs[i]->reason;
+      return a;
+    }
+  }
+  const auto g3_run_at = [&](std::size_t i) { return runs[i] && runs[i]->g3 ? &*runs[i] : nullptr; };
   NodeAssembler assembler;
   bool previous_ends_smooth = false;  // how the last piece ended: the join to the next piece
-  for (const auto& piece : plan.pieces) {
-    if (const Line* line = std::get_if<Line>(&piece)) {
+  for (std::size_t i = 0; i < count; ++i) {
+    if (const Line* line = std::get_if<Line>(&plan.pieces[i])) {
       OutlineNode start, end;
       start.point = line->start(), end.point = line->end();
+      const bool wraps = plan.closed && count > 1;
+      if (i > 0 || wraps)
+        if (const FairedRun* before = g3_run_at((i + count - 1) % count)) start.point = faired_end(*before);
+      if (i + 1 < count || wraps)
+        if (const FairedRun* after = g3_run_at((i + 1) % count)) end.point = faired_start(*after);
       start.smooth = previous_ends_smooth;
+      a.pieces.push_back({FairedPieceKind::line, distance(start.point, end.point), line_frame(start.point, end.point - start.point),
+                          line_frame(end.point, end.point - start.point), std::nullopt, previous_ends_smooth});
       assembler.append({start, end}, previous_ends_smooth);
       previous_ends_smooth = false;
       continue;
     }
-    const SmoothRun& run = std::get<SmoothRun>(piece);
-    const FairedRun faired = fair_run(run, settings, budgets.chain);
-    if (!faired.ok) {
-      a.failure = faired.reason;
-      return a;
-    }
+    const SmoothRun& run = std::get<SmoothRun>(plan.pieces[i]);
+    const FairedRun& faired = *runs[i];
     a.guide_stretches += faired.guide_stretches;
+    if (faired.g3) ++a.g3_runs, a.g2_line_joins += faired.g2_line_joins;
+    else if (!faired.g3_shortfall.empty()) a.g3_shortfalls.push_back(faired.g3_shortfall);
     const bool start_smooth = !run.closed && run.start.kind == RunEndKind::line;
     for (std::size_t k = 0; k < faired.chains.size(); ++k) {
       const FairedChain& chain = faired.chains[k];
       a.mismatch = std::max(a.mismatch, chain.max_mismatch_relative);
       ChainCubics cubics = write_chain_as_cubics(chain, budgets.cubic, settings.flat_curvature);
       a.g1_nodes += cubics.g1_fallbacks;
+      const bool join_smooth = k > 0 || start_smooth || previous_ends_smooth;
+      record_chain(chain, chain.closed || join_smooth, a.pieces);
       if (chain.closed) {
         a.nodes = std::move(cubics.nodes);
         return a;
       }
-      const bool join_smooth = k > 0 || start_smooth || previous_ends_smooth;
       assembler.append(std::move(cubics.nodes), join_smooth);
     }
     previous_ends_smooth = !run.closed && run.end.kind == RunEndKind::line;
@@ -124,6 +176,7 @@ Attempt fair_with_budgets(const ContourPlan& plan, const FairSettings& settings,
     if (const SmoothRun* first = std::get_if<SmoothRun>(&plan.pieces.front()))
       smooth = first->start.kind == RunEndKind::line;
     assembler.close(smooth);
+    if (!a.pieces.empty()) a.pieces.front().smooth_start = smooth;
   }
   a.nodes = std::move(assembler.nodes());
   return a;
@@ -186,6 +239,11 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& settings)
                                      [](const auto& p) { return std::holds_alternative<SmoothRun>(p); });
   if (!has_curve) {
     out.faired = true;  // lines only: already as fair as it gets
+    for (const auto& piece : plan.pieces) {
+      const Line& l = std::get<Line>(piece);
+      const Vec2 d = l.end() - l.start();
+      out.pieces.push_back({FairedPieceKind::line, norm(d), line_frame(l.start(), d), line_frame(l.end(), d), std::nullopt, false});
+    }
     return out;
   }
   const SampledContour sampled_source(source);
@@ -219,6 +277,10 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& settings)
       out.max_curvature_mismatch = a.mismatch;
       out.g1_nodes = a.g1_nodes;
       out.guide_stretches = a.guide_stretches;
+      out.g3_runs = a.g3_runs;
+      out.g2_line_joins = a.g2_line_joins;
+      out.g3_shortfalls = std::move(a.g3_shortfalls);
+      out.pieces = std::move(a.pieces);
       return out;
     }
     out.reason = "the faired contour came out " + std::to_string(d) + " units from the source";

@@ -66,6 +66,11 @@ ContourPlan plan_contour(const Contour& source, double corner_angle_deg) {
     return std::nullopt;
   };
 
+  // The share of a line a run meeting it may take, by the kind of the line's far join.
+  const auto line_share = [](const Piece& line, const std::optional<RunEndKind>& far_join) {
+    const double length = distance(start_point(line.segment), end_point(line.segment));
+    return far_join == RunEndKind::line ? 0.5 * length : length;
+  };
   std::vector<std::optional<RunEndKind>> breaks(n);
   for (std::size_t i = 0; i < n; ++i) breaks[i] = break_before(i);
   const std::size_t first = static_cast<std::size_t>(
@@ -95,6 +100,7 @@ ContourPlan plan_contour(const Contour& source, double corner_angle_deg) {
       run.start.tangent = *before == RunEndKind::line && prev.straight && (contour.closed || i > 0)
                               ? *end_tangent(prev.segment, SegmentEnd::end)
                               : *end_tangent(p.segment, SegmentEnd::start);
+      if (*before == RunEndKind::line && prev.straight) run.start.line_share = line_share(prev, breaks[(i + n - 1) % n]);
       plan.pieces.emplace_back(std::move(run));
     }
     SmoothRun& run = std::get<SmoothRun>(plan.pieces.back());
@@ -106,6 +112,7 @@ ContourPlan plan_contour(const Contour& source, double corner_angle_deg) {
       run.end.kind = kind;
       run.end.tangent = kind == RunEndKind::line && pieces[next].straight ? *end_tangent(pieces[next].segment, SegmentEnd::start)
                                                                        : *end_tangent(p.segment, SegmentEnd::end);
+      if (kind == RunEndKind::line && pieces[next].straight) run.end.line_share = line_share(pieces[next], breaks[(next + 1) % n]);
     }
   }
   return plan;

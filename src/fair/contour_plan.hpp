@@ -17,6 +17,10 @@ enum class RunEndKind { corner, line };
 struct RunEnd {
   RunEndKind kind = RunEndKind::corner;
   Vec2 tangent;  ///< unit, along the run's direction
+  /// Kind line: how much of the line met there is this run's to take (a G3 run slides its end
+  /// along the line): all of it when the line's other end is a corner, half when another run
+  /// meets the line there too.
+  double line_share = 0.0;
 };
 
 struct SmoothRun {

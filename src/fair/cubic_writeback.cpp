@@ -37,18 +37,19 @@ std::vector<Vec2> grid_directions(int longest) {
   return out;
 }
 
-// A stretch of the path that turns one way by less than a half turn: a log-aesthetic segment,
-// or a piece of a guide cut where its curvature changes sign and every quarter turn.
+// A stretch of the path that turns one way by less than a half turn: a log-aesthetic segment, a
+// G3 spiral, or a piece of a guide cut where its curvature changes sign and every quarter turn.
 struct PathPiece {
   double length;
   std::function<LacPoint(double)> at;           ///< by arc length from the piece's start
   std::function<std::vector<LacPoint>(int)> sample;  ///< n + 1 points uniform in arc length
 };
 
-std::vector<PathPiece> lac_pieces(const std::vector<LogAestheticSegment>& segments) {
+template <class Curve>
+std::vector<PathPiece> curve_pieces(const std::vector<Curve>& curves) {
   std::vector<PathPiece> out;
-  for (const LogAestheticSegment& seg : segments)
-    out.push_back({seg.length(), [&seg](double s) { return seg.at(s); }, [&seg](int n) { return seg.sample(n); }});
+  for (const Curve& c : curves)
+    out.push_back({c.length(), [&c](double s) { return c.at(s); }, [&c](int n) { return c.sample(n); }});
   return out;
 }
 
@@ -93,7 +94,7 @@ class ChainPath {
     if (chain.guide) {
       pieces_ = guide_pieces(*chain.guide, chain.closed);
     } else {
-      pieces_ = lac_pieces(chain.segments);
+      pieces_ = chain.spirals.empty() ? curve_pieces(chain.segments) : curve_pieces(chain.spirals);
     }
     n_ = pieces_.size();
     double start = 0.0;

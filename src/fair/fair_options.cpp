@@ -22,6 +22,13 @@ std::optional<FairProfile> parse_fair_profile(const std::string& name) {
   return std::nullopt;
 }
 
+std::optional<Continuity> parse_continuity(const std::string& name) {
+  if (name == "g1") return Continuity::g1;
+  if (name == "g2") return Continuity::g2;
+  if (name == "g3") return Continuity::g3;
+  return std::nullopt;
+}
+
 const char* to_string(FairProfile profile) { return profile == FairProfile::text ? "text" : "handwriting"; }
 
 }  // namespace gf

@@ -7,7 +7,8 @@
 namespace gf {
 
 enum class FairProfile { text, handwriting };
-enum class Continuity { g1, g2 };
+/// g3: after the G2 solve, dκ/ds continuous too (fair/g3_run.hpp).
+enum class Continuity { g1, g2, g3 };
 
 struct FairOptions {
   FairProfile profile = FairProfile::text;
@@ -50,6 +51,7 @@ struct FairSettings {
 FairSettings resolve_settings(const FairOptions& options, double units_per_em);
 
 std::optional<FairProfile> parse_fair_profile(const std::string& name);
+std::optional<Continuity> parse_continuity(const std::string& name);
 const char* to_string(FairProfile profile);
 
 }  // namespace gf

@@ -16,10 +16,14 @@ GlyphFairing fair_glyph(const Glyph& source, const FairSettings& settings) {
       out.max_curvature_mismatch = std::max(out.max_curvature_mismatch, c.max_curvature_mismatch);
       out.g1_nodes += c.g1_nodes;
       out.guide_stretches += c.guide_stretches;
+      out.g3_runs += c.g3_runs;
+      out.g2_line_joins += c.g2_line_joins;
+      for (const std::string& why : c.g3_shortfalls) out.g3_shortfalls.push_back("contour " + std::to_string(i) + ": " + why);
     } else {
       out.kept.push_back("contour " + std::to_string(i) + ": " + c.reason);
     }
     out.glyph.outline.contours.push_back(std::move(c.contour));
+    out.pieces.push_back(std::move(c.pieces));
   }
   return out;
 }

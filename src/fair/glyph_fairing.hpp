@@ -18,6 +18,10 @@ struct GlyphFairing {
   double max_curvature_mismatch = 0.0;
   int g1_nodes = 0;  ///< smooth nodes with G1 only
   int guide_stretches = 0;  ///< spans written from the smoothing guide
+  int g3_runs = 0;          ///< --continuity g3: smooth runs that came out G3
+  int g2_line_joins = 0;    ///< and their line joins held to G2
+  std::vector<std::string> g3_shortfalls;  ///< "contour i: why", for each run that stayed G2
+  std::vector<FairedPieces> pieces;        ///< per contour, the faired curve before the writeback
 };
 
 GlyphFairing fair_glyph(const Glyph& source, const FairSettings& settings);

@@ -4,9 +4,11 @@
 #include <cmath>
 #include <memory>
 #include <numbers>
+#include <span>
 
 #include "aesthetic/lcg_slope.hpp"
 #include "fair/g2_chain.hpp"
+#include "fair/g3_run.hpp"
 #include "fair/initial_tangents.hpp"
 #include "fair/junctions.hpp"
 #include "fair/run_reference.hpp"
@@ -22,6 +24,7 @@ constexpr double default_alpha = 1.0;  // for arcs (every α fits) and pieces wi
 constexpr double alpha_candidates[] = {-2.0, -1.5, -1.0, -0.5, 0.0, 0.5, 1.0, 1.5, 2.0, 3.0, 4.0};
 constexpr int max_rounds = 10;
 constexpr double max_relative_mismatch = 1e-9;  // |Δκ| / max|κ| the G2 solve must reach
+constexpr int max_g3_rounds = 4;  // of cutting the segments whose G3 spirals stray
 
 double lcg_alpha(const RunReference& ref, double s0, double s1) {
   const std::vector<Cubic> cubics = ref.cubics_between(s0, s1);
@@ -95,11 +98,19 @@ struct ChainOutcome {
   bool adjusts() const { return !cuts.empty() || !drops.empty(); }
 };
 
-// Samples per segment so that the chords stay within 2 % of the tolerance of the curve.
-int samples_for(const LogAestheticSegment& seg, double tolerance) {
-  const double k = std::max({std::abs(seg.start().curvature), std::abs(seg.end().curvature), 1e-9});
-  const double h = std::sqrt(8.0 * 0.02 * tolerance / k);
-  return std::clamp(static_cast<int>(std::ceil(seg.length() / h)), 8, 400);
+// Each segment's points, so many that the chords stay within 2 % of the tolerance of the curve
+// (log-aesthetic segments and spirals have monotone curvature: the larger end's bounds it).
+template <class Curve>
+std::vector<std::vector<Vec2>> sampled(std::span<const Curve> curves, double tolerance) {
+  std::vector<std::vector<Vec2>> out;
+  for (const Curve& c : curves) {
+    const double k = std::max({std::abs(c.start().curvature), std::abs(c.end().curvature), 1e-9});
+    const double h = std::sqrt(8.0 * 0.02 * tolerance / k);
+    out.emplace_back();
+    for (const LacPoint& p : c.sample(std::clamp(static_cast<int>(std::ceil(c.length() / h)), 8, 400)))
+      out.back().push_back(p.point);
+  }
+  return out;
 }
 
 // Segment i's chord direction and its end tangents' angles from it, in (−π, π].
@@ -263,13 +274,10 @@ void make_drawable(LacChain& chain, const ChainSpan& span, const RunReference& r
 // length mapped onto the source's in proportion; with a guide (`guided`: ref is the guide,
 // not the source), the source side gets a margin for the difference and the source is
 // compared with the piece and its neighbours). Pieces over the budget are cut in the middle.
-void check_fidelity(const std::vector<LogAestheticSegment>& built, const ChainSpan& span, const RunReference& ref,
+void check_fidelity(const std::vector<std::vector<Vec2>>& lac, const ChainSpan& span, const RunReference& ref,
                     const RunReference& source, bool guided, double budget, ChainOutcome& out) {
-  const std::size_t segments = built.size();
+  const std::size_t segments = lac.size();
   const double L = ref.length();
-  std::vector<std::vector<Vec2>> lac(segments);
-  for (std::size_t i = 0; i < segments; ++i)
-    for (const LacPoint& p : built[i].sample(samples_for(built[i], budget))) lac[i].push_back(p.point);
   const double scale = source.length() / L, margin = guided ? 0.02 * source.length() : 0.0;
   for (std::size_t i = 0; i < segments; ++i) {
     const double s0 = span.s[i], s1 = segment_end_s(span, i, L);
@@ -300,7 +308,7 @@ ChainOutcome fair_chain(const ChainSpan& span, const RunReference& ref, const Ru
 
   std::vector<LogAestheticSegment> built;
   double mismatch = 0.0;
-  if (settings.continuity == Continuity::g2 && chain.free_junction_count() > 0) {
+  if (settings.continuity != Continuity::g1 && chain.free_junction_count() > 0) {
     G2Result g2 = make_g2(chain, G2Tolerance{0.0, 0.1 * max_relative_mismatch});
     if (g2.segments.empty()) return out;
     mismatch = g2.curvature_scale > 0.0 ? g2.max_mismatch / g2.curvature_scale : 0.0;
@@ -324,7 +332,7 @@ ChainOutcome fair_chain(const ChainSpan& span, const RunReference& ref, const Ru
   } else {
     built = build_chain(chain).segments;
   }
-  check_fidelity(built, span, ref, source, guided, budget, out);
+  check_fidelity(sampled<LogAestheticSegment>(built, budget), span, ref, source, guided, budget, out);
   if (out.adjusts()) return out;
   FairedChain faired;
   faired.segments = std::move(built);
@@ -389,6 +397,83 @@ FairedChain guide_stretch(const ChainSpan& span, const std::shared_ptr<const Run
   return chain;
 }
 
+// How far each G3 spiral is from the source run: its own points from the source, and the source's
+// points whose nearest faired point lies on it. Each side is carried along a line the run meets
+// as far as the other side reaches there (a line end slides along its line, and the line with it).
+std::vector<double> distance_by_spiral(const G3Result& g3, const G3Problem& problem, const RunReference& source,
+                                       double budget) {
+  std::vector<Vec2> faired;
+  std::vector<std::size_t> spiral_of;
+  const std::vector<std::vector<Vec2>> pieces = sampled<PolynomialSpiral>(g3.spirals, budget);
+  for (std::size_t i = 0; i < pieces.size(); ++i)
+    for (std::size_t k = faired.empty() ? 0 : 1; k < pieces[i].size(); ++k) faired.push_back(pieces[i][k]), spiral_of.push_back(i);
+  std::vector<Vec2> original = source.polyline(0.0, source.length());
+  if (!problem.closed)
+    for (const bool at_start : {true, false}) {
+      const std::size_t j = at_start ? 0 : problem.nodes.size() - 1;
+      const G3Node& held = problem.nodes[j];
+      if (held.kind != G3NodeKind::line && held.kind != G3NodeKind::line_g2) continue;
+      const Vec2 slid = g3.ends[j].point;
+      const Vec2 outwards = direction_of(held.tangent_angle) * (at_start ? -1.0 : 1.0);
+      if (dot(slid - held.point, outwards) > 0.0) {
+        original.insert(at_start ? original.begin() : original.end(), slid);
+      } else {
+        faired.insert(at_start ? faired.begin() : faired.end(), held.point);
+        spiral_of.insert(at_start ? spiral_of.begin() : spiral_of.end(), at_start ? 0 : pieces.size() - 1);
+      }
+    }
+  std::vector<double> d(pieces.size(), 0.0);
+  const PolylineGrid to_original(original, 8.0), to_faired(faired, 8.0);
+  for (std::size_t k = 0; k < faired.size(); ++k) d[spiral_of[k]] = std::max(d[spiral_of[k]], to_original.distance_to(faired[k]));
+  for (const Vec2 p : original) {
+    const PolylineGrid::Nearest n = to_faired.nearest(p);
+    d[spiral_of[n.segment]] = std::max(d[spiral_of[n.segment]], n.distance);
+  }
+  return d;
+}
+
+// G3 over the whole run (fair/g3_run.hpp), kept only when it stays within the budget of the
+// source; a log-aesthetic segment whose spirals stray is cut in two, up to `max_g3_rounds`
+// times. Else the run stays G2 and says why.
+void reexpress_as_g3(FairedRun& result, const RunReference& source, const SmoothRun& run, double budget) {
+  std::vector<int> pieces;
+  std::string why;
+  for (int round = 0; round < max_g3_rounds; ++round) {
+    std::optional<G3Problem> problem = g3_problem(result.chains, run, pieces);
+    if (!problem) {
+      result.g3_shortfall = "part of it follows the smoothing guide";
+      return;
+    }
+    pieces.resize(problem->log_aesthetic_segment.back() + 1, 1);
+    G3Result g3 = make_g3(problem->nodes, problem->lengths, problem->closed);
+    int g2_line_joins = 0;
+    if (!g3.ok())  // no room on a line for G3 there, perhaps: G2 at the line joins, G3 elsewhere
+      for (G3Node& n : problem->nodes)
+        if (n.kind == G3NodeKind::line) n.kind = G3NodeKind::line_g2, ++g2_line_joins;
+    if (!g3.ok() && g2_line_joins > 0) g3 = make_g3(problem->nodes, problem->lengths, problem->closed);
+    if (!g3.ok()) {
+      result.g3_shortfall = g3.reason;
+      return;
+    }
+    const std::vector<double> d = distance_by_spiral(g3, *problem, source, budget);
+    const double worst = *std::max_element(d.begin(), d.end());
+    if (worst <= budget) {
+      adopt_spirals(result.chains, *problem, std::move(g3.spirals));
+      result.deviation = worst;
+      result.g3 = true;
+      result.g2_line_joins = g2_line_joins;
+      return;
+    }
+    why = "the G3 curve strays " + std::to_string(worst) + " units from the source (budget " + std::to_string(budget) + ")";
+    std::vector<bool> split(pieces.size(), false);
+    for (std::size_t i = 0; i < d.size(); ++i)
+      if (d[i] > budget) split[problem->log_aesthetic_segment[i]] = true;
+    for (std::size_t i = 0; i < pieces.size(); ++i)
+      if (split[i]) pieces[i] *= 2;
+  }
+  result.g3_shortfall = why;
+}
+
 }  // namespace
 
 FairedRun fair_run(const SmoothRun& run, const FairSettings& settings, double budget) {
@@ -446,6 +531,8 @@ FairedRun fair_run(const SmoothRun& run, const FairSettings& settings, double bu
       std::erase_if(junctions, [&](const Junction& j) { return std::abs(j.s - d) < 1e-9; });
     if (cuts.empty() && drops.empty()) {
       result.ok = true;
+      if (settings.continuity == Continuity::g3)
+        reexpress_as_g3(result, source, run, budget);
       return result;
     }
     for (const double c : cuts) junctions.push_back({c, JunctionKind::split});

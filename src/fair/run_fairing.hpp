@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "aesthetic/log_aesthetic_segment.hpp"
+#include "aesthetic/polynomial_spiral.hpp"
 #include "fair/contour_plan.hpp"
 #include "fair/fair_options.hpp"
 #include "fair/run_reference.hpp"
@@ -30,6 +31,7 @@ struct GuideStretch {
 /// at inflections; a closed chain is the whole closed run.
 struct FairedChain {
   std::vector<LogAestheticSegment> segments;
+  std::vector<PolynomialSpiral> spirals;  ///< G3 (fair/g3_run.hpp): instead of segments, with the same ends
   std::optional<GuideStretch> guide;  ///< instead of segments, where no chain was found
   bool closed = false;
   bool zero_curvature_start = false, zero_curvature_end = false;
@@ -40,6 +42,9 @@ struct FairedRun {
   std::vector<FairedChain> chains;  ///< in order along the run
   double deviation = 0.0;           ///< two-sided Hausdorff bound against the source run, font units
   int guide_stretches = 0;           ///< spans written from the guide (no chain within the budget)
+  bool g3 = false;  ///< its chains are G3 spirals (--continuity g3)
+  int g2_line_joins = 0;  ///< of a G3 run, line joins held to G2 (no room on the line for G3)
+  std::string g3_shortfall;  ///< --continuity g3: why the run stayed G2
   bool ok = false;
   std::string reason;  ///< why not, when not
 };

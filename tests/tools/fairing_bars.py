@@ -19,10 +19,14 @@ summary; exit 1 when a bar fails.
 
 With --continuity g3, also the G3 issue's bars on the cubics: the median over smooth joins
 between cubics of |κ′− − κ′+| / max(|κ′−|, |κ′+|), and (given --g2-ufo) the nodes against
-the G2 output.
+the G2 output. Given --segments (what `glyphfair fair --segments` wrote), the bar on the
+faired segments: at every smooth join between pieces the same relative κ′ jump at most 1e-6
+(κ′ = 0 on both sides matching), each polynomial spiral first rebuilt here from its start
+frame, length and end κ, κ′ (κ(s) the cubic Hermite, position by Simpson's rule) and required
+to reach the end point and tangent it reports.
 
 usage: fairing_bars.py FONT FAIRED.ufo --profile handwriting|text [--glyphs a,b,...]
-                       [--continuity g3 [--g2-ufo G2.ufo]] [--json OUT]
+                       [--continuity g3 [--g2-ufo G2.ufo] [--segments SEGMENTS.json]] [--json OUT]
 """
 import argparse
 import json
@@ -173,6 +177,59 @@ def glyph_contours(glyphset, name, decompose):
     return [[s for s in c if any(p != s[0] for p in s)] for c in segments(pen.value)]
 
 
+def spiral_end(piece, steps=400):
+    """The far end of a polynomial spiral piece, from its start frame, length and end κ, κ′."""
+    a, b = piece["start"], piece["end"]
+    L = piece["length"]
+    k0, d0, k1, d1 = a["curvature"], L * a["dcurvature_ds"], b["curvature"], L * b["dcurvature_ds"]
+
+    def theta(u):  # θ0 + L ∫ Hermite(κ0, κ0′, κ1, κ1′)
+        h00 = u - u**3 + u**4 / 2
+        h10 = u**2 / 2 - 2 * u**3 / 3 + u**4 / 4
+        h01 = u**3 - u**4 / 2
+        h11 = u**4 / 4 - u**3 / 3
+        return a["tangent_angle"] + L * (k0 * h00 + d0 * h10 + k1 * h01 + d1 * h11)
+
+    us = np.linspace(0.0, 1.0, steps + 1)
+    w = np.ones(steps + 1)
+    w[1:-1:2], w[2:-1:2] = 4, 2
+    th = theta(us)
+    x = a["point"][0] + L / (3 * steps) * np.sum(w * np.cos(th))
+    y = a["point"][1] + L / (3 * steps) * np.sum(w * np.sin(th))
+    return (x, y), theta(1.0)
+
+
+def segment_bars(path, glyph_names):
+    """Smooth joins between faired pieces whose κ′ jump exceeds 1e-6, spirals that miss their
+    reported ends, and the number of smooth joins, over the given glyphs."""
+    doc = json.load(open(path))
+    over = misses = count = 0
+    for g in doc["glyphs"]:
+        if g["name"] not in glyph_names:
+            continue
+        for c in g["contours"]:
+            pieces = c["pieces"]
+            for i, p in enumerate(pieces):
+                if p["kind"] == "polynomial-spiral":
+                    (x, y), th = spiral_end(p)
+                    ex, ey = p["end"]["point"]
+                    turn = math.remainder(th - p["end"]["tangent_angle"], 2 * math.pi)
+                    if math.hypot(x - ex, y - ey) > 1e-6 * max(p["length"], 1.0) or abs(turn) > 1e-8:
+                        misses += 1
+                if not p["smooth_start"] or (i == 0 and not c["closed"]) or len(pieces) == 1:
+                    continue
+                q = pieces[i - 1]
+                a, b = q["end"]["dcurvature_ds"], p["start"]["dcurvature_ds"]
+                count += 1
+                if a is None or b is None:
+                    over += 1
+                    continue
+                big = max(abs(a), abs(b))
+                if big > 0 and abs(a - b) > 1e-6 * big:
+                    over += 1
+    return over, misses, count
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("font")
@@ -182,6 +239,7 @@ def main():
     ap.add_argument("--continuity", choices=["g2", "g3"], default="g2",
                     help="g3: also the G3 bars (median κ′ jump; nodes against --g2-ufo)")
     ap.add_argument("--g2-ufo", help="the G2 output of the same glyphs, for the G3 node bar")
+    ap.add_argument("--segments", help="glyphfair fair --segments output, for the G3 bar on the faired segments")
     ap.add_argument("--json")
     args = ap.parse_args()
     font = TTFont(args.font)
@@ -257,6 +315,12 @@ def main():
         if g2_gs is not None:
             growth = sum(r["nodes"][1] for r in rows) / max(g2_nodes, 1)
             bars.append(("nodes <= 1.2x the G2 output", growth, growth <= 1.2))
+        if args.segments:
+            over, misses, count = segment_bars(args.segments, {r["glyph"] for r in rows})
+            print(f"segments: {count} smooth joins, {over} with a dk/ds jump over 1e-6, "
+                  f"{misses} spirals missing their reported ends")
+            bars.append(("segments: smooth joins with dk/ds jump > 1e-6", over, over == 0 and count > 0))
+            bars.append(("segments: spirals rebuilt reach their ends", misses, misses == 0))
     failed = 0
     for name, value, ok in bars:
         failed += not ok

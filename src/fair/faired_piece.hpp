@@ -1,0 +1,36 @@
+// The faired curve itself, before the cubic writeback: what each piece of a contour is, with
+// its end frames (κ and κ′ included), so that the continuity the fairing claims can be checked
+// outside it (`glyphfair fair --segments`).
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "aesthetic/log_aesthetic_segment.hpp"
+
+namespace gf {
+
+enum class FairedPieceKind { line, log_aesthetic, polynomial_spiral, guide };
+
+struct FairedPiece {
+  FairedPieceKind kind;
+  double length;
+  LacPoint start, end;          ///< κ′ nullopt where unbounded (a log-aesthetic inflection end) or not known (a guide's)
+  std::optional<double> alpha;  ///< log-aesthetic segments: the LCG slope
+  bool smooth_start = false;    ///< the join with the piece before is smooth, not a corner
+};
+
+/// A contour's pieces in order; empty when the contour was kept unfaired.
+using FairedPieces = std::vector<FairedPiece>;
+
+inline const char* to_string(FairedPieceKind kind) {
+  switch (kind) {
+    case FairedPieceKind::line: return "line";
+    case FairedPieceKind::log_aesthetic: return "log-aesthetic";
+    case FairedPieceKind::polynomial_spiral: return "polynomial-spiral";
+    case FairedPieceKind::guide: return "guide";
+  }
+  return "";
+}
+
+}  // namespace gf

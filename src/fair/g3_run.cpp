@@ -1,0 +1,248 @@
+#include "fair/g3_run.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include <Eigen/Dense>
+
+namespace gf {
+
+namespace {
+
+constexpr double converged = 1e-11;  // max miss: position over chord, angle in radians
+constexpr double fd_step = 1e-7;
+constexpr int max_iterations = 60;
+
+// The unknowns, scaled to O(1) by a typical segment length h: θ as is, κ·h, slide / h, L / h.
+class G3System {
+ public:
+  G3System(std::span<const G3Node> nodes, std::span<const double> lengths, bool closed)
+      : nodes_(nodes.begin(), nodes.end()), closed_(closed), m_(lengths.size()) {
+    h_ = std::accumulate(lengths.begin(), lengths.end(), 0.0) / static_cast<double>(m_);
+    const auto add = [&](double value, std::size_t node, int segment) {
+      x0_.push_back(value);
+      owner_node_.push_back(node), owner_segment_.push_back(segment);
+      return static_cast<int>(x0_.size() - 1);
+    };
+    theta_.assign(nodes_.size(), -1), kappa_.assign(nodes_.size(), -1), slide_.assign(nodes_.size(), -1);
+    for (std::size_t j = 0; j < nodes_.size(); ++j) {
+      const G3Node& n = nodes_[j];
+      switch (n.kind) {
+        case G3NodeKind::smooth:
+          theta_[j] = add(n.tangent_angle, j, -1), kappa_[j] = add(n.curvature * h_, j, -1);
+          break;
+        case G3NodeKind::inflection:
+          theta_[j] = add(n.tangent_angle, j, -1), slide_[j] = add(0.0, j, -1);
+          break;
+        case G3NodeKind::corner: kappa_[j] = add(n.curvature * h_, j, -1); break;
+        case G3NodeKind::line:
+        case G3NodeKind::line_g2: slide_[j] = add(0.0, j, -1); break;
+      }
+      const Vec2 t = direction_of(n.tangent_angle);
+      slide_direction_.push_back(n.kind == G3NodeKind::inflection ? perpendicular(t) : t);
+    }
+    for (std::size_t i = 0; i < m_; ++i) {
+      length_.push_back(add(lengths[i] / h_, nodes_.size(), static_cast<int>(i)));
+      chord_.push_back(std::max(distance(nodes_[i].point, nodes_[next(i)].point), 1e-9 * h_));
+    }
+  }
+
+  std::size_t segments() const { return m_; }
+  std::size_t unknowns() const { return x0_.size(); }
+  const std::vector<double>& start() const { return x0_; }
+
+  Vec2 point(const std::vector<double>& x, std::size_t j) const {
+    return slide_[j] < 0 ? nodes_[j].point : nodes_[j].point + slide_direction_[j] * (x[at(slide_[j])] * h_);
+  }
+  double angle(const std::vector<double>& x, std::size_t j) const {
+    return theta_[j] < 0 ? nodes_[j].tangent_angle : x[at(theta_[j])];
+  }
+  double curvature(const std::vector<double>& x, std::size_t j) const {
+    if (kappa_[j] >= 0) return x[at(kappa_[j])] / h_;
+    return nodes_[j].kind == G3NodeKind::corner || nodes_[j].kind == G3NodeKind::smooth ? nodes_[j].curvature : 0.0;
+  }
+  double length(const std::vector<double>& x, std::size_t i) const { return x[at(length_[i])] * h_; }
+
+  /// κ′ at node j: Fritsch–Butland over the neighbouring secants; the end secant at a corner.
+  double slope(const std::vector<double>& x, std::size_t j) const {
+    const G3NodeKind kind = nodes_[j].kind;
+    if (kind == G3NodeKind::line) return 0.0;
+    if (kind == G3NodeKind::corner || kind == G3NodeKind::line_g2) return secant(x, j == 0 ? 0 : m_ - 1);
+    const double a = secant(x, j == 0 ? m_ - 1 : j - 1), b = secant(x, j % m_);
+    return a * b > 0.0 ? 2.0 * a * b / (a + b) : 0.0;
+  }
+
+  CurvatureEnd end_data(const std::vector<double>& x, std::size_t j) const {
+    return {point(x, j), angle(x, j), curvature(x, j), slope(x, j)};
+  }
+
+  PolynomialSpiral spiral(const std::vector<double>& x, std::size_t i) const {
+    const std::size_t k = next(i);
+    return PolynomialSpiral(end_data(x, i), length(x, i), curvature(x, k), slope(x, k), 0.0, 0.0);
+  }
+
+  /// How far segment i's far end misses node i + 1: point over the chord, then the angle.
+  Eigen::Vector3d miss(const std::vector<double>& x, std::size_t i) const {
+    const std::size_t k = next(i);
+    const PolynomialSpiral s = spiral(x, i);
+    const Vec2 d = (s.end().point - point(x, k)) / chord_[i];
+    return {d.x, d.y, wrapped_angle(s.tangent_angle_at(s.length()) - angle(x, k))};
+  }
+
+  /// The segments whose miss unknown u moves (κ′ reaches two secants away).
+  std::vector<std::size_t> touched_by(std::size_t u) const {
+    const int n = static_cast<int>(m_);
+    const int centre = owner_segment_[u] >= 0 ? owner_segment_[u] : static_cast<int>(owner_node_[u]);
+    const int lo = owner_segment_[u] >= 0 ? centre - 1 : centre - 2, hi = centre + 1;
+    std::vector<std::size_t> out;
+    for (int i = lo; i <= hi; ++i) {
+      if (closed_) out.push_back(static_cast<std::size_t>(((i % n) + n) % n));
+      else if (i >= 0 && i < n) out.push_back(static_cast<std::size_t>(i));
+    }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+  }
+
+  /// Every length positive, and no line end slid past its room into the line (behind the
+  /// start, ahead of the end).
+  bool feasible(const std::vector<double>& x) const {
+    for (std::size_t i = 0; i < m_; ++i)
+      if (!(length(x, i) > 0.0)) return false;
+    for (std::size_t j = 0; j < nodes_.size(); ++j) {
+      if (nodes_[j].kind != G3NodeKind::line && nodes_[j].kind != G3NodeKind::line_g2) continue;
+      const double into_line = x[at(slide_[j])] * h_ * (j == 0 ? -1.0 : 1.0);
+      if (into_line > nodes_[j].slide_room) return false;
+    }
+    return std::all_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); });
+  }
+
+ private:
+  static std::size_t at(int index) { return static_cast<std::size_t>(index); }
+  std::size_t next(std::size_t i) const { return closed_ ? (i + 1) % m_ : i + 1; }
+  double secant(const std::vector<double>& x, std::size_t i) const {
+    return (curvature(x, next(i)) - curvature(x, i)) / length(x, i);
+  }
+
+  std::vector<G3Node> nodes_;
+  bool closed_;
+  std::size_t m_;
+  double h_ = 1.0;
+  std::vector<double> x0_;
+  std::vector<std::size_t> owner_node_;
+  std::vector<int> owner_segment_;
+  std::vector<int> theta_, kappa_, slide_, length_;
+  std::vector<Vec2> slide_direction_;
+  std::vector<double> chord_;
+};
+
+Eigen::VectorXd misses(const G3System& sys, const std::vector<double>& x) {
+  Eigen::VectorXd f(static_cast<Eigen::Index>(3 * sys.segments()));
+  for (std::size_t i = 0; i < sys.segments(); ++i) f.segment<3>(static_cast<Eigen::Index>(3 * i)) = sys.miss(x, i);
+  return f;
+}
+
+}  // namespace
+
+G3Result make_g3(std::span<const G3Node> nodes, std::span<const double> lengths, bool closed) {
+  G3Result out;
+  const std::size_t m = lengths.size();
+  if (m == 0 || nodes.size() != (closed ? m : m + 1)) {
+    out.reason = "the G3 solve needs one node per segment end";
+    return out;
+  }
+  const G3System sys(nodes, lengths, closed);
+  std::vector<double> x = sys.start();
+  Eigen::VectorXd f = misses(sys, x);
+  const auto n = static_cast<Eigen::Index>(sys.unknowns());
+  for (; out.iterations < max_iterations && f.lpNorm<Eigen::Infinity>() > converged; ++out.iterations) {
+    Eigen::MatrixXd jac = Eigen::MatrixXd::Zero(f.size(), n);
+    for (std::size_t u = 0; u < sys.unknowns(); ++u) {
+      std::vector<double> xu = x;
+      xu[u] += fd_step;
+      for (const std::size_t i : sys.touched_by(u)) {
+        const auto row = static_cast<Eigen::Index>(3 * i);
+        jac.block<3, 1>(row, static_cast<Eigen::Index>(u)) = (sys.miss(xu, i) - f.segment<3>(row)) / fd_step;
+      }
+    }
+    const Eigen::VectorXd step = jac.colPivHouseholderQr().solve(-f);
+    bool stepped = false;
+    for (double t = 1.0; t > 1e-6 && !stepped; t *= 0.5) {
+      std::vector<double> trial = x;
+      for (std::size_t u = 0; u < trial.size(); ++u) trial[u] += t * step[static_cast<Eigen::Index>(u)];
+      if (!sys.feasible(trial)) continue;
+      const Eigen::VectorXd ft = misses(sys, trial);
+      if (ft.allFinite() && ft.norm() < f.norm()) x = std::move(trial), f = ft, stepped = true;
+    }
+    if (!stepped) break;
+  }
+  out.residual = f.lpNorm<Eigen::Infinity>();
+  if (!(out.residual <= converged)) {
+    out.reason = "the G3 solve stalled " + std::to_string(out.residual) + " from meeting its junctions after " +
+                 std::to_string(out.iterations) + " iterations";
+    return out;
+  }
+  for (std::size_t j = 0; j < nodes.size(); ++j) out.ends.push_back(sys.end_data(x, j));
+  for (std::size_t i = 0; i < m; ++i) out.spirals.push_back(sys.spiral(x, i));
+  return out;
+}
+
+std::optional<G3Problem> g3_problem(const std::vector<FairedChain>& chains, const SmoothRun& run,
+                                    std::span<const int> pieces) {
+  G3Problem p;
+  p.closed = run.closed;
+  const auto end_kind = [](RunEndKind k) { return k == RunEndKind::line ? G3NodeKind::line : G3NodeKind::corner; };
+  // The run's share of the line, less 1 % so that the line keeps a length.
+  const auto room = [](const RunEnd& e) { return 0.99 * e.line_share; };
+  std::vector<const LogAestheticSegment*> segments;
+  std::vector<bool> at_inflection;  // the segment starts where its chain meets the one before at κ = 0
+  for (const FairedChain& c : chains) {
+    if (c.segments.empty()) return std::nullopt;
+    for (const LogAestheticSegment& s : c.segments)
+      segments.push_back(&s), at_inflection.push_back(&s == &c.segments.front() && c.zero_curvature_start);
+  }
+  const std::size_t m = segments.size();
+  double angle = angle_of(segments.front()->start().tangent);
+  for (std::size_t i = 0; i < m; ++i) {
+    const LogAestheticSegment& seg = *segments[i];
+    const int n = i < pieces.size() ? std::max(pieces[i], 1) : 1;
+    LacPoint last = seg.start();
+    for (int k = 0; k < n; ++k) {
+      G3NodeKind kind = G3NodeKind::smooth;
+      double kappa = last.curvature;
+      if (k == 0) {
+        if (at_inflection[i] && (run.closed || i > 0)) kind = G3NodeKind::inflection;
+        if (!run.closed && i == 0) kind = end_kind(run.start.kind);
+        // κ: the mean of the two sides (equal once the G2 solve converged).
+        if (i > 0 || run.closed) kappa = 0.5 * (kappa + segments[(i + m - 1) % m]->end().curvature);
+      }
+      p.nodes.push_back({last.point, angle, kappa, kind, !run.closed && i == 0 && k == 0 ? room(run.start) : 0.0});
+      const LacPoint next = k + 1 == n ? seg.end() : seg.at(seg.length() * (k + 1) / n);
+      p.lengths.push_back(seg.length() / n);
+      p.log_aesthetic_segment.push_back(i);
+      angle += turning_angle(last.tangent, next.tangent);
+      last = next;
+    }
+  }
+  if (!run.closed) {
+    const LacPoint end = segments.back()->end();
+    p.nodes.push_back({end.point, angle, end.curvature, end_kind(run.end.kind), room(run.end)});
+  }
+  return p;
+}
+
+void adopt_spirals(std::vector<FairedChain>& chains, const G3Problem& problem, std::vector<PolynomialSpiral> spirals) {
+  std::size_t next = 0, first_segment = 0;
+  for (FairedChain& c : chains) {
+    const std::size_t end_segment = first_segment + c.segments.size();
+    c.spirals.clear();
+    for (; next < spirals.size() && problem.log_aesthetic_segment[next] < end_segment; ++next)
+      c.spirals.push_back(std::move(spirals[next]));
+    c.segments.clear();
+    c.max_mismatch_relative = 0.0;
+    first_segment = end_segment;
+  }
+}
+
+}  // namespace gf

@@ -1,0 +1,170 @@
+// The run-wide G3 solve: junction frames from exact curves (a circle, an ellipse, a sine wave,
+// a clothoid leaving a line), each checked for what G3 promises — every spiral meets the next
+// junction in point, tangent, κ and κ′, κ(s) monotone on every piece — and the circle, whose
+// answer is known, for that answer.
+#include "fair/g3_run.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "aesthetic/clothoid_g1.hpp"
+
+namespace gf {
+namespace {
+
+constexpr double pi = std::numbers::pi;
+
+// Every spiral's far end is the next one's start, to the solve's tolerance; κ and κ′ exactly.
+void expect_g3(const G3Result& r, bool closed) {
+  ASSERT_TRUE(r.ok()) << r.reason;
+  const std::size_t m = r.spirals.size();
+  for (std::size_t i = 0; i < m; ++i) {
+    const PolynomialSpiral& a = r.spirals[i];
+    EXPECT_TRUE(a.curvature_monotone()) << "segment " << i;
+    if (!closed && i + 1 == m) break;
+    const PolynomialSpiral& b = r.spirals[(i + 1) % m];
+    const LacPoint e = a.end(), s = b.start();
+    const double scale = a.length();
+    EXPECT_NEAR(distance(e.point, s.point) / scale, 0.0, 1e-10) << "junction " << i + 1;
+    EXPECT_NEAR(cross(e.tangent, s.tangent), 0.0, 1e-10);
+    EXPECT_GT(dot(e.tangent, s.tangent), 0.0);
+    EXPECT_NEAR(e.curvature, s.curvature, 1e-12 / scale);
+    const double ka = *e.curvature_derivative, kb = *s.curvature_derivative;
+    // Relative, or absolute where κ′ is 0 (rounding in the spirals' polynomials: 1e-21).
+    EXPECT_LE(std::abs(ka - kb), std::max(1e-9 * std::max(std::abs(ka), std::abs(kb)), 1e-12 * std::abs(e.curvature) / scale))
+        << "junction " << i + 1;
+  }
+}
+
+TEST(G3Run, ACircleStaysTheCircle) {
+  // Four quarter arcs, lengths started 10 % off: the answer is the circle, κ′ = 0 everywhere.
+  const double r = 250.0;
+  std::vector<G3Node> nodes;
+  for (int k = 0; k < 4; ++k) {
+    const double t = k * pi / 2;
+    nodes.push_back({{r * std::cos(t), r * std::sin(t)}, t + pi / 2, 1.0 / r, G3NodeKind::smooth});
+  }
+  const std::vector<double> lengths(4, 1.1 * r * pi / 2);
+  const G3Result g = make_g3(nodes, lengths, true);
+  expect_g3(g, true);
+  for (const PolynomialSpiral& s : g.spirals) {
+    EXPECT_NEAR(s.length(), r * pi / 2, 1e-8 * r);
+    for (const LacPoint& p : s.sample(16)) {
+      EXPECT_NEAR(p.curvature, 1.0 / r, 1e-12);
+      EXPECT_NEAR(norm(p.point), r, 1e-8 * r);
+    }
+  }
+}
+
+TEST(G3Run, AnEllipseComesOutG3NearTheEllipse) {
+  // Junctions at its four extrema of curvature and halfway between; κ from the ellipse.
+  const double a = 300.0, b = 180.0;
+  std::vector<G3Node> nodes;
+  std::vector<double> lengths;
+  const auto at = [&](double t) { return Vec2{a * std::cos(t), b * std::sin(t)}; };
+  for (int k = 0; k < 8; ++k) {
+    const double t = k * pi / 4;
+    const double speed = std::hypot(a * std::sin(t), b * std::cos(t));
+    nodes.push_back({at(t), std::atan2(b * std::cos(t), -a * std::sin(t)),
+                     a * b / (speed * speed * speed), G3NodeKind::smooth});
+    double len = 0.0;  // arc length by the midpoint rule
+    for (int q = 0; q < 2000; ++q) {
+      const double u = t + (q + 0.5) * (pi / 4) / 2000;
+      len += std::hypot(a * std::sin(u), b * std::cos(u)) * (pi / 4) / 2000;
+    }
+    lengths.push_back(len);
+  }
+  for (std::size_t k = 1; k < nodes.size(); ++k)  // unwrap along the run
+    nodes[k].tangent_angle = nodes[k - 1].tangent_angle + wrapped_angle(nodes[k].tangent_angle - nodes[k - 1].tangent_angle);
+  const G3Result g = make_g3(nodes, lengths, true);
+  expect_g3(g, true);
+  // Extrema of the ellipse's curvature are junctions whose secants differ in sign: κ′ = 0 there.
+  for (int k = 0; k < 8; k += 2) EXPECT_EQ(g.ends[static_cast<std::size_t>(k)].curvature_slope, 0.0);
+  double far = 0.0;
+  for (const PolynomialSpiral& s : g.spirals)
+    for (const LacPoint& p : s.sample(32)) {
+      // Distance to the ellipse, near enough: |F(p)| / |∇F| for F = (x/a)² + (y/b)² − 1.
+      const double f = (p.point.x / a) * (p.point.x / a) + (p.point.y / b) * (p.point.y / b) - 1.0;
+      const double grad = 2.0 * std::hypot(p.point.x / (a * a), p.point.y / (b * b));
+      far = std::max(far, std::abs(f) / grad);
+    }
+  EXPECT_LT(far, 0.005 * a);
+}
+
+TEST(G3Run, ASineWaveBetweenCornersKeepsItsInflectionAtZeroCurvature) {
+  // y = A sin(x / B) from one crest to the next trough: corners at the ends, the inflection
+  // in the middle, smooth junctions halfway.
+  const double A = 60.0, B = 80.0;
+  std::vector<G3Node> nodes;
+  std::vector<double> lengths;
+  const int count = 5;
+  for (int k = 0; k < count; ++k) {
+    const double x = B * (pi / 2 + k * pi / 4);
+    const double d1 = A / B * std::cos(x / B), d2 = -A / (B * B) * std::sin(x / B);
+    const G3NodeKind kind = k == 0 || k == count - 1 ? G3NodeKind::corner : (k == 2 ? G3NodeKind::inflection : G3NodeKind::smooth);
+    nodes.push_back({{x, A * std::sin(x / B)}, std::atan(d1), d2 / std::pow(1 + d1 * d1, 1.5), kind});
+    if (k + 1 < count) {
+      double len = 0.0;
+      for (int q = 0; q < 2000; ++q) {
+        const double u = x + (q + 0.5) * (B * pi / 4) / 2000;
+        len += std::hypot(1.0, A / B * std::cos(u / B)) * (B * pi / 4) / 2000;
+      }
+      lengths.push_back(len);
+    }
+  }
+  const G3Result g = make_g3(nodes, lengths, false);
+  expect_g3(g, false);
+  EXPECT_EQ(g.ends[2].curvature, 0.0);
+  EXPECT_NE(g.ends[2].curvature_slope, 0.0);  // an inflection, not a flat stretch
+  // The corners keep their points and tangents.
+  for (const std::size_t k : {std::size_t{0}, std::size_t{count - 1}}) {
+    EXPECT_EQ(g.ends[k].point, nodes[k].point);
+    EXPECT_EQ(g.ends[k].tangent_angle, nodes[k].tangent_angle);
+  }
+}
+
+TEST(G3Run, ACurveLeavingALineSlidesAlongItToMeetItG3) {
+  // A clothoid (κ = s / 100) leaves the x axis at the origin, κ′ ≠ 0 there; G3 with the line
+  // needs κ′ = 0, which the line end gets by sliding along the line.
+  const double c = 0.01;
+  std::vector<G3Node> nodes;
+  std::vector<double> lengths;
+  for (int k = 0; k <= 3; ++k) {
+    const double s = 40.0 * k;
+    Vec2 p{0.0, 0.0};
+    for (int q = 0; q < 4000; ++q) {
+      const double u = (q + 0.5) * s / 4000;
+      p += direction_of(0.5 * c * u * u) * (s / 4000);
+    }
+    nodes.push_back({p, 0.5 * c * s * s, c * s, k == 0 ? G3NodeKind::line : (k == 3 ? G3NodeKind::corner : G3NodeKind::smooth),
+                     k == 0 ? 1000.0 : 0.0});
+    if (k < 3) lengths.push_back(40.0);
+  }
+  const G3Result g = make_g3(nodes, lengths, false);
+  expect_g3(g, false);
+  EXPECT_EQ(g.ends[0].curvature, 0.0);
+  EXPECT_EQ(g.ends[0].curvature_slope, 0.0);
+  EXPECT_EQ(g.ends[0].tangent_angle, 0.0);
+  EXPECT_EQ(g.ends[0].point.y, 0.0);  // still on the line
+  const double slide = -g.ends[0].point.x;
+  EXPECT_GT(slide, 1.0);  // back into the line: the curve must start turning earlier, and slower
+  // A line shorter than that slide has no room for it: no G3, and a reason.
+  nodes[0].slide_room = 0.5 * slide;
+  const G3Result short_line = make_g3(nodes, lengths, false);
+  EXPECT_FALSE(short_line.ok());
+  EXPECT_NE(short_line.reason.find("stalled"), std::string::npos) << short_line.reason;
+}
+
+TEST(G3Run, SaysWhyWhenTheNodesDoNotFitTheSegments) {
+  const G3Node n{{0, 0}, 0, 0, G3NodeKind::corner};
+  const std::vector<G3Node> nodes{n, n, n};
+  const std::vector<double> lengths{1.0};
+  const G3Result g = make_g3(nodes, lengths, false);
+  EXPECT_FALSE(g.ok());
+  EXPECT_FALSE(g.reason.empty());
+}
+
+}  // namespace
+}  // namespace gf

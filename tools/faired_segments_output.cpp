@@ -1,0 +1,63 @@
+#include "faired_segments_output.hpp"
+
+#include <cmath>
+
+#include "io/atomic_output.hpp"
+
+namespace gf {
+
+namespace {
+
+using json = nlohmann::ordered_json;
+
+json frame_json(const LacPoint& p) {
+  return {{"point", {p.point.x, p.point.y}},
+          {"tangent_angle", std::atan2(p.tangent.y, p.tangent.x)},
+          {"curvature", p.curvature},
+          {"dcurvature_ds", p.curvature_derivative ? json(*p.curvature_derivative) : json(nullptr)}};
+}
+
+const char* continuity_name(Continuity c) {
+  switch (c) {
+    case Continuity::g1: return "g1";
+    case Continuity::g2: return "g2";
+    case Continuity::g3: return "g3";
+  }
+  return "";
+}
+
+}  // namespace
+
+FairedSegmentsOutput::FairedSegmentsOutput(std::string source, const FairSettings& settings, double units_per_em) {
+  document_["format"] = "glyphfair-faired-segments";
+  document_["version"] = 1;
+  document_["source"] = std::move(source);
+  document_["units_per_em"] = units_per_em;
+  document_["continuity"] = continuity_name(settings.continuity);
+  document_["tolerance_units"] = settings.tolerance_units;
+  document_["glyphs"] = json::array();
+}
+
+void FairedSegmentsOutput::add(const GlyphFairing& glyph) {
+  json contours = json::array();
+  for (std::size_t i = 0; i < glyph.pieces.size(); ++i) {
+    const FairedPieces& pieces = glyph.pieces[i];
+    json list = json::array();
+    for (const FairedPiece& p : pieces) {
+      json j{{"kind", to_string(p.kind)}, {"length", p.length}, {"smooth_start", p.smooth_start}};
+      if (p.alpha) j["alpha"] = *p.alpha;
+      j["start"] = frame_json(p.start);
+      j["end"] = frame_json(p.end);
+      list.push_back(std::move(j));
+    }
+    const bool closed = i < glyph.glyph.outline.contours.size() && glyph.glyph.outline.contours[i].closed;
+    contours.push_back({{"closed", closed}, {"faired", !pieces.empty()}, {"pieces", std::move(list)}});
+  }
+  document_["glyphs"].push_back({{"name", glyph.glyph.name}, {"contours", std::move(contours)}});
+}
+
+void FairedSegmentsOutput::write(const std::filesystem::path& target, std::span<const std::filesystem::path> inputs) const {
+  write_file_atomically(target, document_.dump(1) + "\n", inputs);
+}
+
+}  // namespace gf
