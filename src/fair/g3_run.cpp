@@ -202,6 +202,7 @@ std::optional<G3Problem> g3_problem(const std::vector<FairedChain>& chains, cons
     for (const LogAestheticSegment& s : c.segments)
       segments.push_back(&s), at_inflection.push_back(&s == &c.segments.front() && c.zero_curvature_start);
   }
+  if (segments.empty()) return std::nullopt;
   const std::size_t m = segments.size();
   double angle = angle_of(segments.front()->start().tangent);
   for (std::size_t i = 0; i < m; ++i) {

@@ -77,7 +77,8 @@ struct G3Problem {
 /// `pieces[i]`: how many G3 segments the run's log-aesthetic segment i becomes (1 when not
 /// given), cut at equal arc lengths with its own point, tangent and κ there: more freedom where
 /// κ′ = 0 at an extremum would otherwise round the curvature's peak too wide. Nullopt when a
-/// chain is a stretch of the smoothing guide (it has no segments to re-express).
+/// chain is a stretch of the smoothing guide (it has no segments to re-express), or there is
+/// no chain at all.
 std::optional<G3Problem> g3_problem(const std::vector<FairedChain>& chains, const SmoothRun& run,
                                     std::span<const int> pieces = {});
 

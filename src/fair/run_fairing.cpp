@@ -441,7 +441,7 @@ void reexpress_as_g3(FairedRun& result, const RunReference& source, const Smooth
   for (int round = 0; round < max_g3_rounds; ++round) {
     std::optional<G3Problem> problem = g3_problem(result.chains, run, pieces);
     if (!problem) {
-      result.g3_shortfall = "part of it follows the smoothing guide";
+      if (!result.chains.empty()) result.g3_shortfall = "part of it follows the smoothing guide";
       return;
     }
     pieces.resize(problem->log_aesthetic_segment.back() + 1, 1);

@@ -157,6 +157,11 @@ TEST(G3Run, ACurveLeavingALineSlidesAlongItToMeetItG3) {
   EXPECT_NE(short_line.reason.find("stalled"), std::string::npos) << short_line.reason;
 }
 
+TEST(G3Run, ARunWithoutChainsHasNoProblem) {
+  const SmoothRun run;
+  EXPECT_FALSE(g3_problem({}, run).has_value());
+}
+
 TEST(G3Run, SaysWhyWhenTheNodesDoNotFitTheSegments) {
   const G3Node n{{0, 0}, 0, 0, G3NodeKind::corner};
   const std::vector<G3Node> nodes{n, n, n};

@@ -8,6 +8,7 @@
     every coordinate is an integer; every smooth on-curve point is exactly collinear with
     its neighbouring handles (G1 exact on the grid);
   * --no-round keeps fractional coordinates; .svg and .json outputs; --proof writes a PDF;
+  * --continuity g3 --segments: the exported faired pieces are G3 at their smooth joins;
   * a point-sequence JSON (tests/data/handwriting-points.json) is fitted and faired, every
     glyph within the tolerance of its points;
   * the error contract: exit 2 with one line on stderr naming the file, nothing left behind,
@@ -28,7 +29,7 @@ from fontTools.ufoLib import UFOReader
 from scipy.spatial import cKDTree
 
 from cli_contract import error_problem, finish
-from fairing_bars import area, dense, glyph_contours
+from fairing_bars import area, dense, glyph_contours, segment_bars
 
 
 def run(glyphfair, *args):
@@ -136,6 +137,34 @@ def main():
     coords = json.dumps(doc)
     if "." not in coords:
         failures.append("--no-round wrote no fractional coordinate at all")
+
+    # G3 with the faired segments exported: every smooth join between pieces has κ′ matched to
+    # 1e-6 but the line joins the summary reports as G2 only, and every spiral rebuilt here from
+    # its own data reaches the end it reports (fairing_bars.segment_bars).
+    segments_path = os.path.join(work, "g3-segments.json")
+    names = ["o", "e", "c", "O", "D", "G"]
+    r = run(glyphfair, dejavu, "--glyphs", ",".join(names), "--continuity", "g3", "-o", os.path.join(work, "g3.ufo"),
+            "--segments", segments_path)
+    if r.returncode != 0:
+        failures.append(f"--continuity g3: exit {r.returncode}: {r.stderr.strip()}")
+    else:
+        over, misses, count = segment_bars(segments_path, set(names))
+        summary = r.stderr.strip().splitlines()[-1]
+        line_joins = int(summary.split("smooth runs (")[1].split()[0])
+        if count == 0 or over > line_joins or misses:
+            failures.append(f"--continuity g3: {over} of {count} smooth joins off G3 ({line_joins} line joins reported), "
+                            f"{misses} spirals missing their ends")
+        ufo = UFOReader(os.path.join(work, "g3.ufo"), validate=True).getGlyphSet()
+        src = TTFont(dejavu).getGlyphSet()
+        for name in names:
+            a, b = dense(glyph_contours(src, name, False)), dense(glyph_contours(ufo, name, False))
+            d = max(cKDTree(b).query(a)[0].max(), cKDTree(a).query(b)[0].max())
+            if d > 0.001 * 2048 * 1.01:
+                failures.append(f"--continuity g3: {name} is {d:.2f} units from the source")
+    problem = error_problem(run(glyphfair, dejavu, "--glyphs", "o", "-o", os.path.join(work, "e4.ufo"), "--segments",
+                                os.path.join(work, "e4.txt")), 2, "e4.txt")
+    if problem:
+        failures.append(f"--segments to a .txt: {problem}")
 
     # Point sequences: every glyph within the tolerance of its points.
     points_path = os.path.join(data, "handwriting-points.json")
