@@ -11,10 +11,12 @@
 namespace gf {
 namespace {
 
-void fair_every_glyph(benchmark::State& state, const std::string& font, FairProfile profile) {
+void fair_every_glyph(benchmark::State& state, const std::string& font, FairProfile profile,
+                      Continuity continuity = Continuity::g2) {
   const GlyphSet set = GlyphSource::open(font).load_all();
   FairOptions options;
   options.profile = profile;
+  options.continuity = continuity;
   const FairSettings settings = resolve_settings(options, set.font.units_per_em);
   for (auto _ : state)
     for (const Glyph& g : set.glyphs) benchmark::DoNotOptimize(fair_glyph(g, settings));
@@ -22,6 +24,9 @@ void fair_every_glyph(benchmark::State& state, const std::string& font, FairProf
 }
 BENCHMARK_CAPTURE(fair_every_glyph, dejavu_text, std::string(GLYPHFAIR_FONTS) + "/DejaVuSans/DejaVuSans-subset.ttf",
                   FairProfile::text)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(fair_every_glyph, dejavu_text_g3, std::string(GLYPHFAIR_FONTS) + "/DejaVuSans/DejaVuSans-subset.ttf",
+                  FairProfile::text, Continuity::g3)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(fair_every_glyph, because_we_learn_handwriting,
                   std::string(GLYPHFAIR_FONTS) + "/BecauseWeLearn/BecauseWeLearn-Regular-subset.otf",
