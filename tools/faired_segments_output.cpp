@@ -17,15 +17,6 @@ json frame_json(const LacPoint& p) {
           {"dcurvature_ds", p.curvature_derivative ? json(*p.curvature_derivative) : json(nullptr)}};
 }
 
-const char* continuity_name(Continuity c) {
-  switch (c) {
-    case Continuity::g1: return "g1";
-    case Continuity::g2: return "g2";
-    case Continuity::g3: return "g3";
-  }
-  return "";
-}
-
 }  // namespace
 
 FairedSegmentsOutput::FairedSegmentsOutput(std::string source, const FairSettings& settings, double units_per_em) {
@@ -33,7 +24,7 @@ FairedSegmentsOutput::FairedSegmentsOutput(std::string source, const FairSetting
   document_["version"] = 1;
   document_["source"] = std::move(source);
   document_["units_per_em"] = units_per_em;
-  document_["continuity"] = continuity_name(settings.continuity);
+  document_["continuity"] = to_string(settings.continuity);
   document_["tolerance_units"] = settings.tolerance_units;
   document_["glyphs"] = json::array();
 }

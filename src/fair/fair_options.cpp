@@ -31,4 +31,9 @@ std::optional<Continuity> parse_continuity(const std::string& name) {
 
 const char* to_string(FairProfile profile) { return profile == FairProfile::text ? "text" : "handwriting"; }
 
+const char* to_string(Continuity continuity) {
+  static constexpr const char* names[] = {"g1", "g2", "g3"};
+  return names[static_cast<int>(continuity)];
+}
+
 }  // namespace gf

@@ -53,5 +53,6 @@ FairSettings resolve_settings(const FairOptions& options, double units_per_em);
 std::optional<FairProfile> parse_fair_profile(const std::string& name);
 std::optional<Continuity> parse_continuity(const std::string& name);
 const char* to_string(FairProfile profile);
+const char* to_string(Continuity continuity);
 
 }  // namespace gf
