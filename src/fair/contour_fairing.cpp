@@ -204,23 +204,6 @@ double distance_between(const SampledContour& a, const SampledContour& b) {
   return std::max(directed_hausdorff(a.points(), b.grid), directed_hausdorff(b.points(), a.grid));
 }
 
-// How far each segment of `faired` is from the source: its own points from the source, and the
-// source's points whose nearest faired point lies on it. The largest is distance_between the
-// two; a segment moved by at most the tolerance less its own keeps the contour within the
-// tolerance, on both sides of the distance (triangle inequality through its unmoved points).
-std::vector<double> distance_by_segment(const SampledContour& faired, const SampledContour& source) {
-  const std::vector<std::size_t>& of = faired.samples.segment_of;
-  std::vector<double> d(of.empty() ? 0 : of.back() + 1, 0.0);
-  if (faired.points().empty() || source.points().empty()) return d;
-  for (std::size_t k = 0; k < faired.points().size(); ++k)
-    d[of[k]] = std::max(d[of[k]], source.grid.distance_to(faired.points()[k]));
-  for (const Vec2 p : source.points()) {
-    const PolylineGrid::Nearest n = faired.grid.nearest(p);
-    d[of[n.segment]] = std::max(d[of[n.segment]], n.distance);
-  }
-  return d;
-}
-
 }  // namespace
 
 double contour_distance(const Contour& a, const Contour& b) {
@@ -258,7 +241,8 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& settings)
     rotate_to_start(a.nodes, source.node_point(0));
     Contour faired = to_contour(a.nodes, source.closed);
     const SampledContour sampled(faired);
-    const std::vector<double> by_segment = distance_by_segment(sampled, sampled_source);
+    // Each segment's own share: what rounding may still spend there (geom/polyline_distance.hpp).
+    const std::vector<double> by_segment = distance_by_piece(sampled.grid, sampled.samples.segment_of, sampled_source.grid);
     double d = by_segment.empty() ? distance_between(sampled, sampled_source)
                                   : *std::max_element(by_segment.begin(), by_segment.end());
     if (settings.round_to_integers && d <= settings.tolerance_units) {

@@ -397,9 +397,9 @@ FairedChain guide_stretch(const ChainSpan& span, const std::shared_ptr<const Run
   return chain;
 }
 
-// How far each G3 spiral is from the source run: its own points from the source, and the source's
-// points whose nearest faired point lies on it. Each side is carried along a line the run meets
-// as far as the other side reaches there (a line end slides along its line, and the line with it).
+// How far each G3 spiral is from the source run (geom/polyline_distance's distance_by_piece),
+// each side carried along a line the run meets as far as the other side reaches there (a line
+// end slides along its line, and the line with it).
 std::vector<double> distance_by_spiral(const G3Result& g3, const G3Problem& problem, const RunReference& source,
                                        double budget) {
   std::vector<Vec2> faired;
@@ -422,14 +422,7 @@ std::vector<double> distance_by_spiral(const G3Result& g3, const G3Problem& prob
         spiral_of.insert(at_start ? spiral_of.begin() : spiral_of.end(), at_start ? 0 : pieces.size() - 1);
       }
     }
-  std::vector<double> d(pieces.size(), 0.0);
-  const PolylineGrid to_original(original, 8.0), to_faired(faired, 8.0);
-  for (std::size_t k = 0; k < faired.size(); ++k) d[spiral_of[k]] = std::max(d[spiral_of[k]], to_original.distance_to(faired[k]));
-  for (const Vec2 p : original) {
-    const PolylineGrid::Nearest n = to_faired.nearest(p);
-    d[spiral_of[n.segment]] = std::max(d[spiral_of[n.segment]], n.distance);
-  }
-  return d;
+  return distance_by_piece(PolylineGrid(std::move(faired), 8.0), spiral_of, PolylineGrid(std::move(original), 8.0));
 }
 
 // G3 over the whole run (fair/g3_run.hpp), kept only when it stays within the budget of the

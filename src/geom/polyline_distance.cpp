@@ -110,6 +110,19 @@ PolylineGrid::Nearest PolylineGrid::nearest(Vec2 p) const {
   return {std::sqrt(best), best_at};
 }
 
+std::vector<double> distance_by_piece(const PolylineGrid& curve, std::span<const std::size_t> piece_of,
+                                      const PolylineGrid& other) {
+  std::vector<double> d(piece_of.empty() ? 0 : *std::max_element(piece_of.begin(), piece_of.end()) + 1, 0.0);
+  if (curve.points().empty() || other.points().empty()) return d;
+  for (std::size_t k = 0; k < curve.points().size(); ++k)
+    d[piece_of[k]] = std::max(d[piece_of[k]], other.distance_to(curve.points()[k]));
+  for (const Vec2 p : other.points()) {
+    const PolylineGrid::Nearest n = curve.nearest(p);
+    d[piece_of[n.segment]] = std::max(d[piece_of[n.segment]], n.distance);
+  }
+  return d;
+}
+
 double directed_hausdorff(std::span<const Vec2> from, const PolylineGrid& to) {
   double m = 0.0;
   for (const Vec2 p : from) m = std::max(m, to.distance_to(p));

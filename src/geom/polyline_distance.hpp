@@ -24,6 +24,7 @@ double directed_hausdorff(std::span<const Vec2> from, std::span<const Vec2> to_p
 class PolylineGrid {
  public:
   PolylineGrid(std::vector<Vec2> polyline, double cell_size);
+  const std::vector<Vec2>& points() const { return points_; }
   double distance_to(Vec2 p) const { return nearest(p).distance; }
 
   struct Nearest {
@@ -43,5 +44,13 @@ class PolylineGrid {
 
 /// max over `from` of the distance to the polyline in `to`.
 double directed_hausdorff(std::span<const Vec2> from, const PolylineGrid& to);
+
+/// The two-sided distance between a curve sampled piece by piece (`piece_of[k]`: the piece
+/// whose stretch of polyline point k starts) and another polyline, piece by piece: each
+/// piece's own points from the other, and the other's points whose nearest curve point lies on
+/// it. The largest is the Hausdorff distance; a piece moved by at most the bound less its own
+/// keeps the whole within the bound (triangle inequality through the unmoved pieces).
+std::vector<double> distance_by_piece(const PolylineGrid& curve, std::span<const std::size_t> piece_of,
+                                      const PolylineGrid& other);
 
 }  // namespace gf

@@ -77,5 +77,22 @@ TEST(PolylineDistance, StopAboveIsExactBelowAndSaysPastAbove) {
   }
 }
 
+TEST(PolylineDistance, ByPieceIsTheHausdorffDistanceSharedOut) {
+  // A curve of 3 pieces against a random other: the largest share is the two-sided distance
+  // (brute force), and each piece's share bounds its own points' distance to the other.
+  std::mt19937 rng(9);
+  for (int trial = 0; trial < 50; ++trial) {
+    const std::vector<Vec2> curve = wobbly(rng, 30, {0, 0}), other = wobbly(rng, 40, {0.5, 0.5});
+    std::vector<std::size_t> piece_of;
+    for (std::size_t k = 0; k < curve.size(); ++k) piece_of.push_back(std::min<std::size_t>(k / 10, 2));
+    const std::vector<double> d = distance_by_piece(PolylineGrid(curve, 0.5), piece_of, PolylineGrid(other, 0.5));
+    ASSERT_EQ(d.size(), 3u);
+    const double exact = std::max(test::directed_to_polyline(curve, other), test::directed_to_polyline(other, curve));
+    EXPECT_NEAR(*std::max_element(d.begin(), d.end()), exact, 1e-12 * (1.0 + exact));
+    for (std::size_t k = 0; k < curve.size(); ++k)
+      EXPECT_LE(test::directed_to_polyline({curve[k]}, other), d[piece_of[k]] * (1.0 + 1e-12));
+  }
+}
+
 }  // namespace
 }  // namespace gf
