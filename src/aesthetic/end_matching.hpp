@@ -39,11 +39,18 @@ inline Vec2 direction_integral(const Polynomial& theta, const Polynomial& speed,
   return {sum.real(), sum.imag()};
 }
 
-/// p′ keeps one sign on (0, 1): p never turns back there (a curvature profile that is monotone,
-/// an arc length that runs one way).
+/// p never turns back on [0, 1] (a curvature profile that is monotone, an arc length that runs
+/// one way): its total variation there is |p(1) − p(0)|. A turn of p′ that moves p by less than
+/// 1e-9 of p's size is rounding (a p′ = 0 end comes out as ±1e-21).
 inline bool never_turns_back(const Polynomial& p) {
   const Polynomial slope = p.derivative();
-  return sign_changes_in_unit_interval(slope, 1e-12 * slope.magnitude()).empty();
+  double variation = 0.0, last = p(0.0);
+  for (const SignChange& turn : sign_changes_in_unit_interval(slope, 1e-12 * slope.magnitude())) {
+    variation += std::abs(p(turn.t) - last);
+    last = p(turn.t);
+  }
+  variation += std::abs(p(1.0) - last);
+  return variation - std::abs(p(1.0) - p(0.0)) <= 1e-9 * p.magnitude();
 }
 
 /// The end data moved to start at the origin with a chord of 1 along +x: κ scales by the chord

@@ -52,18 +52,7 @@ std::vector<LacPoint> PolynomialSpiral::sample(int n) const {
   return out;
 }
 
-// Monotone when κ's total variation over (0, 1) is |κ(1) − κ(0)|: a turn of κ′ that moves κ by
-// less than 1e-9 of its size is rounding (a κ′ = 0 end comes out as ±1e-21).
-bool PolynomialSpiral::curvature_monotone() const {
-  const Polynomial slope = kappa_.derivative();
-  double variation = 0.0, last = kappa_(0.0);
-  for (const SignChange& turn : sign_changes_in_unit_interval(slope, 1e-12 * slope.magnitude())) {
-    variation += std::abs(kappa_(turn.t) - last);
-    last = kappa_(turn.t);
-  }
-  variation += std::abs(kappa_(1.0) - last);
-  return variation - std::abs(kappa_(1.0) - kappa_(0.0)) <= 1e-9 * kappa_.magnitude();
-}
+bool PolynomialSpiral::curvature_monotone() const { return never_turns_back(kappa_); }
 
 SpiralFit fit_polynomial_spiral(const CurvatureEnd& start, const CurvatureEnd& end) {
   SpiralFit fit;
