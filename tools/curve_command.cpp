@@ -14,6 +14,7 @@
 #include "io/input_error.hpp"
 #include "io/number_format.hpp"
 #include "io/text_list.hpp"
+#include "lac_point_json.hpp"
 
 namespace gf {
 
@@ -36,10 +37,7 @@ Vec2 parse_point(const std::string& text) {
 }
 
 json point_json(const LacPoint& p, std::optional<double> s = std::nullopt) {
-  json j{{"point", {p.point.x, p.point.y}},
-         {"tangent_angle", std::atan2(p.tangent.y, p.tangent.x)},
-         {"curvature", p.curvature},
-         {"dcurvature_ds", p.curvature_derivative ? json(*p.curvature_derivative) : json(nullptr)}};
+  json j = lac_point_json(p);
   if (s) j["s"] = *s;
   return j;
 }

@@ -1,6 +1,6 @@
 // glyphfair fair SRC [selection] -o OUT.ufo|.svg|.json [--continuity g1|g2|g3] [--tolerance UNITS]
 //                [--profile text|handwriting] [--corner-angle DEG] [--no-round] [--proof FILE.pdf]
-//                [--jobs N]
+//                [--segments FILE.json] [--jobs N]
 #include <algorithm>
 #include <filesystem>
 #include <iostream>

@@ -1,23 +1,11 @@
 #include "faired_segments_output.hpp"
 
-#include <cmath>
-
 #include "io/atomic_output.hpp"
+#include "lac_point_json.hpp"
 
 namespace gf {
 
-namespace {
-
 using json = nlohmann::ordered_json;
-
-json frame_json(const LacPoint& p) {
-  return {{"point", {p.point.x, p.point.y}},
-          {"tangent_angle", std::atan2(p.tangent.y, p.tangent.x)},
-          {"curvature", p.curvature},
-          {"dcurvature_ds", p.curvature_derivative ? json(*p.curvature_derivative) : json(nullptr)}};
-}
-
-}  // namespace
 
 FairedSegmentsOutput::FairedSegmentsOutput(std::string source, const FairSettings& settings, double units_per_em) {
   document_["format"] = "glyphfair-faired-segments";
@@ -37,8 +25,8 @@ void FairedSegmentsOutput::add(const GlyphFairing& glyph) {
     for (const FairedPiece& p : pieces) {
       json j{{"kind", to_string(p.kind)}, {"length", p.length}, {"smooth_start", p.smooth_start}};
       if (p.alpha) j["alpha"] = *p.alpha;
-      j["start"] = frame_json(p.start);
-      j["end"] = frame_json(p.end);
+      j["start"] = lac_point_json(p.start);
+      j["end"] = lac_point_json(p.end);
       list.push_back(std::move(j));
     }
     const bool closed = i < glyph.glyph.outline.contours.size() && glyph.glyph.outline.contours[i].closed;
