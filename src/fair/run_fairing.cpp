@@ -440,7 +440,10 @@ void reexpress_as_g3(FairedRun& result, const RunReference& source, const Smooth
     pieces.resize(problem->log_aesthetic_segment.back() + 1, 1);
     G3Result g3 = make_g3(problem->nodes, problem->lengths, problem->closed);
     int g2_line_joins = 0;
-    if (!g3.ok())  // no room on a line for G3 there, perhaps: G2 at the line joins, G3 elsewhere
+    // No room on a line for G3 there, perhaps: G2 at the line joins, G3 elsewhere. Every round
+    // tries G3 at the lines first again: after a cut the run may find the room (on DejaVu Sans
+    // a–z A–Z, holding them from the first failure on leaves 12 line joins G2, not 5).
+    if (!g3.ok())
       for (G3Node& n : problem->nodes)
         if (n.kind == G3NodeKind::line) n.kind = G3NodeKind::line_g2, ++g2_line_joins;
     if (!g3.ok() && g2_line_joins > 0) g3 = make_g3(problem->nodes, problem->lengths, problem->closed);
