@@ -85,7 +85,10 @@ struct Attempt {
   FairedPieces pieces;
 };
 
-LacPoint line_frame(Vec2 at, Vec2 direction) { return {at, direction / norm(direction), 0.0, 0.0}; }
+FairedPiece line_piece(Vec2 a, Vec2 b, bool smooth_start) {
+  const Vec2 t = (b - a) / distance(a, b);
+  return {FairedPieceKind::line, distance(a, b), {a, t, 0.0, 0.0}, {b, t, 0.0, 0.0}, std::nullopt, smooth_start};
+}
 
 // The chain's pieces for export, the first one's join as `smooth_start` says.
 void record_chain(const FairedChain& chain, bool smooth_start, FairedPieces& out) {
@@ -142,8 +145,7 @@ Attempt fair_with_budgets(const ContourPlan& plan, const FairSettings& settings,
       if (i + 1 < count || wraps)
         if (const FairedRun* after = g3_run_at((i + 1) % count)) end.point = faired_start(*after);
       start.smooth = previous_ends_smooth;
-      a.pieces.push_back({FairedPieceKind::line, distance(start.point, end.point), line_frame(start.point, end.point - start.point),
-                          line_frame(end.point, end.point - start.point), std::nullopt, previous_ends_smooth});
+      a.pieces.push_back(line_piece(start.point, end.point, previous_ends_smooth));
       assembler.append({start, end}, previous_ends_smooth);
       previous_ends_smooth = false;
       continue;
@@ -222,11 +224,8 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& settings)
                                      [](const auto& p) { return std::holds_alternative<SmoothRun>(p); });
   if (!has_curve) {
     out.faired = true;  // lines only: already as fair as it gets
-    for (const auto& piece : plan.pieces) {
-      const Line& l = std::get<Line>(piece);
-      const Vec2 d = l.end() - l.start();
-      out.pieces.push_back({FairedPieceKind::line, norm(d), line_frame(l.start(), d), line_frame(l.end(), d), std::nullopt, false});
-    }
+    for (const auto& piece : plan.pieces)
+      out.pieces.push_back(line_piece(std::get<Line>(piece).start(), std::get<Line>(piece).end(), false));
     return out;
   }
   const SampledContour sampled_source(source);
