@@ -100,8 +100,7 @@ void record_chain(const FairedChain& chain, bool smooth_start, FairedPieces& out
   if (chain.guide) {
     const GuideStretch& g = *chain.guide;
     const RunReference& ref = *g.guide;
-    const auto frame = [&](double s) { return LacPoint{ref.point_at(s), ref.tangent_at(s), ref.curvature_at(s), std::nullopt}; };
-    LacPoint a = chain.closed ? frame(g.s0) : g.start, b = chain.closed ? frame(g.s1) : g.end;
+    LacPoint a = chain.closed ? ref.frame_at(g.s0) : g.start, b = chain.closed ? ref.frame_at(g.s1) : g.end;
     a.curvature_derivative = b.curvature_derivative = std::nullopt;
     out.push_back({FairedPieceKind::guide, g.s1 - g.s0, a, b, std::nullopt, true});
   }

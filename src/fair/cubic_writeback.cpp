@@ -60,7 +60,7 @@ std::vector<PathPiece> guide_pieces(const GuideStretch& g, bool whole_loop) {
   const auto frame = [&ref, &g, length, whole_loop](double s) {
     if (!whole_loop && s <= 0.0) return g.start;
     if (!whole_loop && s >= length) return g.end;
-    return LacPoint{ref.point_at(g.s0 + s), ref.tangent_at(g.s0 + s), ref.curvature_at(g.s0 + s), 0.0};
+    return ref.frame_at(g.s0 + s);
   };
   std::vector<double> cuts{0.0};
   const int steps = std::max(8, static_cast<int>(std::ceil(length)));

@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "aesthetic/log_aesthetic_segment.hpp"
 #include "fair/contour_plan.hpp"
 
 namespace gf {
@@ -36,6 +37,8 @@ class RunReference {
   Vec2 tangent_at(double s) const;
   /// The exact curvature of the source cubic at s (0 where a retracted handle leaves it unbounded).
   double curvature_at(double s) const;
+  /// Point, tangent and κ at s as a curve point (the source's dκ/ds is not reported: nullopt).
+  LacPoint frame_at(double s) const { return {point_at(s), tangent_at(s), curvature_at(s), std::nullopt}; }
   /// θ at s, continued across the seam of a closed run (θ(s + L) = θ(s) + total turning).
   double theta_at(double s) const;
   /// The mean curvature over [s − w/2, s + w/2]: (θ(s + w/2) − θ(s − w/2)) / w, the window
