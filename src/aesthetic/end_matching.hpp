@@ -13,6 +13,7 @@
 #include <boost/math/quadrature/gauss.hpp>
 
 #include "aesthetic/clothoid_g1.hpp"
+#include "geom/damped_newton.hpp"
 #include "geom/polynomial.hpp"
 #include "geom/vec2.hpp"
 
@@ -91,49 +92,32 @@ struct EndMatch {
 };
 
 /// Newton on F(p) = 0, F: R³ → R³ (an end's angle and position misses), from `p`: a
-/// finite-difference Jacobian, backtracking on ‖F‖₂, iterates kept where `admissible`, done at
-/// max |F| < 1e-12 (§7.1's recipe).
+/// finite-difference Jacobian, iterates kept where `admissible`, done at max |F| ≤ 1e-12
+/// (geom/damped_newton.hpp; §7.1's recipe).
 template <typename Residual, typename Admissible>
 EndMatch match_end(Residual residual, Eigen::Vector3d p, Admissible admissible) {
-  using Params = Eigen::Vector3d;
-  constexpr double tolerance = 1e-12;
-  constexpr int max_iterations = 60;
-  EndMatch m;
-  Params f = residual(p);
-  for (;; ++m.iterations) {
-    m.residual = f.cwiseAbs().maxCoeff();
-    if (!std::isfinite(m.residual)) {
-      m.reason = "the Newton iteration left the finite numbers";
-      return m;
-    }
-    if (m.residual < tolerance) {
-      m.parameters = p;
-      return m;
-    }
-    if (m.iterations == max_iterations) {
-      m.reason = "the Newton iteration did not reach 1e-12 in 60 steps (residual " + std::to_string(m.residual) + ")";
-      return m;
-    }
-    Eigen::Matrix3d jacobian;
+  const auto jacobian = [&](const Eigen::Vector3d& at, const Eigen::Vector3d& f) {
+    Eigen::Matrix3d j;
     for (int c = 0; c < 3; ++c) {
-      Params q = p;
-      const double h = 1e-7 * std::max(1.0, std::abs(p[c]));
+      Eigen::Vector3d q = at;
+      const double h = 1e-7 * std::max(1.0, std::abs(at[c]));
       q[c] += h;
-      jacobian.col(c) = (residual(q) - f) / h;
+      j.col(c) = (residual(q) - f) / h;
     }
-    const Params step = jacobian.fullPivLu().solve(-f);
-    bool moved = false;
-    for (double damping = 1.0; damping > 1e-6 && !moved; damping *= 0.5) {
-      const Params q = p + damping * step;
-      if (!admissible(q)) continue;
-      const Params fq = residual(q);
-      if (fq.allFinite() && fq.norm() < f.norm()) p = q, f = fq, moved = true;
-    }
-    if (!moved) {
-      m.reason = "the Newton iteration stalled (residual " + std::to_string(m.residual) + ")";
-      return m;
-    }
+    return j;
+  };
+  const NewtonRun run = damped_newton(p, residual, jacobian, admissible, 1e-12, 60);
+  EndMatch m;
+  m.iterations = run.iterations, m.residual = run.residual;
+  switch (run.end) {
+    case NewtonEnd::converged: m.parameters = p; break;
+    case NewtonEnd::not_finite: m.reason = "the Newton iteration left the finite numbers"; break;
+    case NewtonEnd::out_of_iterations:
+      m.reason = "the Newton iteration did not reach 1e-12 in 60 steps (residual " + std::to_string(m.residual) + ")";
+      break;
+    case NewtonEnd::stalled: m.reason = "the Newton iteration stalled (residual " + std::to_string(m.residual) + ")"; break;
   }
+  return m;
 }
 
 }  // namespace gf

@@ -6,6 +6,8 @@
 
 #include <Eigen/Dense>
 
+#include "geom/damped_newton.hpp"
+
 namespace gf {
 
 namespace {
@@ -49,23 +51,24 @@ class G3System {
   }
 
   std::size_t segments() const { return m_; }
-  std::size_t unknowns() const { return x0_.size(); }
-  const std::vector<double>& start() const { return x0_; }
+  Eigen::VectorXd start() const {
+    return Eigen::Map<const Eigen::VectorXd>(x0_.data(), static_cast<Eigen::Index>(x0_.size()));
+  }
 
-  Vec2 point(const std::vector<double>& x, std::size_t j) const {
+  Vec2 point(const Eigen::VectorXd& x, std::size_t j) const {
     return slide_[j] < 0 ? nodes_[j].point : nodes_[j].point + slide_direction_[j] * (x[at(slide_[j])] * h_);
   }
-  double angle(const std::vector<double>& x, std::size_t j) const {
+  double angle(const Eigen::VectorXd& x, std::size_t j) const {
     return theta_[j] < 0 ? nodes_[j].tangent_angle : x[at(theta_[j])];
   }
-  double curvature(const std::vector<double>& x, std::size_t j) const {
+  double curvature(const Eigen::VectorXd& x, std::size_t j) const {
     if (kappa_[j] >= 0) return x[at(kappa_[j])] / h_;
     return nodes_[j].kind == G3NodeKind::corner || nodes_[j].kind == G3NodeKind::smooth ? nodes_[j].curvature : 0.0;
   }
-  double length(const std::vector<double>& x, std::size_t i) const { return x[at(length_[i])] * h_; }
+  double length(const Eigen::VectorXd& x, std::size_t i) const { return x[at(length_[i])] * h_; }
 
   /// κ′ at node j: Fritsch–Butland over the neighbouring secants; the end secant at a corner.
-  double slope(const std::vector<double>& x, std::size_t j) const {
+  double slope(const Eigen::VectorXd& x, std::size_t j) const {
     const G3NodeKind kind = nodes_[j].kind;
     if (kind == G3NodeKind::line) return 0.0;
     if (kind == G3NodeKind::corner || kind == G3NodeKind::line_g2) return secant(x, j == 0 ? 0 : m_ - 1);
@@ -73,17 +76,17 @@ class G3System {
     return a * b > 0.0 ? 2.0 * a * b / (a + b) : 0.0;
   }
 
-  CurvatureEnd end_data(const std::vector<double>& x, std::size_t j) const {
+  CurvatureEnd end_data(const Eigen::VectorXd& x, std::size_t j) const {
     return {point(x, j), angle(x, j), curvature(x, j), slope(x, j)};
   }
 
-  PolynomialSpiral spiral(const std::vector<double>& x, std::size_t i) const {
+  PolynomialSpiral spiral(const Eigen::VectorXd& x, std::size_t i) const {
     const std::size_t k = next(i);
     return PolynomialSpiral(end_data(x, i), length(x, i), curvature(x, k), slope(x, k), 0.0, 0.0);
   }
 
   /// How far segment i's far end misses node i + 1: point over the chord, then the angle.
-  Eigen::Vector3d miss(const std::vector<double>& x, std::size_t i) const {
+  Eigen::Vector3d miss(const Eigen::VectorXd& x, std::size_t i) const {
     const std::size_t k = next(i);
     const PolynomialSpiral s = spiral(x, i);
     const Vec2 d = (s.end().point - point(x, k)) / chord_[i];
@@ -91,7 +94,8 @@ class G3System {
   }
 
   /// The segments whose miss unknown u moves (κ′ reaches two secants away).
-  std::vector<std::size_t> touched_by(std::size_t u) const {
+  std::vector<std::size_t> touched_by(Eigen::Index unknown) const {
+    const auto u = static_cast<std::size_t>(unknown);
     const int n = static_cast<int>(m_);
     const int centre = owner_segment_[u] >= 0 ? owner_segment_[u] : static_cast<int>(owner_node_[u]);
     const int lo = owner_segment_[u] >= 0 ? centre - 1 : centre - 2, hi = centre + 1;
@@ -107,7 +111,7 @@ class G3System {
 
   /// Every length positive, and no line end slid past its room into the line (behind the
   /// start, ahead of the end).
-  bool feasible(const std::vector<double>& x) const {
+  bool feasible(const Eigen::VectorXd& x) const {
     for (std::size_t i = 0; i < m_; ++i)
       if (!(length(x, i) > 0.0)) return false;
     for (std::size_t j = 0; j < nodes_.size(); ++j) {
@@ -115,13 +119,13 @@ class G3System {
       const double into_line = x[at(slide_[j])] * h_ * (j == 0 ? -1.0 : 1.0);
       if (into_line > nodes_[j].slide_room) return false;
     }
-    return std::all_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); });
+    return x.allFinite();
   }
 
  private:
-  static std::size_t at(int index) { return static_cast<std::size_t>(index); }
+  static Eigen::Index at(int index) { return index; }
   std::size_t next(std::size_t i) const { return closed_ ? (i + 1) % m_ : i + 1; }
-  double secant(const std::vector<double>& x, std::size_t i) const {
+  double secant(const Eigen::VectorXd& x, std::size_t i) const {
     return (curvature(x, next(i)) - curvature(x, i)) / length(x, i);
   }
 
@@ -137,7 +141,7 @@ class G3System {
   std::vector<double> chord_;
 };
 
-Eigen::VectorXd misses(const G3System& sys, const std::vector<double>& x) {
+Eigen::VectorXd misses(const G3System& sys, const Eigen::VectorXd& x) {
   Eigen::VectorXd f(static_cast<Eigen::Index>(3 * sys.segments()));
   for (std::size_t i = 0; i < sys.segments(); ++i) f.segment<3>(static_cast<Eigen::Index>(3 * i)) = sys.miss(x, i);
   return f;
@@ -153,32 +157,25 @@ G3Result make_g3(std::span<const G3Node> nodes, std::span<const double> lengths,
     return out;
   }
   const G3System sys(nodes, lengths, closed);
-  std::vector<double> x = sys.start();
-  Eigen::VectorXd f = misses(sys, x);
-  const auto n = static_cast<Eigen::Index>(sys.unknowns());
-  for (; out.iterations < max_iterations && f.lpNorm<Eigen::Infinity>() > converged; ++out.iterations) {
-    Eigen::MatrixXd jac = Eigen::MatrixXd::Zero(f.size(), n);
-    for (std::size_t u = 0; u < sys.unknowns(); ++u) {
-      std::vector<double> xu = x;
-      xu[u] += fd_step;
+  // The Jacobian by forward differences, each column only on the segments its unknown moves.
+  const auto jacobian = [&](const Eigen::VectorXd& at, const Eigen::VectorXd& f) {
+    Eigen::MatrixXd jac = Eigen::MatrixXd::Zero(f.size(), at.size());
+    for (Eigen::Index u = 0; u < at.size(); ++u) {
+      Eigen::VectorXd moved = at;
+      moved[u] += fd_step;
       for (const std::size_t i : sys.touched_by(u)) {
         const auto row = static_cast<Eigen::Index>(3 * i);
-        jac.block<3, 1>(row, static_cast<Eigen::Index>(u)) = (sys.miss(xu, i) - f.segment<3>(row)) / fd_step;
+        jac.block<3, 1>(row, u) = (sys.miss(moved, i) - f.segment<3>(row)) / fd_step;
       }
     }
-    const Eigen::VectorXd step = jac.colPivHouseholderQr().solve(-f);
-    bool stepped = false;
-    for (double t = 1.0; t > 1e-6 && !stepped; t *= 0.5) {
-      std::vector<double> trial = x;
-      for (std::size_t u = 0; u < trial.size(); ++u) trial[u] += t * step[static_cast<Eigen::Index>(u)];
-      if (!sys.feasible(trial)) continue;
-      const Eigen::VectorXd ft = misses(sys, trial);
-      if (ft.allFinite() && ft.norm() < f.norm()) x = std::move(trial), f = ft, stepped = true;
-    }
-    if (!stepped) break;
-  }
-  out.residual = f.lpNorm<Eigen::Infinity>();
-  if (!(out.residual <= converged)) {
+    return jac;
+  };
+  Eigen::VectorXd x = sys.start();
+  const NewtonRun run = damped_newton(
+      x, [&](const Eigen::VectorXd& v) { return misses(sys, v); }, jacobian,
+      [&](const Eigen::VectorXd& v) { return sys.feasible(v); }, converged, max_iterations);
+  out.iterations = run.iterations, out.residual = run.residual;
+  if (run.end != NewtonEnd::converged) {
     out.reason = "the G3 solve stalled " + std::to_string(out.residual) + " from meeting its junctions after " +
                  std::to_string(out.iterations) + " iterations";
     return out;

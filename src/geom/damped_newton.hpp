@@ -1,0 +1,59 @@
+// Newton's method with backtracking, for the small nonlinear systems the fairing solves (a G3
+// segment meeting its far end, a run's G3 junctions): each step is the least-squares solution
+// of J·δ = −F (column-pivoted QR, so a rank-deficient J still gives a step), halved until ‖F‖₂
+// falls at an admissible point (lac-math.md §7.1's recipe).
+#pragma once
+
+#include <cmath>
+#include <utility>
+
+#include <Eigen/Dense>
+
+namespace gf {
+
+enum class NewtonEnd { converged, stalled, out_of_iterations, not_finite };
+
+struct NewtonRun {
+  NewtonEnd end = NewtonEnd::stalled;
+  int iterations = 0;
+  double residual = 0.0;  ///< max |F| at the point reached
+};
+
+/// From x until max |F(x)| ≤ tolerance; x is left at the last point reached. `jacobian(x, f)`
+/// gives J at x, f being F(x); `admissible(x)` keeps iterates inside the problem's domain; a
+/// step is halved at most 20 times.
+template <class Vector, class Residual, class Jacobian, class Admissible>
+NewtonRun damped_newton(Vector& x, Residual residual, Jacobian jacobian, Admissible admissible, double tolerance,
+                        int max_iterations) {
+  NewtonRun run;
+  auto f = residual(x);
+  for (;; ++run.iterations) {
+    run.residual = f.cwiseAbs().maxCoeff();
+    if (!std::isfinite(run.residual)) {
+      run.end = NewtonEnd::not_finite;
+      return run;
+    }
+    if (run.residual <= tolerance) {
+      run.end = NewtonEnd::converged;
+      return run;
+    }
+    if (run.iterations == max_iterations) {
+      run.end = NewtonEnd::out_of_iterations;
+      return run;
+    }
+    const Vector step = jacobian(x, f).colPivHouseholderQr().solve(-f);
+    bool moved = false;
+    for (double damping = 1.0; damping > 1e-6 && !moved; damping *= 0.5) {
+      Vector q = x + damping * step;
+      if (!admissible(q)) continue;
+      auto fq = residual(q);
+      if (fq.allFinite() && fq.norm() < f.norm()) x = std::move(q), f = std::move(fq), moved = true;
+    }
+    if (!moved) {
+      run.end = NewtonEnd::stalled;
+      return run;
+    }
+  }
+}
+
+}  // namespace gf
