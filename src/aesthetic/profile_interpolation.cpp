@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "aesthetic/clothoid_g1.hpp"
+#include "geom/damped_newton.hpp"
 
 namespace gf {
 
@@ -32,18 +33,25 @@ std::vector<ClothoidArc> span_clothoids(std::span<const InterpolationPoint> poin
 }
 
 // The chosen tangents, moved so that the G1 clothoids of the spans come nearest the given
-// curvatures at their ends (Gauss–Newton, least squares over κ·chord): a span whose clothoid
-// already bends as asked leaves its profile little to do.
+// curvatures at their ends (Gauss–Newton, least squares over κ·chord, geom/damped_newton.hpp):
+// a span whose clothoid already bends as asked leaves its profile little to do. Where the
+// least squares stall, the tangents stay where they got to.
 void settle_tangents(std::span<const InterpolationPoint> points, std::vector<double>& theta) {
   const std::size_t n = points.size();
   std::vector<std::size_t> free;
   for (std::size_t i = 0; i < n; ++i)
     if (!points[i].tangent_angle) free.push_back(i);
   if (free.empty()) return;
-  const auto residuals = [&](const std::vector<double>& th) -> std::optional<Eigen::VectorXd> {
-    const std::vector<ClothoidArc> arcs = span_clothoids(points, th);
-    if (arcs.size() + 1 < n) return std::nullopt;
-    Eigen::VectorXd r(static_cast<Eigen::Index>(2 * (n - 1)));
+  const auto with = [&](const Eigen::VectorXd& x) {
+    std::vector<double> th = theta;
+    for (std::size_t j = 0; j < free.size(); ++j) th[free[j]] = x[static_cast<Eigen::Index>(j)];
+    return th;
+  };
+  // Infinite where a span has no clothoid: the step is shortened past it.
+  const auto residuals = [&](const Eigen::VectorXd& x) {
+    const std::vector<ClothoidArc> arcs = span_clothoids(points, with(x));
+    Eigen::VectorXd r = Eigen::VectorXd::Constant(static_cast<Eigen::Index>(2 * (n - 1)), HUGE_VAL);
+    if (arcs.size() + 1 < n) return r;
     for (std::size_t i = 0; i + 1 < n; ++i) {
       const double chord = distance(points[i].point, points[i + 1].point);
       const ClothoidArc& a = arcs[i];
@@ -52,26 +60,19 @@ void settle_tangents(std::span<const InterpolationPoint> points, std::vector<dou
     }
     return r;
   };
-  std::optional<Eigen::VectorXd> r = residuals(theta);
-  for (int it = 0; it < 30 && r && r->norm() > 1e-12; ++it) {
-    Eigen::MatrixXd J(r->size(), static_cast<Eigen::Index>(free.size()));
-    for (std::size_t j = 0; j < free.size(); ++j) {
-      std::vector<double> th = theta;
-      th[free[j]] += 1e-7;
-      const std::optional<Eigen::VectorXd> rh = residuals(th);
-      if (!rh) return;
-      J.col(static_cast<Eigen::Index>(j)) = (*rh - *r) / 1e-7;
+  const auto jacobian = [&](const Eigen::VectorXd& x, const Eigen::VectorXd& r) {
+    Eigen::MatrixXd J(r.size(), x.size());
+    for (Eigen::Index j = 0; j < x.size(); ++j) {
+      Eigen::VectorXd moved = x;
+      moved[j] += 1e-7;
+      J.col(j) = (residuals(moved) - r) / 1e-7;
     }
-    const Eigen::VectorXd step = J.colPivHouseholderQr().solve(-*r);
-    bool stepped = false;
-    for (double t = 1.0; t > 1e-3 && !stepped; t *= 0.5) {
-      std::vector<double> th = theta;
-      for (std::size_t j = 0; j < free.size(); ++j) th[free[j]] += t * step[static_cast<Eigen::Index>(j)];
-      const std::optional<Eigen::VectorXd> rt = residuals(th);
-      if (rt && rt->norm() < r->norm()) theta = th, r = rt, stepped = true;
-    }
-    if (!stepped) return;
-  }
+    return J;
+  };
+  Eigen::VectorXd x(static_cast<Eigen::Index>(free.size()));
+  for (std::size_t j = 0; j < free.size(); ++j) x[static_cast<Eigen::Index>(j)] = theta[free[j]];
+  damped_newton(x, residuals, jacobian, [](const Eigen::VectorXd&) { return true; }, 1e-12, 30);
+  theta = with(x);
 }
 
 }  // namespace
