@@ -1,7 +1,6 @@
 #include "fair/initial_tangents.hpp"
 
 #include <cmath>
-#include <numbers>
 
 #include <Eigen/Dense>
 
@@ -12,7 +11,7 @@ namespace {
 constexpr double bisector_weight = 0.01;  // only decides where the balance alone does not (an even closed chain)
 
 double near(double angle, double reference) {
-  return reference + std::remainder(angle - reference, 2 * std::numbers::pi);
+  return reference + wrapped_angle(angle - reference);
 }
 
 }  // namespace

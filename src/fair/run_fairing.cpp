@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
-#include <numbers>
 #include <span>
 
 #include "aesthetic/lcg_slope.hpp"
@@ -120,8 +119,7 @@ struct ChordAngles {
 ChordAngles chord_angles(const LacChain& chain, std::size_t i) {
   const std::size_t j = (i + 1) % chain.points.size();
   const double c = angle_of(chain.points[j] - chain.points[i]);
-  return {c, std::remainder(chain.tangent_angles[i] - c, 2 * std::numbers::pi),
-          std::remainder(chain.tangent_angles[j] - c, 2 * std::numbers::pi)};
+  return {c, wrapped_angle(chain.tangent_angles[i] - c), wrapped_angle(chain.tangent_angles[j] - c)};
 }
 
 /// The arc length at the end of the span's segment i.
