@@ -134,14 +134,19 @@ ProfileSpline interpolate_curvature_profiles(std::span<const InterpolationPoint>
     }
     out.ends.push_back({points[i].point, theta[i], points[i].curvature, slope});
   }
-  std::vector<CurvatureProfileSegment> segments;
+  std::vector<InterpolationSpan> segments;
   for (std::size_t i = 0; i + 1 < n; ++i) {
-    ProfileFit fit = fit_curvature_profile(out.ends[i], out.ends[i + 1]);
-    if (!fit.ok()) {
-      out.reason = "span " + std::to_string(i) + ": " + fit.reason;
+    ProfileFit profile = fit_curvature_profile(out.ends[i], out.ends[i + 1]);
+    if (profile.ok()) {
+      segments.emplace_back(std::move(*profile.segment));
+      continue;
+    }
+    SpiralFit spiral = fit_polynomial_spiral(out.ends[i], out.ends[i + 1]);
+    if (!spiral.ok()) {
+      out.reason = "span " + std::to_string(i) + ": " + profile.reason + "; " + spiral.reason;
       return out;
     }
-    segments.push_back(std::move(*fit.segment));
+    segments.emplace_back(std::move(*spiral.spiral));
   }
   out.segments = std::move(segments);
   return out;
