@@ -54,9 +54,13 @@ class CurveCommand : public Command {
   int run() const;
 
  private:
+  std::string segment() const;        ///< --points: the log-aesthetic segment, as text
+  std::string interpolation() const;  ///< --through: the G3 interpolating curve, as text
+
   std::optional<double> alpha_;
   std::vector<std::string> points_;
   bool inflection_start_ = false;
+  std::vector<std::string> through_, curvatures_, slopes_, angles_;
   int samples_ = 64;
   std::string format_ = "json";
   std::string output_;

@@ -1,14 +1,18 @@
-// glyphfair curve --alpha A --points x0,y0 x1,y1 x2,y2 [--inflection-start] [--samples N]
-//                 [--format json|svg] [-o FILE]: one log-aesthetic segment, for scripting and
-// for seeing it.
+// glyphfair curve --alpha A --points x0,y0 x1,y1 x2,y2 [--inflection-start]
+//                 | --through x,y... --curvatures K... [--slopes K'...] [--angles DEG...]
+//                 [--samples N] [--format json|svg] [-o FILE]
+// One log-aesthetic segment from its control triangle, or the G3 curve through points with
+// their curvature (seed 004 §6), for scripting and for seeing it.
 #include <cmath>
 #include <iostream>
-#include <sstream>
+#include <numbers>
 
 #include <nlohmann/json.hpp>
 
+#include "aesthetic/profile_interpolation.hpp"
 #include "aesthetic/segment_fit.hpp"
 #include "commands.hpp"
+#include "curve_svg.hpp"
 #include "exit_codes.hpp"
 #include "io/atomic_output.hpp"
 #include "io/input_error.hpp"
@@ -22,18 +26,40 @@ namespace {
 
 using json = nlohmann::ordered_json;  // fields in the documented order
 
-Vec2 parse_point(const std::string& text) {
+// A finite number, all of `text`.
+std::optional<double> parse_number(const std::string& text) {
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !std::isfinite(v)) return std::nullopt;
+  return v;
+}
+
+Vec2 parse_point(const std::string& text, const char* option) {
   const auto parts = split_trimmed(text);
-  if (parts.size() != 2) throw InputError("--points: '" + text + "' is not x,y");
-  Vec2 p;
-  double* out[] = {&p.x, &p.y};
-  for (std::size_t i = 0; i < 2; ++i) {
-    const std::string s(parts[i]);
-    char* end = nullptr;
-    *out[i] = std::strtod(s.c_str(), &end);
-    if (s.empty() || *end != '\0' || !std::isfinite(*out[i])) throw InputError("--points: '" + text + "' is not x,y");
+  const auto x = parts.size() == 2 ? parse_number(std::string(parts[0])) : std::nullopt;
+  const auto y = parts.size() == 2 ? parse_number(std::string(parts[1])) : std::nullopt;
+  if (!x || !y) throw InputError(std::string(option) + ": '" + text + "' is not x,y");
+  return {*x, *y};
+}
+
+// One value per point, or none given; `auto` leaves that point's value to be chosen.
+std::vector<std::optional<double>> parse_per_point(const std::vector<std::string>& texts, std::size_t points,
+                                                   const char* option, bool allow_auto) {
+  if (texts.empty()) return std::vector<std::optional<double>>(points);
+  if (texts.size() != points)
+    throw InputError(std::string(option) + ": " + std::to_string(texts.size()) + " values for " + std::to_string(points) +
+                     " points");
+  std::vector<std::optional<double>> out;
+  for (const std::string& t : texts) {
+    if (allow_auto && t == "auto") {
+      out.push_back(std::nullopt);
+      continue;
+    }
+    const auto v = parse_number(t);
+    if (!v) throw InputError(std::string(option) + ": '" + t + "' is not a number" + (allow_auto ? " or auto" : ""));
+    out.push_back(v);
   }
-  return p;
+  return out;
 }
 
 json point_json(const LacPoint& p, std::optional<double> s = std::nullopt) {
@@ -62,74 +88,102 @@ std::string curve_json(const SegmentFit& fit, double alpha, int samples) {
   return j.dump(1) + "\n";
 }
 
-// The segment with its control triangle and curvature comb, y up, fitted to a 600-unit box.
-std::string curve_svg(const LogAestheticSegment& s, const Vec2 control[3], int samples) {
-  const auto pts = s.sample(samples);
-  double max_k = 0.0;
-  for (const auto& p : pts) max_k = std::max(max_k, std::abs(p.curvature));
-  double lo_x = 1e300, lo_y = 1e300, hi_x = -1e300, hi_y = -1e300;
-  const auto grow = [&](Vec2 v) {
-    lo_x = std::min(lo_x, v.x), lo_y = std::min(lo_y, v.y), hi_x = std::max(hi_x, v.x), hi_y = std::max(hi_y, v.y);
-  };
-  for (int i = 0; i < 3; ++i) grow(control[i]);
-  const double size = std::max(hi_x - lo_x, hi_y - lo_y);
-  const double gain = max_k > 0.0 ? 0.15 * size / max_k : 0.0;
-  std::vector<Vec2> tips;
-  for (const auto& p : pts) {
-    tips.push_back(p.point - perpendicular(p.tangent) * (gain * p.curvature));
-    grow(tips.back());
+std::string spline_json(const ProfileSpline& spline, int samples_per_span) {
+  json j;
+  if (!spline.ok()) {
+    j = {{"status", "no-solution"}, {"reason", spline.reason}};
+    return j.dump(1) + "\n";
   }
-  const double margin = 0.05 * size;
-  std::ostringstream o;
-  const auto xy = [&](Vec2 v) { return shortest_decimal(v.x) + "," + shortest_decimal(v.y); };
-  o << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" << shortest_decimal(lo_x - margin) << " "
-    << shortest_decimal(-hi_y - margin) << " " << shortest_decimal(hi_x - lo_x + 2 * margin) << " "
-    << shortest_decimal(hi_y - lo_y + 2 * margin) << "\" width=\"600\" height=\""
-    << static_cast<int>(600 * (hi_y - lo_y + 2 * margin) / (hi_x - lo_x + 2 * margin)) << "\">\n"
-    << "<g transform=\"scale(1 -1)\" fill=\"none\" stroke-width=\"" << shortest_decimal(size / 400) << "\">\n";
-  o << "<polyline stroke=\"#999\" stroke-dasharray=\"" << shortest_decimal(size / 100) << "\" points=\""
-    << xy(control[0]) << " " << xy(control[1]) << " " << xy(control[2]) << "\"/>\n";
-  for (std::size_t k = 0; k < pts.size(); ++k)
-    o << "<line stroke=\"#2a6bd1\" stroke-opacity=\"0.6\" x1=\"" << shortest_decimal(pts[k].point.x) << "\" y1=\""
-      << shortest_decimal(pts[k].point.y) << "\" x2=\"" << shortest_decimal(tips[k].x) << "\" y2=\""
-      << shortest_decimal(tips[k].y) << "\"/>\n";
-  o << "<polyline stroke=\"#2a6bd1\" points=\"";
-  for (const Vec2 t : tips) o << xy(t) << " ";
-  o << "\"/>\n<polyline stroke=\"#111\" stroke-width=\"" << shortest_decimal(size / 200) << "\" points=\"";
-  for (const auto& p : pts) o << xy(p.point) << " ";
-  o << "\"/>\n</g>\n</svg>\n";
-  return o.str();
+  j["status"] = "ok";
+  double length = 0.0;
+  for (const InterpolationSpan& s : spline.segments) length += s.length();
+  j["length"] = length;
+  json spans = json::array(), list = json::array();
+  double s0 = 0.0;
+  for (std::size_t i = 0; i < spline.segments.size(); ++i) {
+    const InterpolationSpan& s = spline.segments[i];
+    spans.push_back({{"kind", s.kind()}, {"length", s.length()}, {"start", point_json(s.start())}, {"end", point_json(s.end())}});
+    const auto pts = s.sample(samples_per_span);
+    for (std::size_t k = i == 0 ? 0 : 1; k < pts.size(); ++k)
+      list.push_back(point_json(pts[k], s0 + s.length() * double(k) / samples_per_span));
+    s0 += s.length();
+  }
+  j["spans"] = spans;
+  j["samples"] = list;
+  return j.dump(1) + "\n";
+}
+
+std::vector<LacPoint> spline_samples(const ProfileSpline& spline, int samples_per_span) {
+  std::vector<LacPoint> out;
+  for (const InterpolationSpan& s : spline.segments) {
+    const auto pts = s.sample(samples_per_span);
+    out.insert(out.end(), pts.begin() + (out.empty() ? 0 : 1), pts.end());
+  }
+  return out;
 }
 
 }  // namespace
 
 void CurveCommand::add_to(CLI::App& app) {
-  command_ = app.add_subcommand("curve", "Construct one log-aesthetic segment from three control points");
-  command_->add_option("--alpha", alpha_, "LCG slope α (solved, and not needed, with --inflection-start)");
-  command_->add_option("--points", points_, "P0 P1 P2 as x,y (P1: where the end tangents meet)")->required()->expected(3);
-  command_->add_flag("--inflection-start", inflection_start_, "κ = 0 at P0; α is solved");
-  command_->add_option("--samples", samples_, "Points along the segment, uniform in arc length")
+  command_ = app.add_subcommand(
+      "curve", "Construct one log-aesthetic segment from three control points, or the G3 curve through points");
+  auto* alpha = command_->add_option("--alpha", alpha_, "LCG slope α (solved, and not needed, with --inflection-start)");
+  auto* points = command_->add_option("--points", points_, "P0 P1 P2 as x,y (P1: where the end tangents meet)")->expected(3);
+  auto* inflection = command_->add_flag("--inflection-start", inflection_start_, "κ = 0 at P0; α is solved");
+  auto* through = command_->add_option("--through", through_, "The points to pass through, as x,y (two or more)")
+                      ->expected(2, 1 << 20);
+  command_->add_option("--curvatures", curvatures_, "κ at each --through point (1/unit, left turns positive)")
+      ->expected(2, 1 << 20)
+      ->needs(through);
+  command_->add_option("--slopes", slopes_, "dκ/ds at each --through point, or auto (default: chosen)")
+      ->expected(2, 1 << 20)
+      ->needs(through);
+  command_->add_option("--angles", angles_, "The tangent's direction at each --through point in degrees, or auto")
+      ->expected(2, 1 << 20)
+      ->needs(through);
+  through->excludes(alpha)->excludes(points)->excludes(inflection);
+  command_->add_option("--samples", samples_, "Points along the segment (along each span with --through), uniform in arc length")
       ->check(CLI::Range(1, 1000000));
   command_->add_option("--format", format_, "json or svg")->check(CLI::IsMember({"json", "svg"}));
   command_->add_option("-o,--output", output_, "Write here instead of standard output");
 }
 
-int CurveCommand::run() const {
-  if (!inflection_start_ && !alpha_) throw InputError("--alpha is required (or --inflection-start)");
-  Vec2 control[3];
-  for (int i = 0; i < 3; ++i) control[i] = parse_point(points_[static_cast<std::size_t>(i)]);
-  const SegmentFit fit = inflection_start_ ? fit_inflection_start(control[0], control[1], control[2])
-                                           : fit_three_point(control[0], control[1], control[2], *alpha_);
-  std::string text;
-  if (format_ == "json") {
-    text = curve_json(fit, alpha_.value_or(std::nan("")), samples_);
-  } else {
-    if (!fit.ok()) throw InputError("no solution: " + fit.reason);
-    text = curve_svg(*fit.segment, control, samples_);
+std::string CurveCommand::interpolation() const {
+  if (curvatures_.empty()) throw InputError("--curvatures is required with --through");
+  std::vector<Vec2> through;
+  for (const std::string& t : through_) through.push_back(parse_point(t, "--through"));
+  const auto curvatures = parse_per_point(curvatures_, through.size(), "--curvatures", false);
+  const auto slopes = parse_per_point(slopes_, through.size(), "--slopes", true);
+  const auto angles = parse_per_point(angles_, through.size(), "--angles", true);
+  std::vector<InterpolationPoint> points;
+  for (std::size_t i = 0; i < through.size(); ++i) {
+    std::optional<double> angle;
+    if (angles[i]) angle = *angles[i] * std::numbers::pi / 180.0;
+    points.push_back({through[i], *curvatures[i], slopes[i], angle});
   }
+  const ProfileSpline spline = interpolate_curvature_profiles(points);
+  if (format_ == "json") return spline_json(spline, samples_);
+  if (!spline.ok()) throw InputError("no solution: " + spline.reason);
+  return curve_svg(spline_samples(spline, samples_), through);
+}
+
+int CurveCommand::run() const {
+  const std::string text = through_.empty() ? segment() : interpolation();
   if (output_.empty()) std::cout << text;
   else write_file_atomically(output_, text);
   return exit_code::ok;
+}
+
+std::string CurveCommand::segment() const {
+  if (points_.empty()) throw InputError("--points is required (or --through)");
+  if (!inflection_start_ && !alpha_) throw InputError("--alpha is required (or --inflection-start)");
+  Vec2 control[3];
+  for (int i = 0; i < 3; ++i) control[i] = parse_point(points_[static_cast<std::size_t>(i)], "--points");
+  const SegmentFit fit = inflection_start_ ? fit_inflection_start(control[0], control[1], control[2])
+                                           : fit_three_point(control[0], control[1], control[2], *alpha_);
+  if (format_ == "json") return curve_json(fit, alpha_.value_or(std::nan("")), samples_);
+  if (!fit.ok()) throw InputError("no solution: " + fit.reason);
+  return curve_svg(fit.segment->sample(samples_), control);
 }
 
 }  // namespace gf
