@@ -446,8 +446,10 @@ void reexpress_as_g3(FairedRun& result, const RunReference& source, const Smooth
         if (n.kind == G3NodeKind::line) n.kind = G3NodeKind::line_g2, ++g2_line_joins;
     if (!g3.ok() && g2_line_joins > 0) g3 = make_g3(problem->nodes, problem->lengths, problem->closed);
     if (!g3.ok()) {
-      result.g3_shortfall = g3.reason;
-      return;
+      // A stall may be a segment too long for one spiral's cubic κ: try again on halves.
+      why = g3.reason;
+      for (int& p : pieces) p *= 2;
+      continue;
     }
     const std::vector<double> d = distance_by_spiral(g3, *problem, source, budget);
     const double worst = *std::max_element(d.begin(), d.end());

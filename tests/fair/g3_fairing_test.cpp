@@ -1,4 +1,5 @@
-// --continuity g3 on whole glyphs of a real font: every smooth run comes out G3, and the faired
+// --continuity g3 on whole glyphs of a real font (the S and a stalled before stalls were cut):
+// every smooth run comes out G3, and the faired
 // pieces the fairing reports (what `fair --segments` exports) are checked from their own data:
 // each spiral rebuilt from its start frame, length and end κ, κ′ reaches the end it reports
 // and keeps κ monotone, and at every smooth join the two sides agree in point, tangent, κ and
@@ -33,7 +34,7 @@ double relative(double a, double b, double floor) {
 }
 
 TEST(G3Fairing, EverySmoothJoinOfTheFairedPiecesIsG3) {
-  for (const char* name : {"o", "e", "n", "c", "O", "D", "G", "U"}) {
+  for (const char* name : {"o", "e", "n", "c", "O", "D", "G", "U", "S", "a", "s"}) {
     FairSettings settings;
     const GlyphFairing r = fair_g3(name, settings);
     ASSERT_TRUE(r.kept.empty()) << name << ": " << r.kept.front();
