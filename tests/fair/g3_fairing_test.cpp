@@ -1,6 +1,6 @@
-// --continuity g3 on whole glyphs of a real font (the S and a stalled before stalls were cut):
-// every smooth run comes out G3, and the faired
-// pieces the fairing reports (what `fair --segments` exports) are checked from their own data:
+// --continuity g3 on whole glyphs of a real font (the S and the a stalled until a stall was
+// cut): every smooth run comes out G3, and the faired pieces the fairing reports (what `fair
+// --segments` exports) are checked from their own data:
 // each spiral rebuilt from its start frame, length and end κ, κ′ reaches the end it reports
 // and keeps κ monotone, and at every smooth join the two sides agree in point, tangent, κ and
 // κ′ (a line's κ′ being 0), but for the line joins the fairing reports as held to G2.
