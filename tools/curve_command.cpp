@@ -88,31 +88,7 @@ std::string curve_json(const SegmentFit& fit, double alpha, int samples) {
   return j.dump(1) + "\n";
 }
 
-std::string spline_json(const ProfileSpline& spline, int samples_per_span) {
-  json j;
-  if (!spline.ok()) {
-    j = {{"status", "no-solution"}, {"reason", spline.reason}};
-    return j.dump(1) + "\n";
-  }
-  j["status"] = "ok";
-  double length = 0.0;
-  for (const InterpolationSpan& s : spline.segments) length += s.length();
-  j["length"] = length;
-  json spans = json::array(), list = json::array();
-  double s0 = 0.0;
-  for (std::size_t i = 0; i < spline.segments.size(); ++i) {
-    const InterpolationSpan& s = spline.segments[i];
-    spans.push_back({{"kind", s.kind()}, {"length", s.length()}, {"start", point_json(s.start())}, {"end", point_json(s.end())}});
-    const auto pts = s.sample(samples_per_span);
-    for (std::size_t k = i == 0 ? 0 : 1; k < pts.size(); ++k)
-      list.push_back(point_json(pts[k], s0 + s.length() * double(k) / samples_per_span));
-    s0 += s.length();
-  }
-  j["spans"] = spans;
-  j["samples"] = list;
-  return j.dump(1) + "\n";
-}
-
+// Every span's n + 1 points, uniform in its arc length, each join once.
 std::vector<LacPoint> spline_samples(const ProfileSpline& spline, int samples_per_span) {
   std::vector<LacPoint> out;
   for (const InterpolationSpan& s : spline.segments) {
@@ -120,6 +96,32 @@ std::vector<LacPoint> spline_samples(const ProfileSpline& spline, int samples_pe
     out.insert(out.end(), pts.begin() + (out.empty() ? 0 : 1), pts.end());
   }
   return out;
+}
+
+std::string spline_json(const ProfileSpline& spline, int samples_per_span) {
+  json j;
+  if (!spline.ok()) {
+    j = {{"status", "no-solution"}, {"reason", spline.reason}};
+    return j.dump(1) + "\n";
+  }
+  j["status"] = "ok";
+  json spans = json::array();
+  std::vector<double> span_start{0.0};  // s where each span starts, and the total last
+  for (const InterpolationSpan& s : spline.segments) {
+    spans.push_back({{"kind", s.kind()}, {"length", s.length()}, {"start", point_json(s.start())}, {"end", point_json(s.end())}});
+    span_start.push_back(span_start.back() + s.length());
+  }
+  j["length"] = span_start.back();
+  j["spans"] = spans;
+  json list = json::array();
+  const std::vector<LacPoint> pts = spline_samples(spline, samples_per_span);
+  const auto n = static_cast<std::size_t>(samples_per_span);
+  for (std::size_t k = 0; k < pts.size(); ++k) {
+    const std::size_t span = k == 0 ? 0 : (k - 1) / n, step = k - span * n;
+    list.push_back(point_json(pts[k], span_start[span] + spline.segments[span].length() * double(step) / samples_per_span));
+  }
+  j["samples"] = list;
+  return j.dump(1) + "\n";
 }
 
 }  // namespace

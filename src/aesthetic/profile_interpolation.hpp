@@ -56,8 +56,8 @@ class InterpolationSpan {
 
 struct ProfileSpline {
   std::vector<InterpolationSpan> segments;  ///< span i from point i to i + 1; empty on failure
-  std::vector<CurvatureEnd> ends;                 ///< every point's data as used, the chosen ones filled in
-  std::string reason;                             ///< why not, naming the span, in one line
+  std::vector<CurvatureEnd> ends;           ///< every point's data as used, the chosen ones filled in
+  std::string reason;                       ///< why not, naming the span, in one line
   bool ok() const { return !segments.empty(); }
 };
 
