@@ -3,8 +3,6 @@
 // where unbounded or not known), in that order.
 #pragma once
 
-#include <cmath>
-
 #include <nlohmann/json.hpp>
 
 #include "aesthetic/log_aesthetic_segment.hpp"
@@ -14,7 +12,7 @@ namespace gf {
 inline nlohmann::ordered_json lac_point_json(const LacPoint& p) {
   using json = nlohmann::ordered_json;
   return {{"point", {p.point.x, p.point.y}},
-          {"tangent_angle", std::atan2(p.tangent.y, p.tangent.x)},
+          {"tangent_angle", angle_of(p.tangent)},
           {"curvature", p.curvature},
           {"dcurvature_ds", p.curvature_derivative ? json(*p.curvature_derivative) : json(nullptr)}};
 }
