@@ -445,25 +445,26 @@ void reexpress_as_g3(FairedRun& result, const RunReference& source, const Smooth
       for (G3Node& n : problem->nodes)
         if (n.kind == G3NodeKind::line) n.kind = G3NodeKind::line_g2, ++g2_line_joins;
     if (!g3.ok() && g2_line_joins > 0) g3 = make_g3(problem->nodes, problem->lengths, problem->closed);
-    if (!g3.ok()) {
-      // A stall may be a segment too long for one spiral's cubic κ: try again on halves.
-      why = g3.reason;
-      for (int& p : pieces) p *= 2;
-      continue;
-    }
-    const std::vector<double> d = distance_by_spiral(g3, *problem, source, budget);
-    const double worst = *std::max_element(d.begin(), d.end());
-    if (worst <= budget) {
-      adopt_spirals(result.chains, *problem, std::move(g3.spirals));
-      result.deviation = worst;
-      result.g3 = true;
-      result.g2_line_joins = g2_line_joins;
-      return;
-    }
-    why = "the G3 curve strays " + std::to_string(worst) + " units from the source (budget " + std::to_string(budget) + ")";
+    // The log-aesthetic segments to cut in two before the next round.
     std::vector<bool> split(pieces.size(), false);
-    for (std::size_t i = 0; i < d.size(); ++i)
-      if (d[i] > budget) split[problem->log_aesthetic_segment[i]] = true;
+    if (g3.ok()) {
+      const std::vector<double> d = distance_by_spiral(g3, *problem, source, budget);
+      const double worst = *std::max_element(d.begin(), d.end());
+      if (worst <= budget) {
+        adopt_spirals(result.chains, *problem, std::move(g3.spirals));
+        result.deviation = worst;
+        result.g3 = true;
+        result.g2_line_joins = g2_line_joins;
+        return;
+      }
+      why = "the G3 curve strays " + std::to_string(worst) + " units from the source (budget " + std::to_string(budget) + ")";
+      for (std::size_t i = 0; i < d.size(); ++i)
+        if (d[i] > budget) split[problem->log_aesthetic_segment[i]] = true;
+    } else {
+      // A stall may be a segment too long for one spiral's cubic κ: every one is cut.
+      why = g3.reason;
+      split.assign(pieces.size(), true);
+    }
     for (std::size_t i = 0; i < pieces.size(); ++i)
       if (split[i]) pieces[i] *= 2;
   }
