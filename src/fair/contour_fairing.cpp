@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
+#include <span>
 
 #include "fair/contour_plan.hpp"
 #include "fair/cubic_writeback.hpp"
@@ -74,6 +76,12 @@ class NodeAssembler {
   std::vector<OutlineNode> nodes_;
 };
 
+// A corner of the plan: the source node and where the faired pieces meet there.
+struct CornerJoin {
+  std::size_t source_node;
+  Vec2 point;
+};
+
 struct Attempt {
   std::vector<OutlineNode> nodes;
   std::string failure;
@@ -83,6 +91,7 @@ struct Attempt {
   int g3_runs = 0, g2_line_joins = 0;
   std::vector<std::string> g3_shortfalls;
   FairedPieces pieces;
+  std::vector<CornerJoin> corners;
 };
 
 FairedPiece line_piece(Vec2 a, Vec2 b, bool smooth_start) {
@@ -98,25 +107,17 @@ void record_chain(const FairedChain& chain, bool smooth_start, FairedPieces& out
   for (const PolynomialSpiral& s : chain.spirals)
     out.push_back({FairedPieceKind::polynomial_spiral, s.length(), s.start(), s.end(), std::nullopt, true});
   if (chain.guide) {
-    const GuideStretch& g = *chain.guide;
-    const RunReference& ref = *g.guide;
-    LacPoint a = chain.closed ? ref.frame_at(g.s0) : g.start, b = chain.closed ? ref.frame_at(g.s1) : g.end;
+    LacPoint a = chain.start_frame(), b = chain.end_frame();
     a.curvature_derivative = b.curvature_derivative = std::nullopt;
-    out.push_back({FairedPieceKind::guide, g.s1 - g.s0, a, b, std::nullopt, true});
+    out.push_back({FairedPieceKind::guide, chain.guide->s1 - chain.guide->s0, a, b, std::nullopt, true});
   }
   if (out.size() > first) out[first].smooth_start = smooth_start;
 }
 
 // Where a piece starts and ends once faired: a G3 run may have slid its ends along the lines
 // it meets (fair/g3_run.hpp), and the lines follow.
-Vec2 faired_start(const FairedRun& run) {
-  const FairedChain& c = run.chains.front();
-  return c.spirals.empty() ? c.segments.front().start().point : c.spirals.front().start().point;
-}
-Vec2 faired_end(const FairedRun& run) {
-  const FairedChain& c = run.chains.back();
-  return c.spirals.empty() ? c.segments.back().end().point : c.spirals.back().end().point;
-}
+LacPoint faired_start(const FairedRun& run) { return run.chains.front().start_frame(); }
+LacPoint faired_end(const FairedRun& run) { return run.chains.back().end_frame(); }
 
 Attempt fair_with_budgets(const ContourPlan& plan, const FairSettings& settings, Budgets budgets) {
   Attempt a;
@@ -134,16 +135,19 @@ Attempt fair_with_budgets(const ContourPlan& plan, const FairSettings& settings,
   const auto g3_run_at = [&](std::size_t i) { return runs[i] && runs[i]->g3 ? &*runs[i] : nullptr; };
   NodeAssembler assembler;
   bool previous_ends_smooth = false;  // how the last piece ended: the join to the next piece
+  std::vector<bool> smooth_before(count, false);  // the join in front of each piece
+  std::vector<Vec2> starts(count);                // where each piece starts once faired
   for (std::size_t i = 0; i < count; ++i) {
     if (const Line* line = std::get_if<Line>(&plan.pieces[i])) {
       OutlineNode start, end;
       start.point = line->start(), end.point = line->end();
       const bool wraps = plan.closed && count > 1;
       if (i > 0 || wraps)
-        if (const FairedRun* before = g3_run_at((i + count - 1) % count)) start.point = faired_end(*before);
+        if (const FairedRun* before = g3_run_at((i + count - 1) % count)) start.point = faired_end(*before).point;
       if (i + 1 < count || wraps)
-        if (const FairedRun* after = g3_run_at((i + 1) % count)) end.point = faired_start(*after);
-      start.smooth = previous_ends_smooth;
+        if (const FairedRun* after = g3_run_at((i + 1) % count)) end.point = faired_start(*after).point;
+      start.smooth = smooth_before[i] = previous_ends_smooth;
+      starts[i] = start.point;
       a.pieces.push_back(line_piece(start.point, end.point, previous_ends_smooth));
       assembler.append({start, end}, previous_ends_smooth);
       previous_ends_smooth = false;
@@ -154,7 +158,10 @@ Attempt fair_with_budgets(const ContourPlan& plan, const FairSettings& settings,
     a.guide_stretches += faired.guide_stretches;
     if (faired.g3) ++a.g3_runs, a.g2_line_joins += faired.g2_line_joins;
     else if (!faired.g3_shortfall.empty()) a.g3_shortfalls.push_back(faired.g3_shortfall);
-    const bool start_smooth = !run.closed && run.start.kind == RunEndKind::line;
+    // A closed run's chains meet at inflections, G1 there like every join inside a run.
+    const bool start_smooth = run.closed || run.start.kind == RunEndKind::line;
+    smooth_before[i] = start_smooth || previous_ends_smooth;
+    starts[i] = faired.chains.empty() ? run.cubics.front().p[0] : faired_start(faired).point;
     for (std::size_t k = 0; k < faired.chains.size(); ++k) {
       const FairedChain& chain = faired.chains[k];
       a.mismatch = std::max(a.mismatch, chain.max_mismatch_relative);
@@ -172,13 +179,17 @@ Attempt fair_with_budgets(const ContourPlan& plan, const FairSettings& settings,
     if (!assembler.nodes().empty()) assembler.nodes().back().smooth = previous_ends_smooth;
   }
   if (plan.closed) {
-    // The first node's join: the last piece's end kind, or, for a line first, the first run's start.
+    // The first node's join: the last piece's end kind, or, for a run first, the run's start
+    // (smooth where it meets a line or closes on itself).
     bool smooth = previous_ends_smooth;
     if (const SmoothRun* first = std::get_if<SmoothRun>(&plan.pieces.front()))
-      smooth = first->start.kind == RunEndKind::line;
+      smooth = first->closed || first->start.kind == RunEndKind::line;
     assembler.close(smooth);
     if (!a.pieces.empty()) a.pieces.front().smooth_start = smooth;
+    smooth_before[0] = smooth;
   }
+  for (std::size_t i = plan.closed ? 0 : 1; i < count; ++i)
+    if (!smooth_before[i]) a.corners.push_back({plan.start_nodes[i], starts[i]});
   a.nodes = std::move(assembler.nodes());
   return a;
 }
@@ -205,29 +216,33 @@ double distance_between(const SampledContour& a, const SampledContour& b) {
   return std::max(directed_hausdorff(a.points(), b.grid), directed_hausdorff(b.points(), a.grid));
 }
 
-}  // namespace
-
-double contour_distance(const Contour& a, const Contour& b) {
-  return distance_between(SampledContour(a), SampledContour(b));
+// The corners of a faired contour (as the source nodes they stand for) that turn by less than
+// the kink limit. Each is found at its node nearest where the pieces met (rounding may have
+// moved it a unit).
+std::vector<std::size_t> kinked_corners(const Contour& faired, std::span<const CornerJoin> corners) {
+  std::vector<std::size_t> out;
+  const std::size_t n = faired.segments.size();
+  if (n < 2) return out;
+  const double kink = kink_limit_deg * std::numbers::pi / 180.0;
+  for (const CornerJoin& c : corners) {
+    std::size_t k = 0;
+    for (std::size_t i = 1; i < n; ++i)
+      if (distance(faired.node_point(i), c.point) < distance(faired.node_point(k), c.point)) k = i;
+    if ((!faired.closed && k == 0) || faired.nodes[k].smooth.value_or(false)) continue;
+    const std::optional<Vec2> in = end_tangent(faired.segments[(k + n - 1) % n], SegmentEnd::end);
+    const std::optional<Vec2> out_tangent = end_tangent(faired.segments[k], SegmentEnd::start);
+    if (in && out_tangent && std::abs(turning_angle(*in, *out_tangent)) < kink) out.push_back(c.source_node);
+  }
+  return out;
 }
 
-ContourFairing fair_contour(const Contour& source, const FairSettings& settings) {
+// The contour faired on one plan: the budgets halved once when the first try strays, the
+// outline rounded when asked. `kinked` gets the corners of the result that turn by less than
+// the kink limit.
+ContourFairing fair_planned(const Contour& source, const ContourPlan& plan, const SampledContour& sampled_source,
+                            const FairSettings& settings, std::vector<std::size_t>& kinked) {
   ContourFairing out;
   out.contour = source;
-  const ContourPlan plan = plan_contour(source, settings.corner_angle_deg);
-  if (plan.pieces.empty()) {
-    out.reason = "nothing to fair (every segment degenerate)";
-    return out;
-  }
-  const bool has_curve = std::any_of(plan.pieces.begin(), plan.pieces.end(),
-                                     [](const auto& p) { return std::holds_alternative<SmoothRun>(p); });
-  if (!has_curve) {
-    out.faired = true;  // lines only: already as fair as it gets
-    for (const auto& piece : plan.pieces)
-      out.pieces.push_back(line_piece(std::get<Line>(piece).start(), std::get<Line>(piece).end(), false));
-    return out;
-  }
-  const SampledContour sampled_source(source);
   const double rounding = settings.round_to_integers ? 0.5 : 0.0;
   double available = std::max(settings.tolerance_units - rounding, 0.25 * settings.tolerance_units);
   for (int attempt = 0; attempt < 2; ++attempt, available *= 0.5) {
@@ -263,9 +278,53 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& settings)
       out.g2_line_joins = a.g2_line_joins;
       out.g3_shortfalls = std::move(a.g3_shortfalls);
       out.pieces = std::move(a.pieces);
+      kinked = kinked_corners(out.contour, a.corners);
       return out;
     }
     out.reason = "the faired contour came out " + std::to_string(d) + " units from the source";
+  }
+  return out;
+}
+
+// How many times corners that came out as kinks are made smooth and the contour faired again.
+constexpr int kink_passes = 2;
+
+}  // namespace
+
+double contour_distance(const Contour& a, const Contour& b) {
+  return distance_between(SampledContour(a), SampledContour(b));
+}
+
+ContourFairing fair_contour(const Contour& source, const FairSettings& settings) {
+  ContourFairing out;
+  out.contour = source;
+  const ContourPlan plan = plan_contour(source, settings.corner_angle_deg);
+  if (plan.pieces.empty()) {
+    out.reason = "nothing to fair (every segment degenerate)";
+    return out;
+  }
+  const bool has_curve = std::any_of(plan.pieces.begin(), plan.pieces.end(),
+                                     [](const auto& p) { return std::holds_alternative<SmoothRun>(p); });
+  if (!has_curve) {
+    out.faired = true;  // lines only: already as fair as it gets
+    for (const auto& piece : plan.pieces)
+      out.pieces.push_back(line_piece(std::get<Line>(piece).start(), std::get<Line>(piece).end(), false));
+    return out;
+  }
+  const SampledContour sampled_source(source);
+  std::vector<std::size_t> kinked, smooth_nodes;
+  out = fair_planned(source, plan, sampled_source, settings, kinked);
+  // A corner whose faired pieces meet by less than the kink limit was noise the fairing
+  // straightened (or a scan's few degrees at a line): made smooth, it becomes G2 instead of
+  // a kink. Kept only when the contour still fairs.
+  for (int pass = 0; pass < kink_passes && out.faired && !kinked.empty(); ++pass) {
+    smooth_nodes.insert(smooth_nodes.end(), kinked.begin(), kinked.end());
+    std::vector<std::size_t> still;
+    ContourFairing again = fair_planned(source, plan_contour(source, settings.corner_angle_deg, smooth_nodes),
+                                        sampled_source, settings, still);
+    if (!again.faired) break;
+    out = std::move(again);
+    kinked = std::move(still);
   }
   return out;
 }

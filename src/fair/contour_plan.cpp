@@ -31,21 +31,34 @@ bool is_straight(const Cubic& c) {
   return true;
 }
 
-ContourPlan plan_contour(const Contour& source, double corner_angle_deg) {
+ContourPlan plan_contour(const Contour& source, double corner_angle_deg, std::span<const std::size_t> smooth_nodes) {
   const Contour contour = with_cubics(source);
+  const auto made_smooth = [&](std::size_t node) {
+    return std::find(smooth_nodes.begin(), smooth_nodes.end(), node) != smooth_nodes.end();
+  };
   std::vector<Piece> pieces;
   for (std::size_t i = 0; i < contour.segments.size(); ++i) {
     const Segment& s = contour.segments[i];
     if (is_degenerate(s)) continue;
     const bool straight = is_line(s) || is_straight(std::get<Cubic>(s));
-    pieces.push_back({straight ? Segment{Line{start_point(s), end_point(s)}} : s, i, straight});
+    const Segment piece = straight ? Segment{Line{start_point(s), end_point(s)}} : s;
+    // Two lines meeting at a join made smooth are one line.
+    if (straight && !pieces.empty() && pieces.back().straight && made_smooth(i))
+      pieces.back().segment = Line{start_point(pieces.back().segment), end_point(s)};
+    else
+      pieces.push_back({piece, i, straight});
+  }
+  if (contour.closed && pieces.size() > 2 && pieces.front().straight && pieces.back().straight &&
+      made_smooth(pieces.front().source_node)) {
+    pieces.front() = {Line{start_point(pieces.back().segment), end_point(pieces.front().segment)}, pieces.back().source_node, true};
+    pieces.pop_back();
   }
   ContourPlan plan;
   plan.closed = contour.closed;
   const std::size_t n = pieces.size();
   if (n == 0) return plan;
   const double corner = corner_angle_deg * std::numbers::pi / 180.0;
-  const double tangential_line = 3.0 * std::numbers::pi / 180.0;
+  const double tangential_line = kink_limit_deg * std::numbers::pi / 180.0;
 
   // The kind of the join in front of piece i (between piece i−1 and i); nullopt when smooth
   // between two curves.
@@ -60,7 +73,9 @@ ContourPlan plan_contour(const Contour& source, double corner_angle_deg) {
     // A curve meets a line tangentially only within the kink limit: bending a curve that leaves
     // a line at 10° into the line's direction would put a bump where the designer drew none.
     const bool line_join = a.straight || b.straight;
-    const bool is_corner = flag ? !*flag : angle > (line_join ? std::min(corner, tangential_line) : corner);
+    const bool is_corner = made_smooth(b.source_node) ? false
+                           : flag                     ? !*flag
+                                                      : angle > (line_join ? std::min(corner, tangential_line) : corner);
     if (is_corner) return RunEndKind::corner;
     if (line_join) return RunEndKind::line;
     return std::nullopt;
@@ -80,6 +95,7 @@ ContourPlan plan_contour(const Contour& source, double corner_angle_deg) {
     run.closed = true;
     for (const Piece& p : pieces) run.cubics.push_back(std::get<Cubic>(p.segment));
     plan.first_source_node = pieces[0].source_node;
+    plan.start_nodes.push_back(pieces[0].source_node);
     plan.pieces.emplace_back(std::move(run));
     return plan;
   }
@@ -89,6 +105,7 @@ ContourPlan plan_contour(const Contour& source, double corner_angle_deg) {
     const std::size_t i = (first + k) % n;
     const Piece& p = pieces[i];
     if (p.straight) {
+      plan.start_nodes.push_back(p.source_node);
       plan.pieces.emplace_back(std::get<Line>(p.segment));
       continue;
     }
@@ -101,6 +118,7 @@ ContourPlan plan_contour(const Contour& source, double corner_angle_deg) {
                               ? *end_tangent(prev.segment, SegmentEnd::end)
                               : *end_tangent(p.segment, SegmentEnd::start);
       if (*before == RunEndKind::line && prev.straight) run.start.line_share = line_share(prev, breaks[(i + n - 1) % n]);
+      plan.start_nodes.push_back(p.source_node);
       plan.pieces.emplace_back(std::move(run));
     }
     SmoothRun& run = std::get<SmoothRun>(plan.pieces.back());

@@ -5,6 +5,7 @@
 // one closed run.
 #pragma once
 
+#include <span>
 #include <variant>
 #include <vector>
 
@@ -33,14 +34,22 @@ struct ContourPlan {
   std::vector<std::variant<Line, SmoothRun>> pieces;  ///< in order, each starting where the last ended
   bool closed = true;
   std::size_t first_source_node = 0;  ///< the source node the first piece starts at
+  std::vector<std::size_t> start_nodes;  ///< the source node each piece starts at
 };
+
+/// The check's kink limit: a join turning by less than this (and more than 0.05°) is a kink,
+/// meant smooth; a corner must turn by at least this much.
+inline constexpr double kink_limit_deg = 3.0;
 
 /// A cubic whose control points lie on its chord, in order, is a line.
 bool is_straight(const Cubic& c);
 
 /// Corners: joins whose smooth flag says so where the source has flags, else joins turning by
 /// more than `corner_angle_deg` (and a curve meeting a line at 3° or more: only a tangential
-/// line join is made G2).
-ContourPlan plan_contour(const Contour& contour, double corner_angle_deg);
+/// line join is made G2). The joins at `smooth_nodes` (source node indices) are smooth
+/// whatever their angle: a curve meeting a line there meets it tangentially, and two lines
+/// meeting there become one.
+ContourPlan plan_contour(const Contour& contour, double corner_angle_deg,
+                         std::span<const std::size_t> smooth_nodes = {});
 
 }  // namespace gf

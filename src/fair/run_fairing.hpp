@@ -36,6 +36,10 @@ struct FairedChain {
   bool closed = false;
   bool zero_curvature_start = false, zero_curvature_end = false;
   double max_mismatch_relative = 0.0;  ///< max |Δκ| / max |κ| over its junctions
+
+  /// Where it starts and ends, whichever curves carry it (spirals, segments or the guide).
+  LacPoint start_frame() const;
+  LacPoint end_frame() const;
 };
 
 struct FairedRun {

@@ -1,0 +1,59 @@
+// Planning a contour: which joins are corners, and the joins the caller makes smooth.
+#include "fair/contour_plan.hpp"
+
+#include <gtest/gtest.h>
+
+namespace gf {
+namespace {
+
+// A closed contour: a line from (0, 0) to (100, 0), then a curve leaving it turned up by
+// `degrees`, a curve back down, and a line home to the start.
+Contour line_then_curves(double degrees) {
+  const double a = degrees * std::numbers::pi / 180.0;
+  const Vec2 p0{0, 0}, p1{100, 0}, p2{200, 100}, p3{100, 200};
+  Contour c;
+  c.segments = {Line{p0, p1}, Cubic{p1, p1 + Vec2{std::cos(a), std::sin(a)} * 40.0, p2 - Vec2{0, 40}, p2},
+                Cubic{p2, p2 + Vec2{0, 40}, p3 + Vec2{40, 0}, p3}, Line{p3, p0}};
+  c.nodes.resize(4);
+  return c;
+}
+
+TEST(ContourPlan, ALineJoinBeyondTheKinkLimitIsACornerUnlessMadeSmooth) {
+  const Contour c = line_then_curves(10.0);
+  const ContourPlan plain = plan_contour(c, 30.0);
+  ASSERT_EQ(plain.pieces.size(), 3u);  // line, run, line
+  EXPECT_EQ(plain.start_nodes, (std::vector<std::size_t>{0, 1, 3}));
+  const SmoothRun& run = std::get<SmoothRun>(plain.pieces[1]);
+  EXPECT_EQ(run.start.kind, RunEndKind::corner);  // 10° from the line: kept
+
+  const std::vector<std::size_t> smooth{1};
+  const ContourPlan made = plan_contour(c, 30.0, smooth);
+  const SmoothRun& joined = std::get<SmoothRun>(made.pieces[1]);
+  EXPECT_EQ(joined.start.kind, RunEndKind::line);  // now it leaves the line tangentially
+  EXPECT_NEAR(joined.start.tangent.x, 1.0, 1e-12);  // in the line's direction
+  EXPECT_EQ(joined.end.kind, RunEndKind::corner);
+}
+
+TEST(ContourPlan, TwoLinesMadeSmoothAreOneLine) {
+  // A quadrilateral whose bottom edge bends by 1° at (100, 0.87).
+  Contour c;
+  const Vec2 a{0, 0}, b{100, 1.745}, d{200, 0}, e{100, 150};
+  c.segments = {Line{a, b}, Line{b, d}, Line{d, e}, Line{e, a}};
+  c.nodes.resize(4);
+  EXPECT_EQ(plan_contour(c, 30.0).pieces.size(), 4u);  // two lines meeting are always a corner
+  const std::vector<std::size_t> smooth{1};
+  const ContourPlan made = plan_contour(c, 30.0, smooth);
+  ASSERT_EQ(made.pieces.size(), 3u);
+  const Line& merged = std::get<Line>(made.pieces[0]);
+  EXPECT_EQ(merged.start(), a);
+  EXPECT_EQ(merged.end(), d);
+  // At the seam of a closed contour too.
+  const std::vector<std::size_t> seam{0};
+  const ContourPlan wrapped = plan_contour(c, 30.0, seam);
+  ASSERT_EQ(wrapped.pieces.size(), 3u);
+  EXPECT_EQ(std::get<Line>(wrapped.pieces[0]).start(), e);
+  EXPECT_EQ(std::get<Line>(wrapped.pieces[0]).end(), b);
+}
+
+}  // namespace
+}  // namespace gf
