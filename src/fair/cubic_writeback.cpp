@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 #include <functional>
 #include <limits>
 #include <numbers>
@@ -16,12 +17,14 @@ namespace gf {
 namespace {
 
 constexpr int max_depth = 6;
+constexpr double min_chord = 4.0;  // units: a shorter span is one cubic (halves of it round onto the same few grid points)
 constexpr int cubic_samples = 48;
 constexpr double min_handle_fraction = 0.03;
 constexpr double fine_enough = 0.03;  // of κ per grid step at a node
 constexpr double infeasible = std::numeric_limits<double>::infinity();
 constexpr double no_cubic = 1e300;    // the deviation of a span no G2 Hermite cubic spans
 constexpr double far_off = 4.0;       // a cubic this many budgets off: a longer one from its start is no nearer
+constexpr double fold_margin = 0.5 * std::numbers::pi;  // a cubic may turn beyond its span; a cusp turns π more
 constexpr double edge_margin = 0.05;  // no grid node within this share of a span's turning or length of its ends
 
 // Short primitive integer directions, |d|² ≤ `longest`: where a span must be cut, the cut goes
@@ -198,13 +201,32 @@ std::vector<RequiredNode> axis_extrema(const ChainPath& path) {
   return out;
 }
 
+std::vector<Vec2> cubic_points(const Cubic& c) {
+  std::vector<Vec2> pts;
+  for (int k = 0; k <= cubic_samples; ++k) pts.push_back(c.point_at(static_cast<double>(k) / cubic_samples));
+  return pts;
+}
+
 // The two-sided distance between a cubic and the path's points; past `stop_above`, only that
 // it is past.
 double cubic_deviation(const Cubic& c, const std::vector<Vec2>& lac, double stop_above) {
-  std::vector<Vec2> pts;
-  for (int k = 0; k <= cubic_samples; ++k) pts.push_back(c.point_at(static_cast<double>(k) / cubic_samples));
+  const std::vector<Vec2> pts = cubic_points(c);
   const double there = directed_hausdorff(pts, lac, stop_above);
   return there > stop_above ? there : std::max(there, directed_hausdorff(lac, pts, stop_above));
+}
+
+// How far a curve sampled as `points` turns from tangent `start` to tangent `end`, every bend
+// of its polyline counted by its size.
+double absolute_turning(Vec2 start, std::span<const Vec2> points, Vec2 end) {
+  double total = 0.0;
+  Vec2 last = start;
+  for (std::size_t i = 1; i < points.size(); ++i) {
+    const Vec2 v = points[i] - points[i - 1];
+    if (norm(v) == 0.0) continue;
+    total += std::abs(turning_angle(last, v));
+    last = v;
+  }
+  return total + std::abs(turning_angle(last, end));
 }
 
 struct Piece {
@@ -227,7 +249,7 @@ class SpanWriter {
   void fit(double a, double b, std::optional<Vec2> start_step, std::optional<Vec2> end_step, int depth,
            std::vector<Piece>& pieces) {
     Fitted f = best_cubic(a, b);
-    if (f.within(budget_) || depth >= max_depth) {
+    if (f.within(budget_) || depth >= max_depth || distance(path_.at(a).point, path_.at(b).point) < min_chord) {
       if (!f.cubic) {  // no G2 cubic at all: keep G1 with third-chord handles
         const LacPoint pa = path_.at(a), pb = path_.at(b);
         const double h = distance(pa.point, pb.point) / 3.0;
@@ -251,10 +273,14 @@ class SpanWriter {
     const LacPoint pa = path_.at(a), pb = path_.at(b);
     const std::vector<Vec2> lac = path_.points(a, b);
     const double chord = distance(pa.point, pb.point);
+    const double turning = absolute_turning(pa.tangent, lac, pb.tangent);
     Fitted best;
     for (const Cubic& c : g2_hermite_cubics({pa.point, pa.tangent, pa.curvature}, {pb.point, pb.tangent, pb.curvature})) {
       // A handle much shorter than the chord crowds the curvature into the node.
       if (std::min(distance(c.p[0], c.p[1]), distance(c.p[2], c.p[3])) < min_handle_fraction * chord) continue;
+      // Handles that overreach fold the cubic back on itself (a loop or a cusp), which may
+      // stay within the budget of the path yet turns by half a turn more than it.
+      if (absolute_turning(pa.tangent, cubic_points(c), pb.tangent) > turning + fold_margin) continue;
       const double d = cubic_deviation(c, lac, std::min(cap, best.deviation));
       if (d < best.deviation && d <= cap) best = {c, d};
       else if (!best.cubic) best.deviation = std::min(best.deviation, d);

@@ -1,7 +1,8 @@
 // Whole contours of real fonts through the fairing: every contour faired, within the
 // tolerance by an independent brute-force distance (every sample against every sample, not
 // the grid the fairing measures with), contour direction kept, on the integer grid, G1
-// exact at every smooth node, and every other node a corner beyond the kink limit.
+// exact at every smooth node, every other node a corner beyond the kink limit, and no cubic
+// folded back on itself (turning by half a turn or more: a loop or a cusp).
 #include "fair/glyph_fairing.hpp"
 
 #include <gtest/gtest.h>
@@ -22,6 +23,20 @@ std::vector<Vec2> dense(const Contour& c) {
   for (const Segment& s : c.segments)
     for (int k = 0; k < 400; ++k) out.push_back(point_at(s, k / 400.0));
   return out;
+}
+
+// How far a segment's tangent turns, summed over 200 steps.
+double absolute_turning(const Segment& s) {
+  double total = 0.0;
+  std::optional<Vec2> last;
+  Vec2 prev = point_at(s, 0.0);
+  for (int k = 1; k <= 200; ++k) {
+    const Vec2 p = point_at(s, k / 200.0), v = p - prev;
+    if (norm(v) == 0.0) continue;
+    if (last) total += std::abs(turning_angle(*last, v));
+    last = v, prev = p;
+  }
+  return total;
 }
 
 double brute_force_hausdorff(const Contour& a, const Contour& b) { return test::point_set_hausdorff(dense(a), dense(b)); }
@@ -47,6 +62,7 @@ void expect_faired(const std::string& font, const std::string& glyph, FairProfil
     EXPECT_EQ(signed_area(a) > 0, signed_area(b) > 0) << glyph << " contour " << i;
     for (std::size_t k = 0; k < b.segments.size(); ++k) {
       for_each_point(b.segments[k], [&](Vec2 p) { EXPECT_TRUE(p.x == std::round(p.x) && p.y == std::round(p.y)); });
+      EXPECT_LT(absolute_turning(b.segments[k]), std::numbers::pi) << glyph << " contour " << i << " segment " << k;
       const Segment& before = b.segments[(k + b.segments.size() - 1) % b.segments.size()];
       const Segment& after = b.segments[k];
       if (!b.nodes[k].smooth.value_or(false)) {
