@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <numbers>
 #include <span>
 
@@ -46,6 +47,26 @@ ContourSamples contour_samples(const Contour& c) {
 
 struct Budgets {
   double chain, cubic;
+};
+
+// Runs already faired for this contour: a plan made again with a corner smoothed keeps every
+// run away from that corner as it was, and those need not be faired twice.
+class FairedRuns {
+ public:
+  const FairedRun& get(const SmoothRun& run, const FairSettings& settings, double budget) {
+    for (const Entry& e : entries_)
+      if (e.budget == budget && e.run == run) return e.faired;
+    entries_.push_back({run, budget, fair_run(run, settings, budget)});
+    return entries_.back().faired;
+  }
+
+ private:
+  struct Entry {
+    SmoothRun run;
+    double budget;
+    FairedRun faired;
+  };
+  std::deque<Entry> entries_;  // stable references
 };
 
 // Assembles the faired pieces in order; nodes where two pieces meet are merged.
@@ -119,14 +140,14 @@ void record_chain(const FairedChain& chain, bool smooth_start, FairedPieces& out
 LacPoint faired_start(const FairedRun& run) { return run.chains.front().start_frame(); }
 LacPoint faired_end(const FairedRun& run) { return run.chains.back().end_frame(); }
 
-Attempt fair_with_budgets(const ContourPlan& plan, const FairSettings& settings, Budgets budgets) {
+Attempt fair_with_budgets(const ContourPlan& plan, const FairSettings& settings, Budgets budgets, FairedRuns& cache) {
   Attempt a;
   const std::size_t count = plan.pieces.size();
   std::vector<std::optional<FairedRun>> runs(count);
   for (std::size_t i = 0; i < count; ++i) {
     const SmoothRun* run = std::get_if<SmoothRun>(&plan.pieces[i]);
     if (!run) continue;
-    runs[i] = fair_run(*run, settings, budgets.chain);
+    runs[i] = cache.get(*run, settings, budgets.chain);
     if (!runs[i]->ok) {
       a.failure = runs[i]->reason;
       return a;
@@ -240,13 +261,13 @@ std::vector<std::size_t> kinked_corners(const Contour& faired, std::span<const C
 // outline rounded when asked. `kinked` gets the corners of the result that turn by less than
 // the kink limit.
 ContourFairing fair_planned(const Contour& source, const ContourPlan& plan, const SampledContour& sampled_source,
-                            const FairSettings& settings, std::vector<std::size_t>& kinked) {
+                            const FairSettings& settings, FairedRuns& cache, std::vector<std::size_t>& kinked) {
   ContourFairing out;
   out.contour = source;
   const double rounding = settings.round_to_integers ? 0.5 : 0.0;
   double available = std::max(settings.tolerance_units - rounding, 0.25 * settings.tolerance_units);
   for (int attempt = 0; attempt < 2; ++attempt, available *= 0.5) {
-    Attempt a = fair_with_budgets(plan, settings, {settings.chain_share * available, (1.0 - settings.chain_share) * available});
+    Attempt a = fair_with_budgets(plan, settings, {settings.chain_share * available, (1.0 - settings.chain_share) * available}, cache);
     if (!a.failure.empty()) {
       out.reason = a.failure;
       continue;
@@ -313,7 +334,8 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& settings)
   }
   const SampledContour sampled_source(source);
   std::vector<std::size_t> kinked, smooth_nodes;
-  out = fair_planned(source, plan, sampled_source, settings, kinked);
+  FairedRuns cache;
+  out = fair_planned(source, plan, sampled_source, settings, cache, kinked);
   // A corner whose faired pieces meet by less than the kink limit was noise the fairing
   // straightened (or a scan's few degrees at a line): made smooth, it becomes G2 instead of
   // a kink. Kept only when the contour still fairs.
@@ -321,7 +343,7 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& settings)
     smooth_nodes.insert(smooth_nodes.end(), kinked.begin(), kinked.end());
     std::vector<std::size_t> still;
     ContourFairing again = fair_planned(source, plan_contour(source, settings.corner_angle_deg, smooth_nodes),
-                                        sampled_source, settings, still);
+                                        sampled_source, settings, cache, still);
     if (!again.faired) break;
     out = std::move(again);
     kinked = std::move(still);

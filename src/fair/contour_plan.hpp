@@ -22,12 +22,14 @@ struct RunEnd {
   /// along the line): all of it when the line's other end is a corner, half when another run
   /// meets the line there too.
   double line_share = 0.0;
+  bool operator==(const RunEnd&) const = default;
 };
 
 struct SmoothRun {
   std::vector<Cubic> cubics;  ///< the source's pieces, in order, none degenerate
   bool closed = false;        ///< the whole contour (no corner, no line)
   RunEnd start, end;          ///< open runs only
+  bool operator==(const SmoothRun&) const = default;
 };
 
 struct ContourPlan {
