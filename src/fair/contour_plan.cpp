@@ -94,12 +94,10 @@ ContourPlan plan_contour(const Contour& source, double corner_angle_deg, std::sp
     SmoothRun run;
     run.closed = true;
     for (const Piece& p : pieces) run.cubics.push_back(std::get<Cubic>(p.segment));
-    plan.first_source_node = pieces[0].source_node;
     plan.start_nodes.push_back(pieces[0].source_node);
     plan.pieces.emplace_back(std::move(run));
     return plan;
   }
-  plan.first_source_node = pieces[first].source_node;
   const std::size_t count = contour.closed ? n : n - first;
   for (std::size_t k = 0; k < count; ++k) {
     const std::size_t i = (first + k) % n;

@@ -35,7 +35,6 @@ struct SmoothRun {
 struct ContourPlan {
   std::vector<std::variant<Line, SmoothRun>> pieces;  ///< in order, each starting where the last ended
   bool closed = true;
-  std::size_t first_source_node = 0;  ///< the source node the first piece starts at
   std::vector<std::size_t> start_nodes;  ///< the source node each piece starts at
 };
 
