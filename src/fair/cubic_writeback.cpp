@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <span>
 #include <functional>
 #include <limits>
 #include <numbers>
 #include <numeric>
+#include <span>
 
 #include "geom/curvature.hpp"
 #include "geom/g2_hermite.hpp"
@@ -207,10 +207,9 @@ std::vector<Vec2> cubic_points(const Cubic& c) {
   return pts;
 }
 
-// The two-sided distance between a cubic and the path's points; past `stop_above`, only that
+// The two-sided distance between a cubic's points and the path's; past `stop_above`, only that
 // it is past.
-double cubic_deviation(const Cubic& c, const std::vector<Vec2>& lac, double stop_above) {
-  const std::vector<Vec2> pts = cubic_points(c);
+double cubic_deviation(std::span<const Vec2> pts, const std::vector<Vec2>& lac, double stop_above) {
   const double there = directed_hausdorff(pts, lac, stop_above);
   return there > stop_above ? there : std::max(there, directed_hausdorff(lac, pts, stop_above));
 }
@@ -280,8 +279,9 @@ class SpanWriter {
       if (std::min(distance(c.p[0], c.p[1]), distance(c.p[2], c.p[3])) < min_handle_fraction * chord) continue;
       // Handles that overreach fold the cubic back on itself (a loop or a cusp), which may
       // stay within the budget of the path yet turns by half a turn more than it.
-      if (absolute_turning(pa.tangent, cubic_points(c), pb.tangent) > turning + fold_margin) continue;
-      const double d = cubic_deviation(c, lac, std::min(cap, best.deviation));
+      const std::vector<Vec2> pts = cubic_points(c);
+      if (absolute_turning(pa.tangent, pts, pb.tangent) > turning + fold_margin) continue;
+      const double d = cubic_deviation(pts, lac, std::min(cap, best.deviation));
       if (d < best.deviation && d <= cap) best = {c, d};
       else if (!best.cubic) best.deviation = std::min(best.deviation, d);
     }
