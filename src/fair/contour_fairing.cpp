@@ -153,7 +153,7 @@ Attempt fair_with_budgets(const ContourPlan& plan, const FairSettings& settings,
       return a;
     }
   }
-  const auto g3_run_at = [&](std::size_t i) { return runs[i] && runs[i]->g3 ? &*runs[i] : nullptr; };
+  const auto g3_run_at = [&](std::size_t i) { return runs[i] && runs[i]->g3() ? &*runs[i] : nullptr; };
   NodeAssembler assembler;
   bool previous_ends_smooth = false;  // how the last piece ended: the join to the next piece
   std::vector<bool> smooth_before(count, false);  // the join in front of each piece
@@ -177,7 +177,7 @@ Attempt fair_with_budgets(const ContourPlan& plan, const FairSettings& settings,
     const SmoothRun& run = std::get<SmoothRun>(plan.pieces[i]);
     const FairedRun& faired = *runs[i];
     a.guide_stretches += faired.guide_stretches;
-    if (faired.g3) ++a.g3_runs, a.g2_line_joins += faired.g2_line_joins;
+    if (faired.g3()) ++a.g3_runs, a.g2_line_joins += faired.g2_line_joins;
     else if (!faired.g3_shortfall.empty()) a.g3_shortfalls.push_back(faired.g3_shortfall);
     // A closed run's chains meet at inflections, G1 there like every join inside a run.
     const bool start_smooth = run.closed || run.start.kind == RunEndKind::line;

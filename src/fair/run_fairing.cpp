@@ -453,7 +453,6 @@ void reexpress_as_g3(FairedRun& result, const RunReference& source, const Smooth
       if (worst <= budget) {
         adopt_spirals(result.chains, *problem, std::move(g3.spirals));
         result.deviation = worst;
-        result.g3 = true;
         result.g2_line_joins = g2_line_joins;
         return;
       }
@@ -472,7 +471,6 @@ void reexpress_as_g3(FairedRun& result, const RunReference& source, const Smooth
 }
 
 }  // namespace
-
 
 LacPoint FairedChain::start_frame() const {
   if (!spirals.empty()) return spirals.front().start();

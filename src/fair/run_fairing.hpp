@@ -46,11 +46,13 @@ struct FairedRun {
   std::vector<FairedChain> chains;  ///< in order along the run
   double deviation = 0.0;           ///< two-sided Hausdorff bound against the source run, font units
   int guide_stretches = 0;           ///< spans written from the guide (no chain within the budget)
-  bool g3 = false;  ///< its chains are G3 spirals (--continuity g3)
   int g2_line_joins = 0;  ///< of a G3 run, line joins held to G2 (no room on the line for G3)
   std::string g3_shortfall;  ///< --continuity g3: why the run stayed G2
   bool ok = false;
   std::string reason;  ///< why not, when not
+
+  /// Its chains are G3 spirals (--continuity g3): the G3 solve hands spirals to every chain or none.
+  bool g3() const { return !chains.empty() && !chains.front().spirals.empty(); }
 };
 
 FairedRun fair_run(const SmoothRun& run, const FairSettings& settings, double budget_units);
