@@ -97,14 +97,7 @@ struct EndMatch {
 template <typename Residual, typename Admissible>
 EndMatch match_end(Residual residual, Eigen::Vector3d p, Admissible admissible) {
   const auto jacobian = [&](const Eigen::Vector3d& at, const Eigen::Vector3d& f) {
-    Eigen::Matrix3d j;
-    for (int c = 0; c < 3; ++c) {
-      Eigen::Vector3d q = at;
-      const double h = 1e-7 * std::max(1.0, std::abs(at[c]));
-      q[c] += h;
-      j.col(c) = (residual(q) - f) / h;
-    }
-    return j;
+    return forward_difference_jacobian(residual, at, f);
   };
   const NewtonRun run = damped_newton(p, residual, jacobian, admissible, 1e-12, 60);
   EndMatch m;

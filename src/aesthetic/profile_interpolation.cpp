@@ -1,9 +1,10 @@
 #include "aesthetic/profile_interpolation.hpp"
 
-#include <Eigen/Dense>
 #include <cmath>
-#include <optional>
 #include <numbers>
+#include <optional>
+
+#include <Eigen/Dense>
 
 #include "aesthetic/clothoid_g1.hpp"
 #include "geom/damped_newton.hpp"
@@ -61,13 +62,7 @@ void settle_tangents(std::span<const InterpolationPoint> points, std::vector<dou
     return r;
   };
   const auto jacobian = [&](const Eigen::VectorXd& x, const Eigen::VectorXd& r) {
-    Eigen::MatrixXd J(r.size(), x.size());
-    for (Eigen::Index j = 0; j < x.size(); ++j) {
-      Eigen::VectorXd moved = x;
-      moved[j] += 1e-7;
-      J.col(j) = (residuals(moved) - r) / 1e-7;
-    }
-    return J;
+    return forward_difference_jacobian(residuals, x, r);
   };
   Eigen::VectorXd x(static_cast<Eigen::Index>(free.size()));
   for (std::size_t j = 0; j < free.size(); ++j) x[static_cast<Eigen::Index>(j)] = theta[free[j]];

@@ -4,7 +4,9 @@
 // falls at an admissible point (lac-math.md §7.1's recipe).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
+#include <type_traits>
 #include <utility>
 
 #include <Eigen/Dense>
@@ -18,6 +20,21 @@ struct NewtonRun {
   int iterations = 0;
   double residual = 0.0;  ///< max |F| at the point reached
 };
+
+/// J of `residual` at x by forward differences, f being F(x): column c from a step of
+/// 1e-7·max(1, |x_c|). Dense; fixed-size where x and F are.
+template <class Vector, class Residual>
+auto forward_difference_jacobian(Residual& residual, const Vector& x, const std::invoke_result_t<Residual&, const Vector&>& f) {
+  using F = std::invoke_result_t<Residual&, const Vector&>;
+  Eigen::Matrix<double, F::RowsAtCompileTime, Vector::RowsAtCompileTime> jac(f.size(), x.size());
+  for (Eigen::Index c = 0; c < x.size(); ++c) {
+    Vector moved = x;
+    const double h = 1e-7 * std::max(1.0, std::abs(x[c]));
+    moved[c] += h;
+    jac.col(c) = (residual(moved) - f) / h;
+  }
+  return jac;
+}
 
 /// From x until max |F(x)| ≤ tolerance; x is left at the last point reached. `jacobian(x, f)`
 /// gives J at x, f being F(x); `admissible(x)` keeps iterates inside the problem's domain; a
