@@ -247,7 +247,7 @@ class SpanWriter {
 
   void fit(double a, double b, std::optional<Vec2> start_step, std::optional<Vec2> end_step, int depth,
            std::vector<Piece>& pieces) {
-    Fitted f = best_cubic(a, b);
+    Fitted f = best_cubic(a, b, start_step, end_step);
     if (f.within(budget_) || depth >= max_depth || distance(path_.at(a).point, path_.at(b).point) < min_chord) {
       if (!f.cubic) {  // no G2 cubic at all: keep G1 with third-chord handles
         const LacPoint pa = path_.at(a), pb = path_.at(b);
@@ -266,14 +266,19 @@ class SpanWriter {
   }
 
  private:
-  // The G2 Hermite cubic of [a, b] nearest the path, when one is within `cap`; else a
-  // deviation past `cap` (a cubic past it is not measured to the end).
-  Fitted best_cubic(double a, double b, double cap = std::numeric_limits<double>::infinity()) const {
+  // The G2 Hermite cubic of [a, b] for the writeback: of those within the budget, the one whose
+  // ends the grid sets finest (node_coarseness; a span often has a lopsided solution nearest
+  // the path, whose short handle leaves whole steps too coarse to keep G2, and a balanced one
+  // a little farther), else the nearest when one is within `cap`; else a deviation past `cap`
+  // (a cubic past it is not measured to the end).
+  Fitted best_cubic(double a, double b, std::optional<Vec2> start_step, std::optional<Vec2> end_step,
+                    double cap = std::numeric_limits<double>::infinity()) const {
     const LacPoint pa = path_.at(a), pb = path_.at(b);
     const std::vector<Vec2> lac = path_.points(a, b);
     const double chord = distance(pa.point, pb.point);
     const double turning = absolute_turning(pa.tangent, lac, pb.tangent);
     Fitted best;
+    double finest = infeasible;
     for (const Cubic& c : g2_hermite_cubics({pa.point, pa.tangent, pa.curvature}, {pb.point, pb.tangent, pb.curvature})) {
       // A handle much shorter than the chord crowds the curvature into the node.
       if (std::min(distance(c.p[0], c.p[1]), distance(c.p[2], c.p[3])) < min_handle_fraction * chord) continue;
@@ -281,9 +286,15 @@ class SpanWriter {
       // stay within the budget of the path yet turns by half a turn more than it.
       const std::vector<Vec2> pts = cubic_points(c);
       if (absolute_turning(pa.tangent, pts, pb.tangent) > turning + fold_margin) continue;
-      const double d = cubic_deviation(pts, lac, std::min(cap, best.deviation));
-      if (d < best.deviation && d <= cap) best = {c, d};
-      else if (!best.cubic) best.deviation = std::min(best.deviation, d);
+      const bool have_within = best.within(budget_);
+      const double d = cubic_deviation(pts, lac, have_within ? budget_ : std::min(cap, std::max(best.deviation, budget_)));
+      if (d <= budget_) {
+        const double q = std::max(node_coarseness(c, SegmentEnd::start, start_step), node_coarseness(c, SegmentEnd::end, end_step));
+        if (!have_within || q < finest || (q == finest && d < best.deviation)) best = {c, d}, finest = q;
+      } else if (!have_within) {
+        if (d < best.deviation && d <= cap) best = {c, d};
+        else if (!best.cubic) best.deviation = std::min(best.deviation, d);
+      }
     }
     return best;
   }
@@ -329,7 +340,7 @@ class SpanWriter {
         if (std::none_of(best[i].begin(), best[i].end(), [](const Best& b) { return b.coarsest < infeasible; })) continue;
         for (std::size_t j = i + 1; j < n; ++j) {
           if (i == 0 && j == n - 1) break;  // the whole span: the caller found it too far
-          const Fitted f = best_cubic(nodes[i].sigma, nodes[j].sigma, far_off * budget_);
+          const Fitted f = best_cubic(nodes[i].sigma, nodes[j].sigma, nodes[i].step, nodes[j].step, far_off * budget_);
           // Far off, a longer cubic from i fares no better (where no G2 cubic exists, it may).
           if (f.deviation > far_off * budget_ && f.deviation < no_cubic) break;
           if (!f.within(budget_)) continue;
