@@ -1,8 +1,10 @@
 #include "fair/handle_steps.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <map>
 
 #include "fair/cubic_change.hpp"
 #include "geom/curvature.hpp"
@@ -12,6 +14,7 @@ namespace gf {
 namespace {
 
 constexpr int reach = 3;              // whole steps either way from the rounded length
+constexpr int max_passes = 8;         // of choosing steps and nudging nodes in turn
 constexpr double target_jump = 0.03;  // below the check's 5 %, with room for its sampling
 constexpr double wrong_way = 1e4;     // an inflection or extremum the unrounded cubic lacks
 constexpr double infeasible = std::numeric_limits<double>::infinity();
@@ -58,12 +61,74 @@ std::vector<Vec2> handles_meeting_line(const OutlineNode& node, std::optional<Ve
   return {line_end.point + line_dir * whole_steps(line_end.point, h, line_dir, 1.0)};
 }
 
-// How far the cubic from node i may move from its unrounded self to gain G2: its allowance,
-// or as far as rounding alone already put it.
-double allowed_move(const Cubic& rounded, const Cubic& unrounded, const HandleStepLimits& limits, std::size_t i) {
-  const double allowance = limits.allowance_at(i);
-  return std::max(allowance, moved_distance(rounded, unrounded, allowance));
-}
+// Which nodes of an outline join two cubics, meet a line, or start a cubic.
+struct OutlineJoins {
+  const std::vector<OutlineNode>& nodes;
+  bool closed;
+
+  std::size_t size() const { return nodes.size(); }
+  bool is_cubic(std::size_t i) const {
+    const std::size_t n = size();
+    return (closed || i + 1 < n) && nodes[i].out_handle && nodes[(i + 1) % n].in_handle;
+  }
+  bool interior(std::size_t i) const { return closed || (i > 0 && i + 1 < size()); }
+  /// A smooth node between two cubics couples them.
+  bool joins_cubics(std::size_t i) const {
+    return interior(i) && nodes[i].smooth && is_cubic(i) && is_cubic((i + size() - 1) % size());
+  }
+  /// A smooth node between a cubic and a line wants κ = 0 on its cubic's side.
+  bool meets_line(std::size_t i) const {
+    return interior(i) && nodes[i].smooth && is_cubic(i) != is_cubic((i + size() - 1) % size());
+  }
+};
+
+// What the choices weigh of a candidate cubic.
+struct CubicTraits {
+  double k_start = 0.0, k_end = 0.0;
+  double moved = 0.0;  ///< from its unrounded self, as moved_distance measures it within the allowance
+  CurvatureShape shape;
+  int extrema = 0;  ///< horizontal or vertical turns inside
+};
+
+// Every cubic of the outline against its unrounded self. How far each may move to gain G2 is
+// set once: its allowance, or as far as rounding alone already put it. Each candidate is
+// measured once, however many passes weigh it.
+class CubicJudge {
+ public:
+  CubicJudge(const std::vector<OutlineNode>& rounded, const std::vector<OutlineNode>& ideal,
+             const OutlineJoins& joins, const HandleStepLimits& limits)
+      : unrounded_(rounded.size()), allowed_(rounded.size(), 0.0), ideal_(rounded.size()), seen_(rounded.size()) {
+    for (std::size_t i = 0; i < rounded.size(); ++i) {
+      if (!joins.is_cubic(i)) continue;
+      unrounded_[i] = outline_cubic(ideal, i);
+      const double allowance = limits.allowance_at(i);
+      allowed_[i] = std::max(allowance, moved_distance(outline_cubic(rounded, i), unrounded_[i], allowance));
+      ideal_[i] = measure(i, unrounded_[i]);
+    }
+  }
+
+  double allowed(std::size_t i) const { return allowed_[i]; }
+  const CubicTraits& unrounded(std::size_t i) const { return ideal_[i]; }
+
+  /// The traits of `c` in the place of cubic i.
+  const CubicTraits& traits(std::size_t i, const Cubic& c) {
+    const auto [it, fresh] = seen_[i].try_emplace(std::array{c.p[0].x, c.p[0].y, c.p[1].x, c.p[1].y,
+                                                             c.p[2].x, c.p[2].y, c.p[3].x, c.p[3].y});
+    if (fresh) it->second = measure(i, c);
+    return it->second;
+  }
+
+ private:
+  CubicTraits measure(std::size_t i, const Cubic& c) const {
+    return {node_curvature(c, SegmentEnd::start), node_curvature(c, SegmentEnd::end),
+            moved_distance(c, unrounded_[i], allowed_[i]), curvature_shape(c), inner_axis_extrema(c)};
+  }
+
+  std::vector<Cubic> unrounded_;
+  std::vector<double> allowed_;
+  std::vector<CubicTraits> ideal_;
+  std::vector<std::map<std::array<double, 8>, CubicTraits>> seen_;
+};
 
 // One cubic of the outline and every choice of its two handles (state = out·ins + in).
 struct CubicChoices {
@@ -74,9 +139,9 @@ struct CubicChoices {
   std::size_t states() const { return outs.size() * ins.size(); }
 };
 
-CubicChoices cubic_choices(const std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal,
-                           std::span<const std::optional<Vec2>> steps, std::size_t i, std::size_t j,
-                           const HandleStepLimits& limits, bool line_before, bool line_after) {
+CubicChoices cubic_choices(const std::vector<OutlineNode>& nodes, std::span<const std::optional<Vec2>> steps,
+                           std::size_t i, std::size_t j, CubicJudge& judge, double flat, bool line_before,
+                           bool line_after) {
   CubicChoices c;
   c.start = i, c.end = j;
   c.outs = handle_candidates(nodes[i], steps[i], true);
@@ -87,35 +152,30 @@ CubicChoices cubic_choices(const std::vector<OutlineNode>& nodes, const std::vec
   };
   if (line_before && steps[i]) add(c.ins, handles_meeting_line(nodes[j], steps[j], false, nodes[i], *steps[i]));
   if (line_after && steps[j]) add(c.outs, handles_meeting_line(nodes[i], steps[i], true, nodes[j], *steps[j]));
-  const Cubic unrounded = outline_cubic(ideal, i);
   const Vec2 p0 = nodes[i].point, p3 = nodes[j].point;
-  // The rounded handles come first among the candidates: the cubic as rounding left it.
-  const double allowed = allowed_move(outline_cubic(nodes, i), unrounded, limits, i);
-  const CurvatureShape ideal_shape = curvature_shape(unrounded);
-  const int ideal_extrema = inner_axis_extrema(unrounded);
+  const double allowed = judge.allowed(i);
+  const CubicTraits& ideal = judge.unrounded(i);
   for (const Vec2 out : c.outs)
     for (const Vec2 in : c.ins) {
-      const Cubic cubic{p0, out, in, p3};
-      const double ks = node_curvature(cubic, SegmentEnd::start), ke = node_curvature(cubic, SegmentEnd::end);
-      const double moved = moved_distance(cubic, unrounded, allowed);
-      if (moved > allowed) {
-        c.k_start.push_back(ks), c.k_end.push_back(ke), c.cost.push_back(infeasible);
+      const CubicTraits& t = judge.traits(i, Cubic{p0, out, in, p3});
+      c.k_start.push_back(t.k_start), c.k_end.push_back(t.k_end);
+      if (t.moved > allowed) {
+        c.cost.push_back(infeasible);
         continue;
       }
-      double cost = 0.01 * (moved / allowed) * (moved / allowed);
+      double cost = allowed > 0.0 ? 0.01 * (t.moved / allowed) * (t.moved / allowed) : 0.0;
       // A curve meeting a line tangentially meets it with κ = 0.
-      if (line_before) cost += jump_cost(jump(ks, 0.0, limits.flat_curvature));
-      if (line_after) cost += jump_cost(jump(ke, 0.0, limits.flat_curvature));
+      if (line_before) cost += jump_cost(jump(t.k_start, 0.0, flat));
+      if (line_after) cost += jump_cost(jump(t.k_end, 0.0, flat));
       // Where the grid allows only near zero, or a corner's handle moves, the cubic must not
       // bend the other way near its end: an inflection the unrounded cubic does not have.
-      const CurvatureShape shape = curvature_shape(cubic);
-      if (shape.sign_changes > ideal_shape.sign_changes) cost += wrong_way;
+      if (t.shape.sign_changes > ideal.shape.sign_changes) cost += wrong_way;
       // Nor turn horizontal or vertical inside: an extremum without a node.
-      if (inner_axis_extrema(cubic) > ideal_extrema) cost += wrong_way;
+      if (t.extrema > ideal.extrema) cost += wrong_way;
       // Nor gain curvature variation inside (a spike a comb would show), beyond a little.
-      const double excess = (shape.variation - ideal_shape.variation) / std::max(ideal_shape.largest, limits.flat_curvature);
+      const double excess = (t.shape.variation - ideal.shape.variation) / std::max(ideal.shape.largest, flat);
       if (excess > free_variation) cost += variation_weight * (excess - free_variation);
-      c.k_start.push_back(ks), c.k_end.push_back(ke), c.cost.push_back(cost);
+      c.cost.push_back(cost);
     }
   return c;
 }
@@ -159,27 +219,6 @@ RunChoice best_run(const std::vector<CubicChoices>& run, double flat, std::optio
   return best;
 }
 
-// Which nodes of an outline join two cubics, meet a line, or start a cubic.
-struct OutlineJoins {
-  const std::vector<OutlineNode>& nodes;
-  bool closed;
-
-  std::size_t size() const { return nodes.size(); }
-  bool is_cubic(std::size_t i) const {
-    const std::size_t n = size();
-    return (closed || i + 1 < n) && nodes[i].out_handle && nodes[(i + 1) % n].in_handle;
-  }
-  bool interior(std::size_t i) const { return closed || (i > 0 && i + 1 < size()); }
-  /// A smooth node between two cubics couples them.
-  bool joins_cubics(std::size_t i) const {
-    return interior(i) && nodes[i].smooth && is_cubic(i) && is_cubic((i + size() - 1) % size());
-  }
-  /// A smooth node between a cubic and a line wants κ = 0 on its cubic's side.
-  bool meets_line(std::size_t i) const {
-    return interior(i) && nodes[i].smooth && is_cubic(i) != is_cubic((i + size() - 1) % size());
-  }
-};
-
 // The curvature jump at node k: between its two cubics, or from zero where it meets a line;
 // none elsewhere.
 double join_jump(const OutlineJoins& joins, std::size_t k, double flat) {
@@ -197,13 +236,13 @@ double join_jump(const OutlineJoins& joins, std::size_t k, double flat) {
 // Where whole steps alone leave a jump, the node itself may move a unit (its handles with it,
 // G1 stays exact) and its two handles a step or three: the curvatures of both its cubics
 // change at both their ends, so the jumps at the two neighbours count too.
-void nudge_jumping_nodes(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal,
-                         std::span<const std::optional<Vec2>> steps, const OutlineJoins& joins,
-                         const HandleStepLimits& limits) {
+// Only the nodes `candidates` lists are tried; returns those it moved.
+std::vector<std::size_t> nudge_jumping_nodes(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal,
+                                             std::span<const std::optional<Vec2>> steps, const OutlineJoins& joins,
+                                             std::span<const std::size_t> candidates, CubicJudge& judge, double flat) {
   const std::size_t n = nodes.size();
   auto cubic_at = [&](std::size_t i) { return outline_cubic(nodes, i); };
-  auto ideal_at = [&](std::size_t i) { return outline_cubic(ideal, i); };
-  auto node_cost = [&](std::size_t k) { return jump_cost(join_jump(joins, k, limits.flat_curvature)); };
+  auto node_cost = [&](std::size_t k) { return jump_cost(join_jump(joins, k, flat)); };
   auto around = [&](std::size_t i) {
     double c = 0.0;
     for (const std::size_t k : {(i + n - 1) % n, i, (i + 1) % n}) c += node_cost(k);
@@ -214,17 +253,14 @@ void nudge_jumping_nodes(std::vector<OutlineNode>& nodes, const std::vector<Outl
       if (node_cost(k) > target_jump * target_jump) return true;
     return false;
   };
-  for (std::size_t i = 0; i < n; ++i) {
+  std::vector<std::size_t> nudged;
+  for (const std::size_t i : candidates) {
     if (!joins.joins_cubics(i) || !steps[i] || !fails_around(i)) continue;
     const std::size_t h = (i + n - 1) % n;
-    const double allowed_in = allowed_move(cubic_at(h), ideal_at(h), limits, h);
-    const double allowed_out = allowed_move(cubic_at(i), ideal_at(i), limits, i);
     // Nor may a nudge add an inflection or an H/V extremum without a node.
-    const auto features = [](const Cubic& c) { return std::pair{curvature_shape(c).sign_changes, inner_axis_extrema(c)}; };
     const auto most = [&](std::size_t k) {
-      const auto [a1, b1] = features(ideal_at(k));
-      const auto [a2, b2] = features(cubic_at(k));
-      return std::pair{std::max(a1, a2), std::max(b1, b2)};
+      const CubicTraits &a = judge.unrounded(k), &b = judge.traits(k, cubic_at(k));
+      return std::pair{std::max(a.shape.sign_changes, b.shape.sign_changes), std::max(a.extrema, b.extrema)};
     };
     const auto [changes_in, extrema_in] = most(h);
     const auto [changes_out, extrema_out] = most(i);
@@ -247,15 +283,48 @@ void nudge_jumping_nodes(std::vector<OutlineNode>& nodes, const std::vector<Outl
           nodes[i].out_handle = p + d * (m_out + b);
           const double c = around(i);  // the cheap test first
           if (c >= best_cost) continue;
-          const Cubic in = cubic_at(h), out = cubic_at(i);
-          if (moved_distance(in, ideal_at(h), allowed_in) > allowed_in || moved_distance(out, ideal_at(i), allowed_out) > allowed_out) continue;
-          const auto [ci, ei] = features(in);
-          const auto [co, eo] = features(out);
-          if (ci > changes_in || co > changes_out || ei > extrema_in || eo > extrema_out) continue;
+          const CubicTraits &in = judge.traits(h, cubic_at(h)), &out = judge.traits(i, cubic_at(i));
+          if (in.moved > judge.allowed(h) || out.moved > judge.allowed(i)) continue;
+          if (in.shape.sign_changes > changes_in || out.shape.sign_changes > changes_out || in.extrema > extrema_in ||
+              out.extrema > extrema_out)
+            continue;
           best_cost = c, best = nodes[i];
         }
     }
     nodes[i] = best;
+    if (best != kept) nudged.push_back(i);
+  }
+  return nudged;
+}
+
+// The whole steps of one run of cubics joined at smooth nodes (the nodes starting them, in
+// order), chosen together (Viterbi; a run that closes on itself with each state of its first
+// cubic in turn).
+void choose_run_steps(std::vector<OutlineNode>& nodes, std::span<const std::optional<Vec2>> steps,
+                      const OutlineJoins& joins, std::span<const std::size_t> cubics, bool cycle, CubicJudge& judge,
+                      double flat) {
+  const std::size_t n = nodes.size();
+  std::vector<CubicChoices> run;
+  for (const std::size_t i : cubics) {
+    const std::size_t j = (i + 1) % n;
+    run.push_back(cubic_choices(nodes, steps, i, j, judge, flat, joins.meets_line(i), joins.meets_line(j)));
+  }
+  RunChoice best;
+  if (cycle) {
+    for (std::size_t first = 0; first < run[0].states(); ++first) {
+      if (run[0].cost[first] == infeasible) continue;
+      RunChoice c = best_run(run, flat, first);
+      if (c.cost < best.cost) best = std::move(c);
+    }
+  } else {
+    best = best_run(run, flat, std::nullopt);
+  }
+  if (best.cost == infeasible) return;
+  for (std::size_t k = 0; k < run.size(); ++k) {
+    const CubicChoices& c = run[k];
+    const std::size_t state = best.states[k];
+    nodes[c.start].out_handle = c.outs[state / c.ins.size()];
+    nodes[c.end].in_handle = c.ins[state % c.ins.size()];
   }
 }
 
@@ -277,45 +346,46 @@ void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<Outl
   if (n < 2) return;
   const OutlineJoins joins{nodes, closed};
 
-  std::vector<std::size_t> starts;  // cubics that begin a run
-  bool any_cubic = false;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!joins.is_cubic(i)) continue;
-    any_cubic = true;
-    if (!joins.joins_cubics(i)) starts.push_back(i);
-  }
-  if (!any_cubic) return;
-  const bool cycle = starts.empty();
-  if (cycle) starts.push_back(0);
+  // The runs of cubics joined at smooth nodes, each by the nodes starting its cubics.
+  std::vector<std::vector<std::size_t>> runs;
+  for (std::size_t i = 0; i < n; ++i)
+    if (joins.is_cubic(i) && !joins.joins_cubics(i)) runs.push_back({i});
+  const bool cycle = runs.empty();
+  if (cycle && joins.is_cubic(0)) runs.push_back({0});
+  if (runs.empty()) return;
+  std::vector<std::size_t> run_of(n, runs.size());  // the run each node inside one belongs to
+  for (std::size_t r = 0; r < runs.size(); ++r)
+    for (std::size_t j = (runs[r].back() + 1) % n; joins.joins_cubics(j) && j != runs[r].front(); j = (j + 1) % n) {
+      runs[r].push_back(j);
+      run_of[j] = r;
+    }
 
-  for (const std::size_t s : starts) {
-    std::vector<CubicChoices> run;
-    for (std::size_t i = s;;) {
-      const std::size_t j = (i + 1) % n;
-      run.push_back(cubic_choices(nodes, ideal, steps, i, j, limits, joins.meets_line(i), joins.meets_line(j)));
-      if (!joins.joins_cubics(j) || (cycle && j == s)) break;
-      i = j;
+  // A nudged node changes the curvature its neighbours' handles give (its handles are their
+  // far handles), and the steps chosen are the centre of the next choice's reach: a run is
+  // chosen again while it or a nudge changes it and a join of it still jumps.
+  auto still_jumps = [&](std::span<const std::size_t> run) {
+    for (const std::size_t k : run)
+      if (join_jump(joins, k, limits.flat_curvature) > target_jump) return true;
+    return join_jump(joins, (run.back() + 1) % n, limits.flat_curvature) > target_jump;
+  };
+  CubicJudge judge(nodes, ideal, joins, limits);
+  std::vector<bool> again(runs.size(), true);
+  for (int pass = 0; pass < max_passes; ++pass) {
+    std::vector<std::size_t> inside;
+    for (std::size_t r = 0; r < runs.size(); ++r) {
+      if (!again[r]) continue;
+      const std::vector<OutlineNode> before = nodes;
+      choose_run_steps(nodes, steps, joins, runs[r], cycle, judge, limits.flat_curvature);
+      again[r] = nodes != before;
+      inside.insert(inside.end(), runs[r].begin() + 1, runs[r].end());
+      if (cycle) inside.push_back(runs[r].front());
     }
-    RunChoice best;
-    if (cycle) {
-      for (std::size_t first = 0; first < run[0].states(); ++first) {
-        if (run[0].cost[first] == infeasible) continue;
-        RunChoice c = best_run(run, limits.flat_curvature, first);
-        if (c.cost < best.cost) best = std::move(c);
-      }
-    } else {
-      best = best_run(run, limits.flat_curvature, std::nullopt);
-    }
-    if (best.cost == infeasible) continue;
-    for (std::size_t k = 0; k < run.size(); ++k) {
-      const CubicChoices& c = run[k];
-      const std::size_t state = best.states[k];
-      nodes[c.start].out_handle = c.outs[state / c.ins.size()];
-      nodes[c.end].in_handle = c.ins[state % c.ins.size()];
-    }
+    std::sort(inside.begin(), inside.end());
+    for (const std::size_t i : nudge_jumping_nodes(nodes, ideal, steps, joins, inside, judge, limits.flat_curvature))
+      again[run_of[i]] = true;
+    for (std::size_t r = 0; r < runs.size(); ++r) again[r] = again[r] && still_jumps(runs[r]);
+    if (std::none_of(again.begin(), again.end(), [](bool b) { return b; })) break;
   }
-
-  nudge_jumping_nodes(nodes, ideal, steps, joins, limits);
 }
 
 }  // namespace gf

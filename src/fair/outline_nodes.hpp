@@ -20,6 +20,8 @@ struct OutlineNode {
   /// (0, ±1) at horizontal and vertical extrema, short diagonals such as (2, 1) where a span
   /// was cut.
   std::optional<Vec2> grid_step;
+
+  friend bool operator==(const OutlineNode&, const OutlineNode&) = default;
 };
 
 /// The cubic from node i to node i + 1 (node 0 after the last): both handles must be present.
