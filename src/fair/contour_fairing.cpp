@@ -50,12 +50,14 @@ struct Budgets {
 };
 
 // Runs already faired for this contour: a plan made again with a corner smoothed keeps every
-// run away from that corner as it was, and those need not be faired twice.
+// run away from that corner as it was, and those need not be faired twice. Where the budgets
+// were halved because a run failed (not because the outline strayed), a run faired within a
+// larger budget stands too.
 class FairedRuns {
  public:
-  const FairedRun& get(const SmoothRun& run, const FairSettings& settings, double budget) {
+  const FairedRun& get(const SmoothRun& run, const FairSettings& settings, double budget, bool larger_stands) {
     for (const Entry& e : entries_)
-      if (e.budget == budget && e.run == run) return e.faired;
+      if (e.run == run && (e.budget == budget || (larger_stands && e.faired.ok && e.budget > budget))) return e.faired;
     entries_.push_back({run, budget, fair_run(run, settings, budget)});
     return entries_.back().faired;
   }
@@ -140,14 +142,15 @@ void record_chain(const FairedChain& chain, bool smooth_start, FairedPieces& out
 LacPoint faired_start(const FairedRun& run) { return run.chains.front().start_frame(); }
 LacPoint faired_end(const FairedRun& run) { return run.chains.back().end_frame(); }
 
-Attempt fair_with_budgets(const ContourPlan& plan, const FairSettings& settings, Budgets budgets, FairedRuns& cache) {
+Attempt fair_with_budgets(const ContourPlan& plan, const FairSettings& settings, Budgets budgets, FairedRuns& cache,
+                          bool after_run_failure) {
   Attempt a;
   const std::size_t count = plan.pieces.size();
   std::vector<std::optional<FairedRun>> runs(count);
   for (std::size_t i = 0; i < count; ++i) {
     const SmoothRun* run = std::get_if<SmoothRun>(&plan.pieces[i]);
     if (!run) continue;
-    runs[i] = cache.get(*run, settings, budgets.chain);
+    runs[i] = cache.get(*run, settings, budgets.chain, after_run_failure);
     if (!runs[i]->ok) {
       a.failure = runs[i]->reason;
       return a;
@@ -266,9 +269,12 @@ ContourFairing fair_planned(const Contour& source, const ContourPlan& plan, cons
   out.contour = source;
   const double rounding = settings.round_to_integers ? 0.5 : 0.0;
   double available = std::max(settings.tolerance_units - rounding, 0.25 * settings.tolerance_units);
+  bool run_failed = false;
   for (int attempt = 0; attempt < 2; ++attempt, available *= 0.5) {
-    Attempt a = fair_with_budgets(plan, settings, {settings.chain_share * available, (1.0 - settings.chain_share) * available}, cache);
-    if (!a.failure.empty()) {
+    Attempt a = fair_with_budgets(plan, settings, {settings.chain_share * available, (1.0 - settings.chain_share) * available},
+                                  cache, run_failed);
+    run_failed = !a.failure.empty();
+    if (run_failed) {
       out.reason = a.failure;
       continue;
     }
