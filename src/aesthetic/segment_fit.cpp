@@ -140,9 +140,11 @@ SegmentFit fit_three_point(Vec2 p0, Vec2 p1, Vec2 p2, double alpha) {
       fit.reason = "too close to the edge of α's drawable region for double precision";
       return fit;
     }
+    // x to 40 bits (about 1e-12 of itself): end curvatures a thousand times finer than the G2
+    // solve's 1e-9, at a tenth less of the whole fairing's time than 50 bits.
     std::uintmax_t iterations = 100;
     const auto [a, b] = boost::math::tools::toms748_solve(excess, lo, hi, f_lo, f_hi,
-                                                          boost::math::tools::eps_tolerance<double>(50), iterations);
+                                                          boost::math::tools::eps_tolerance<double>(40), iterations);
     const double x = 0.5 * (a + b);
     const NormalisedLac curve{alpha, lambda_of(alpha, td, x)};
     fit.segment = place(curve, td, x, *t, reversed, x == last_x ? last_end : standard_end(curve, td, x));
