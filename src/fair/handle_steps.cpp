@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <numeric>
 
 #include "fair/cubic_change.hpp"
 #include "geom/curvature.hpp"
@@ -233,6 +234,68 @@ double join_jump(const OutlineJoins& joins, std::size_t k, double flat) {
   return jump(kappa, 0.0, flat);
 }
 
+// Where rounding or a nudge may put a node: its grid point and those next to it that are still
+// next to the grid point nearest its unrounded place.
+std::vector<Vec2> node_places(Vec2 at, Vec2 unrounded) {
+  const Vec2 nearest = nearest_grid_point(unrounded);
+  std::vector<Vec2> out;
+  for (int k = 0; k < 9; ++k) {
+    const Vec2 p = at + Vec2{double(k % 3 - 1), double(k / 3 - 1)};
+    if (std::abs(p.x - nearest.x) <= 1.0 && std::abs(p.y - nearest.y) <= 1.0) out.push_back(p);
+  }
+  return out;
+}
+
+// A change at node i of an outline: it changes both cubics at i, so the curvature jumps at i
+// and at its two neighbours. It is allowed when neither cubic moves farther from its
+// unrounded self than its allowance, nor gains an inflection or an H/V extremum that neither
+// its unrounded self nor the cubic before the change has.
+class NodeChange {
+ public:
+  NodeChange(const std::vector<OutlineNode>& nodes, const OutlineJoins& joins, CubicJudge& judge, double flat,
+             std::size_t i)
+      : nodes_(nodes), joins_(joins), judge_(judge), flat_(flat), i_(i), h_((i + nodes.size() - 1) % nodes.size()) {
+    for (const std::size_t k : {h_, i_}) {
+      const CubicTraits &a = judge.unrounded(k), &b = judge.traits(k, outline_cubic(nodes, k));
+      most_.push_back({std::max(a.shape.sign_changes, b.shape.sign_changes), std::max(a.extrema, b.extrema)});
+    }
+  }
+
+  /// The jump costs at node i and its neighbours, as the outline stands.
+  double cost() const {
+    const std::size_t n = nodes_.size();
+    double c = 0.0;
+    for (const std::size_t k : {h_, i_, (i_ + 1) % n}) c += jump_cost(join_jump(joins_, k, flat_));
+    return c;
+  }
+  /// Whether any of those jumps is over the target.
+  bool jumps() const {
+    const std::size_t n = nodes_.size();
+    for (const std::size_t k : {h_, i_, (i_ + 1) % n})
+      if (jump_cost(join_jump(joins_, k, flat_)) > target_jump * target_jump) return true;
+    return false;
+  }
+
+  /// Whether the outline as it stands is an allowed change.
+  bool allowed() const {
+    for (std::size_t side = 0; side < 2; ++side) {
+      const std::size_t k = side == 0 ? h_ : i_;
+      const CubicTraits& t = judge_.traits(k, outline_cubic(nodes_, k));
+      if (t.moved > judge_.allowed(k) || t.shape.sign_changes > most_[side].first || t.extrema > most_[side].second)
+        return false;
+    }
+    return true;
+  }
+
+ private:
+  const std::vector<OutlineNode>& nodes_;
+  const OutlineJoins& joins_;
+  CubicJudge& judge_;
+  double flat_;
+  std::size_t i_, h_;
+  std::vector<std::pair<int, int>> most_;
+};
+
 // Where whole steps alone leave a jump, the node itself may move a unit (its handles with it,
 // G1 stays exact) and its two handles a step or three: the curvatures of both its cubics
 // change at both their ends, so the jumps at the two neighbours count too.
@@ -240,61 +303,111 @@ double join_jump(const OutlineJoins& joins, std::size_t k, double flat) {
 std::vector<std::size_t> nudge_jumping_nodes(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal,
                                              std::span<const std::optional<Vec2>> steps, const OutlineJoins& joins,
                                              std::span<const std::size_t> candidates, CubicJudge& judge, double flat) {
-  const std::size_t n = nodes.size();
-  auto cubic_at = [&](std::size_t i) { return outline_cubic(nodes, i); };
-  auto node_cost = [&](std::size_t k) { return jump_cost(join_jump(joins, k, flat)); };
-  auto around = [&](std::size_t i) {
-    double c = 0.0;
-    for (const std::size_t k : {(i + n - 1) % n, i, (i + 1) % n}) c += node_cost(k);
-    return c;
-  };
-  auto fails_around = [&](std::size_t i) {
-    for (const std::size_t k : {(i + n - 1) % n, i, (i + 1) % n})
-      if (node_cost(k) > target_jump * target_jump) return true;
-    return false;
-  };
   std::vector<std::size_t> nudged;
   for (const std::size_t i : candidates) {
-    if (!joins.joins_cubics(i) || !steps[i] || !fails_around(i)) continue;
-    const std::size_t h = (i + n - 1) % n;
-    // Nor may a nudge add an inflection or an H/V extremum without a node.
-    const auto most = [&](std::size_t k) {
-      const CubicTraits &a = judge.unrounded(k), &b = judge.traits(k, cubic_at(k));
-      return std::pair{std::max(a.shape.sign_changes, b.shape.sign_changes), std::max(a.extrema, b.extrema)};
-    };
-    const auto [changes_in, extrema_in] = most(h);
-    const auto [changes_out, extrema_out] = most(i);
+    if (!joins.joins_cubics(i) || !steps[i]) continue;
+    const NodeChange change(nodes, joins, judge, flat, i);
+    if (!change.jumps()) continue;
     const OutlineNode kept = nodes[i];
     const Vec2 d = *steps[i];
     const double m_in = whole_steps(kept.point, *kept.in_handle, d, -1.0);
     const double m_out = whole_steps(kept.point, *kept.out_handle, d, 1.0);
     OutlineNode best = kept;
-    double best_cost = around(i);
+    double best_cost = change.cost();
     // Still on a grid point next to the nearest one, as rounding placed every node.
-    const Vec2 nearest = nearest_grid_point(ideal[i].point);
-    for (int k = 0; k < 9; ++k) {
-      const Vec2 p = kept.point + Vec2{double(k % 3 - 1), double(k / 3 - 1)};
-      if (std::abs(p.x - nearest.x) > 1.0 || std::abs(p.y - nearest.y) > 1.0) continue;
+    for (const Vec2 p : node_places(kept.point, ideal[i].point))
       for (int a = -reach; a <= reach; ++a)
         for (int b = -reach; b <= reach; ++b) {
           if (m_in + a < 1.0 || m_out + b < 1.0) continue;
           nodes[i].point = p;
           nodes[i].in_handle = p - d * (m_in + a);
           nodes[i].out_handle = p + d * (m_out + b);
-          const double c = around(i);  // the cheap test first
-          if (c >= best_cost) continue;
-          const CubicTraits &in = judge.traits(h, cubic_at(h)), &out = judge.traits(i, cubic_at(i));
-          if (in.moved > judge.allowed(h) || out.moved > judge.allowed(i)) continue;
-          if (in.shape.sign_changes > changes_in || out.shape.sign_changes > changes_out || in.extrema > extrema_in ||
-              out.extrema > extrema_out)
-            continue;
-          best_cost = c, best = nodes[i];
+          const double c = change.cost();  // the cheap test first
+          if (c < best_cost && change.allowed()) best_cost = c, best = nodes[i];
         }
-    }
     nodes[i] = best;
     if (best != kept) nudged.push_back(i);
   }
   return nudged;
+}
+
+// The handle of `node` (an out-handle when sign is +1) exactly on the line through p along d:
+// for a smooth node a whole number m ≥ 1 of its steps from it, where the line crosses its
+// handle line there; for a corner, the grid point of the line nearest where its handle is.
+std::optional<Vec2> handle_on_line(const OutlineNode& node, std::optional<Vec2> step, double sign, Vec2 p, Vec2 d) {
+  if (!node.smooth) {
+    const Vec2 h = sign > 0.0 ? *node.out_handle : *node.in_handle;
+    return p + d * std::round(dot(h - p, d) / dot(d, d));
+  }
+  if (!step) return std::nullopt;
+  const double across = cross(d, *step);
+  if (across == 0.0) return std::nullopt;
+  const double m = -cross(d, node.point - p) / (sign * across);
+  if (m < 1.0 || m != std::round(m)) return std::nullopt;
+  return node.point + *step * (sign * m);
+}
+
+// The primitive grid directions within `most` radians of `tangent`, no component over 16.
+std::vector<Vec2> directions_near(Vec2 tangent, double most) {
+  const Vec2 t = tangent / norm(tangent);
+  std::vector<Vec2> out;
+  for (int x = -16; x <= 16; ++x)
+    for (int y = -16; y <= 16; ++y) {
+      const Vec2 d{double(x), double(y)};
+      if (std::gcd(std::abs(x), std::abs(y)) != 1 || dot(d, t) <= 0.0) continue;
+      if (std::abs(turning_angle(t, d)) <= most) out.push_back(d);
+    }
+  return out;
+}
+
+// An inflection node (κ = 0 on both sides before rounding) keeps κ = 0 on the grid only where
+// both far handles lie exactly on its tangent line, and each is a whole number of its own
+// node's steps from that node: the tangent line must cross both their handle lines at whole
+// steps. Where the node still jumps, the grid points next to it and the primitive directions
+// within `turn` of its tangent are tried for one whose line does; the far handles go there and
+// the node's own handles, whose lengths set its neighbours' curvature, a step or three either
+// way. Returns the nodes it moved (its direction changed in `steps`).
+std::vector<std::size_t> seat_inflections(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal,
+                                          std::vector<std::optional<Vec2>>& steps, const OutlineJoins& joins,
+                                          std::span<const std::size_t> candidates, CubicJudge& judge, double flat) {
+  constexpr double turn = 0.06;  // radians: a 30-unit handle's end moves under 2 units
+  const std::size_t n = nodes.size();
+  std::vector<std::size_t> seated;
+  for (const std::size_t i : candidates) {
+    const std::size_t h = (i + n - 1) % n, j = (i + 1) % n;
+    if (!joins.joins_cubics(i) || !steps[i]) continue;
+    if (std::abs(judge.unrounded(h).k_end) >= flat || std::abs(judge.unrounded(i).k_start) >= flat) continue;
+    if (join_jump(joins, i, flat) <= target_jump) continue;
+    const NodeChange change(nodes, joins, judge, flat, i);
+    const OutlineNode kept = nodes[i], kept_h = nodes[h], kept_j = nodes[j];
+    const OutlineNode& target = ideal[i];
+    double best_cost = change.cost();
+    std::optional<std::array<OutlineNode, 3>> best;
+    std::optional<Vec2> best_step;
+    for (const Vec2 d : directions_near(*target.out_handle - *target.in_handle, turn))
+      for (const Vec2 p : node_places(kept.point, target.point)) {
+        const std::optional<Vec2> far_in = handle_on_line(kept_h, steps[h], 1.0, p, d);
+        const std::optional<Vec2> far_out = handle_on_line(kept_j, steps[j], -1.0, p, d);
+        if (!far_in || !far_out) continue;
+        nodes[h].out_handle = far_in, nodes[j].in_handle = far_out, nodes[i].point = p;
+        const double m_in = std::max(1.0, whole_steps(target.point, *target.in_handle, d, -1.0));
+        const double m_out = std::max(1.0, whole_steps(target.point, *target.out_handle, d, 1.0));
+        for (int a = -reach; a <= reach; ++a)
+          for (int b = -reach; b <= reach; ++b) {
+            if (m_in + a < 1.0 || m_out + b < 1.0) continue;
+            nodes[i].in_handle = p - d * (m_in + a);
+            nodes[i].out_handle = p + d * (m_out + b);
+            const double c = change.cost();
+            if (c < best_cost && change.allowed()) best_cost = c, best = {nodes[h], nodes[i], nodes[j]}, best_step = d;
+          }
+      }
+    nodes[h] = kept_h, nodes[i] = kept, nodes[j] = kept_j;
+    if (!best) continue;
+    nodes[h] = (*best)[0], nodes[i] = (*best)[1], nodes[j] = (*best)[2];
+    steps[i] = best_step;
+    seated.push_back(i);
+  }
+  return seated;
 }
 
 // The whole steps of one run of cubics joined at smooth nodes (the nodes starting them, in
@@ -341,7 +454,7 @@ std::vector<Vec2> handles_near_line(Vec2 node, Vec2 step, double sign, Vec2 line
 }
 
 void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal,
-                         std::span<const std::optional<Vec2>> steps, bool closed, const HandleStepLimits& limits) {
+                         std::span<const std::optional<Vec2>> grid_steps, bool closed, const HandleStepLimits& limits) {
   const std::size_t n = nodes.size();
   if (n < 2) return;
   const OutlineJoins joins{nodes, closed};
@@ -369,6 +482,7 @@ void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<Outl
     return join_jump(joins, (run.back() + 1) % n, limits.flat_curvature) > target_jump;
   };
   CubicJudge judge(nodes, ideal, joins, limits);
+  std::vector<std::optional<Vec2>> steps(grid_steps.begin(), grid_steps.end());  // an inflection seated turns its own
   std::vector<bool> again(runs.size(), true);
   for (int pass = 0; pass < max_passes; ++pass) {
     std::vector<std::size_t> inside;
@@ -382,6 +496,8 @@ void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<Outl
     }
     std::sort(inside.begin(), inside.end());
     for (const std::size_t i : nudge_jumping_nodes(nodes, ideal, steps, joins, inside, judge, limits.flat_curvature))
+      again[run_of[i]] = true;
+    for (const std::size_t i : seat_inflections(nodes, ideal, steps, joins, inside, judge, limits.flat_curvature))
       again[run_of[i]] = true;
     for (std::size_t r = 0; r < runs.size(); ++r) again[r] = again[r] && still_jumps(runs[r]);
     if (std::none_of(again.begin(), again.end(), [](bool b) { return b; })) break;
