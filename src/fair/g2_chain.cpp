@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include <Eigen/Dense>
+#include <boost/math/tools/toms748_solve.hpp>
 
 #include "aesthetic/segment_fit.hpp"
 
@@ -60,29 +61,43 @@ std::optional<double> solve_junction(const LacChain& chain, std::size_t j) {
   const double phi0 = chain.tangent_angles[j];
   const std::optional<double> d0 = junction_mismatch(chain, j, phi0);
   if (!d0) return std::nullopt;
-  // D_j grows with φ_j: walk towards the root until the sign changes or feasibility ends.
+  // D_j grows with φ_j: walk towards the root until the sign changes or feasibility ends (then
+  // the last feasible angle is the nearest to the root there is), each step at least 1.6 times
+  // the last and half as far again as where the secant through the last two values meets zero.
   const double direction = *d0 > 0.0 ? -1.0 : 1.0;
-  double inside = phi0, step = 1e-3;
+  double inside = phi0, d_inside = *d0, step = 1e-3;
   std::optional<double> outside;
-  for (int it = 0; it < 40 && !outside; ++it, step *= 1.6) {
+  for (int it = 0; it < 40 && !outside; ++it) {
     const double trial = inside + direction * step;
     const std::optional<double> dt = junction_mismatch(chain, j, trial);
-    if (!dt) {  // infeasible: shrink the step from the last feasible angle
-      if (step < 1e-9) return std::nullopt;
+    if (!dt) {  // infeasible: shrink the step from the last feasible angle, to within 1e-6 rad of the edge
+      if (step < 1e-6) break;
       step /= 4.0;
       continue;
     }
-    if ((*dt > 0.0) != (*d0 > 0.0)) outside = trial;
-    else inside = trial;
+    if ((*dt > 0.0) != (*d0 > 0.0)) {
+      outside = trial;
+      break;
+    }
+    const double slope = (*dt - d_inside) / (trial - inside);
+    const double to_root = slope != 0.0 ? std::abs(*dt / slope) : 0.0;
+    inside = trial, d_inside = *dt;
+    step = std::max(1.6 * step, std::min(1.5 * to_root, 1.0));
   }
   if (!outside) return inside;
-  double lo = inside, hi = *outside;
-  for (int it = 0; it < 40; ++it) {
-    const double mid = 0.5 * (lo + hi);
-    const std::optional<double> dm = junction_mismatch(chain, j, mid);
-    if (!dm) return std::nullopt;
-    ((*dm > 0.0) == (*d0 > 0.0) ? lo : hi) = mid;
-  }
+  // TOMS 748 on the bracket: D_j is smooth and monotone there, so it needs a handful of the
+  // evaluations (two segment fits each) bisection to the same width took forty of. An
+  // infeasible angle inside the bracket ends the search.
+  bool infeasible = false;
+  const auto mismatch = [&](double phi) {
+    const std::optional<double> d = junction_mismatch(chain, j, phi);
+    infeasible = infeasible || !d;
+    return d.value_or(0.0);  // 0: the solver stops at once
+  };
+  std::uintmax_t iterations = 60;
+  const auto [lo, hi] = boost::math::tools::toms748_solve(mismatch, std::min(inside, *outside), std::max(inside, *outside),
+                                                          boost::math::tools::eps_tolerance<double>(48), iterations);
+  if (infeasible) return std::nullopt;
   return 0.5 * (lo + hi);
 }
 
