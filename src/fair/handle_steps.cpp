@@ -16,6 +16,7 @@ namespace {
 
 constexpr int reach = 3;              // whole steps either way from the rounded length
 constexpr int max_passes = 8;         // of choosing steps and nudging nodes in turn
+constexpr double turn = 0.1;          // radians a node may turn on the grid (the allowance bounds what that moves)
 constexpr double target_jump = 0.03;  // below the check's 5 %, with room for its sampling
 constexpr double wrong_way = 1e4;     // an inflection or extremum the unrounded cubic lacks
 constexpr double infeasible = std::numeric_limits<double>::infinity();
@@ -254,26 +255,29 @@ class NodeChange {
  public:
   NodeChange(const std::vector<OutlineNode>& nodes, const OutlineJoins& joins, CubicJudge& judge, double flat,
              std::size_t i)
-      : nodes_(nodes), joins_(joins), judge_(judge), flat_(flat), i_(i), h_((i + nodes.size() - 1) % nodes.size()) {
+      : nodes_(nodes), joins_(joins), judge_(judge), flat_(flat), i_(i), h_((i + nodes.size() - 1) % nodes.size()),
+        j_((i + 1) % nodes.size()) {
     for (const std::size_t k : {h_, i_}) {
       const CubicTraits &a = judge.unrounded(k), &b = judge.traits(k, outline_cubic(nodes, k));
       most_.push_back({std::max(a.shape.sign_changes, b.shape.sign_changes), std::max(a.extrema, b.extrema)});
+    }
+    // The cubics beyond the neighbours stay as they are: their curvature there, once.
+    const std::size_t n = nodes.size();
+    if (n >= 4) {
+      if (joins.joins_cubics(h_)) beyond_h_ = node_curvature(outline_cubic(nodes, (h_ + n - 1) % n), SegmentEnd::end);
+      if (joins.joins_cubics(j_)) beyond_j_ = node_curvature(outline_cubic(nodes, j_), SegmentEnd::start);
     }
   }
 
   /// The jump costs at node i and its neighbours, as the outline stands.
   double cost() const {
-    const std::size_t n = nodes_.size();
-    double c = 0.0;
-    for (const std::size_t k : {h_, i_, (i_ + 1) % n}) c += jump_cost(join_jump(joins_, k, flat_));
-    return c;
+    const std::array<double, 3> j = jumps_now();
+    return jump_cost(j[0]) + jump_cost(j[1]) + jump_cost(j[2]);
   }
   /// Whether any of those jumps is over the target.
   bool jumps() const {
-    const std::size_t n = nodes_.size();
-    for (const std::size_t k : {h_, i_, (i_ + 1) % n})
-      if (jump_cost(join_jump(joins_, k, flat_)) > target_jump * target_jump) return true;
-    return false;
+    const std::array<double, 3> j = jumps_now();
+    return std::any_of(j.begin(), j.end(), [](double x) { return jump_cost(x) > target_jump * target_jump; });
   }
 
   /// Whether the outline as it stands is an allowed change.
@@ -288,20 +292,50 @@ class NodeChange {
   }
 
  private:
+  // The jumps at the neighbour before, at node i and at the neighbour after (join_jump, with
+  // only the two cubics at i evaluated where the contour has room).
+  std::array<double, 3> jumps_now() const {
+    if (nodes_.size() < 4) return {join_jump(joins_, h_, flat_), join_jump(joins_, i_, flat_), join_jump(joins_, j_, flat_)};
+    const Cubic before = outline_cubic(nodes_, h_), after = outline_cubic(nodes_, i_);
+    const double ks_h = node_curvature(before, SegmentEnd::start), ke_h = node_curvature(before, SegmentEnd::end);
+    const double ks_i = node_curvature(after, SegmentEnd::start), ke_i = node_curvature(after, SegmentEnd::end);
+    const auto at_end = [&](std::size_t k, std::optional<double> beyond, double near) {
+      if (beyond) return jump(*beyond, near, flat_);
+      return joins_.meets_line(k) ? jump(near, 0.0, flat_) : 0.0;
+    };
+    return {at_end(h_, beyond_h_, ks_h), jump(ke_h, ks_i, flat_), at_end(j_, beyond_j_, ke_i)};
+  }
+
   const std::vector<OutlineNode>& nodes_;
   const OutlineJoins& joins_;
   CubicJudge& judge_;
   double flat_;
-  std::size_t i_, h_;
+  std::size_t i_, h_, j_;
+  std::optional<double> beyond_h_, beyond_j_;
   std::vector<std::pair<int, int>> most_;
 };
 
+// The primitive grid directions within `most` radians of `tangent`, no component over `longest`.
+std::vector<Vec2> directions_near(Vec2 tangent, double most, int longest) {
+  const Vec2 t = tangent / norm(tangent);
+  std::vector<Vec2> out;
+  for (int x = -longest; x <= longest; ++x)
+    for (int y = -longest; y <= longest; ++y) {
+      const Vec2 d{double(x), double(y)};
+      if (std::gcd(std::abs(x), std::abs(y)) != 1 || dot(d, t) <= 0.0) continue;
+      if (std::abs(turning_angle(t, d)) <= most) out.push_back(d);
+    }
+  return out;
+}
+
 // Where whole steps alone leave a jump, the node itself may move a unit (its handles with it,
 // G1 stays exact) and its two handles a step or three: the curvatures of both its cubics
-// change at both their ends, so the jumps at the two neighbours count too.
-// Only the nodes `candidates` lists are tried; returns those it moved.
+// change at both their ends, so the jumps at the two neighbours count too. A node whose
+// direction is not horizontal or vertical (an extremum's must stay so) may also turn to a
+// primitive direction within `turn` of its unrounded tangent, its handles as long as there.
+// Only the nodes `candidates` lists are tried; returns those it moved (a turn in `steps`).
 std::vector<std::size_t> nudge_jumping_nodes(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal,
-                                             std::span<const std::optional<Vec2>> steps, const OutlineJoins& joins,
+                                             std::vector<std::optional<Vec2>>& steps, const OutlineJoins& joins,
                                              std::span<const std::size_t> candidates, CubicJudge& judge, double flat) {
   std::vector<std::size_t> nudged;
   for (const std::size_t i : candidates) {
@@ -309,23 +343,35 @@ std::vector<std::size_t> nudge_jumping_nodes(std::vector<OutlineNode>& nodes, co
     const NodeChange change(nodes, joins, judge, flat, i);
     if (!change.jumps()) continue;
     const OutlineNode kept = nodes[i];
-    const Vec2 d = *steps[i];
-    const double m_in = whole_steps(kept.point, *kept.in_handle, d, -1.0);
-    const double m_out = whole_steps(kept.point, *kept.out_handle, d, 1.0);
+    const OutlineNode& target = ideal[i];
+    // Turned, only to steps of at most 10 units a side: whole steps of a longer one are too
+    // coarse to set curvature by (and each direction costs a search).
+    std::vector<Vec2> directions{*steps[i]};
+    if (steps[i]->x != 0.0 && steps[i]->y != 0.0)
+      for (const Vec2 d : directions_near(*target.out_handle - *target.in_handle, turn, 10))
+        if (d != *steps[i] && d.x != 0.0 && d.y != 0.0) directions.push_back(d);
     OutlineNode best = kept;
+    Vec2 best_step = *steps[i];
     double best_cost = change.cost();
-    // Still on a grid point next to the nearest one, as rounding placed every node.
-    for (const Vec2 p : node_places(kept.point, ideal[i].point))
-      for (int a = -reach; a <= reach; ++a)
-        for (int b = -reach; b <= reach; ++b) {
-          if (m_in + a < 1.0 || m_out + b < 1.0) continue;
-          nodes[i].point = p;
-          nodes[i].in_handle = p - d * (m_in + a);
-          nodes[i].out_handle = p + d * (m_out + b);
-          const double c = change.cost();  // the cheap test first
-          if (c < best_cost && change.allowed()) best_cost = c, best = nodes[i];
-        }
+    for (const Vec2 d : directions) {
+      if (d != *steps[i] && best_cost <= 3.0 * target_jump * target_jump) break;  // turned only while still jumping
+      const OutlineNode& from = d == *steps[i] ? kept : target;  // a turned node's handles as long as unrounded
+      const double m_in = std::max(1.0, whole_steps(from.point, *from.in_handle, d, -1.0));
+      const double m_out = std::max(1.0, whole_steps(from.point, *from.out_handle, d, 1.0));
+      // Still on a grid point next to the nearest one, as rounding placed every node.
+      for (const Vec2 p : node_places(kept.point, target.point))
+        for (int a = -reach; a <= reach; ++a)
+          for (int b = -reach; b <= reach; ++b) {
+            if (m_in + a < 1.0 || m_out + b < 1.0) continue;
+            nodes[i].point = p;
+            nodes[i].in_handle = p - d * (m_in + a);
+            nodes[i].out_handle = p + d * (m_out + b);
+            const double c = change.cost();  // the cheap test first
+            if (c < best_cost && change.allowed()) best_cost = c, best = nodes[i], best_step = d;
+          }
+    }
     nodes[i] = best;
+    steps[i] = best_step;
     if (best != kept) nudged.push_back(i);
   }
   return nudged;
@@ -347,19 +393,6 @@ std::optional<Vec2> handle_on_line(const OutlineNode& node, std::optional<Vec2> 
   return node.point + *step * (sign * m);
 }
 
-// The primitive grid directions within `most` radians of `tangent`, no component over 16.
-std::vector<Vec2> directions_near(Vec2 tangent, double most) {
-  const Vec2 t = tangent / norm(tangent);
-  std::vector<Vec2> out;
-  for (int x = -16; x <= 16; ++x)
-    for (int y = -16; y <= 16; ++y) {
-      const Vec2 d{double(x), double(y)};
-      if (std::gcd(std::abs(x), std::abs(y)) != 1 || dot(d, t) <= 0.0) continue;
-      if (std::abs(turning_angle(t, d)) <= most) out.push_back(d);
-    }
-  return out;
-}
-
 // An inflection node (κ = 0 on both sides before rounding) keeps κ = 0 on the grid only where
 // both far handles lie exactly on its tangent line, and each is a whole number of its own
 // node's steps from that node: the tangent line must cross both their handle lines at whole
@@ -370,7 +403,6 @@ std::vector<Vec2> directions_near(Vec2 tangent, double most) {
 std::vector<std::size_t> seat_inflections(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal,
                                           std::vector<std::optional<Vec2>>& steps, const OutlineJoins& joins,
                                           std::span<const std::size_t> candidates, CubicJudge& judge, double flat) {
-  constexpr double turn = 0.06;  // radians: a 30-unit handle's end moves under 2 units
   const std::size_t n = nodes.size();
   std::vector<std::size_t> seated;
   for (const std::size_t i : candidates) {
@@ -384,7 +416,7 @@ std::vector<std::size_t> seat_inflections(std::vector<OutlineNode>& nodes, const
     double best_cost = change.cost();
     std::optional<std::array<OutlineNode, 3>> best;
     std::optional<Vec2> best_step;
-    for (const Vec2 d : directions_near(*target.out_handle - *target.in_handle, turn))
+    for (const Vec2 d : directions_near(*target.out_handle - *target.in_handle, turn, 16))
       for (const Vec2 p : node_places(kept.point, target.point)) {
         const std::optional<Vec2> far_in = handle_on_line(kept_h, steps[h], 1.0, p, d);
         const std::optional<Vec2> far_out = handle_on_line(kept_j, steps[j], -1.0, p, d);
@@ -425,7 +457,7 @@ void choose_run_steps(std::vector<OutlineNode>& nodes, std::span<const std::opti
   RunChoice best;
   if (cycle) {
     for (std::size_t first = 0; first < run[0].states(); ++first) {
-      if (run[0].cost[first] == infeasible) continue;
+      if (run[0].cost[first] >= best.cost) continue;  // costs only add up: it cannot win
       RunChoice c = best_run(run, flat, first);
       if (c.cost < best.cost) best = std::move(c);
     }
