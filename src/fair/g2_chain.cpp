@@ -61,17 +61,18 @@ std::optional<double> solve_junction(const LacChain& chain, std::size_t j) {
   const double phi0 = chain.tangent_angles[j];
   const std::optional<double> d0 = junction_mismatch(chain, j, phi0);
   if (!d0) return std::nullopt;
-  // D_j grows with φ_j: walk towards the root until the sign changes or feasibility ends (then
-  // the last feasible angle is the nearest to the root there is), each step at least 1.6 times
-  // the last and half as far again as where the secant through the last two values meets zero.
+  // D_j grows with φ_j: walk towards the root until the sign changes, each step at least 1.6
+  // times the last and half as far again as where the secant through the last two values meets
+  // zero. Where feasibility ends first, the angle stays as it was (an angle at the edge of the
+  // drawable region bends its segments into an inflection).
   const double direction = *d0 > 0.0 ? -1.0 : 1.0;
   double inside = phi0, d_inside = *d0, step = 1e-3;
   std::optional<double> outside;
   for (int it = 0; it < 40 && !outside; ++it) {
     const double trial = inside + direction * step;
     const std::optional<double> dt = junction_mismatch(chain, j, trial);
-    if (!dt) {  // infeasible: shrink the step from the last feasible angle, to within 1e-6 rad of the edge
-      if (step < 1e-6) break;
+    if (!dt) {  // infeasible: shrink the step from the last feasible angle, down to 1e-6 rad
+      if (step < 1e-6) return std::nullopt;
       step /= 4.0;
       continue;
     }
