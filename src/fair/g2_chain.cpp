@@ -68,7 +68,8 @@ std::optional<double> solve_junction(const LacChain& chain, std::size_t j) {
   const double direction = *d0 > 0.0 ? -1.0 : 1.0;
   double inside = phi0, d_inside = *d0, step = 1e-3;
   std::optional<double> outside;
-  for (int it = 0; it < 40 && !outside; ++it) {
+  double d_outside = 0.0;
+  for (int it = 0; it < 40; ++it) {
     const double trial = inside + direction * step;
     const std::optional<double> dt = junction_mismatch(chain, j, trial);
     if (!dt) {  // infeasible: shrink the step from the last feasible angle, down to 1e-6 rad
@@ -77,7 +78,7 @@ std::optional<double> solve_junction(const LacChain& chain, std::size_t j) {
       continue;
     }
     if ((*dt > 0.0) != (*d0 > 0.0)) {
-      outside = trial;
+      outside = trial, d_outside = *dt;
       break;
     }
     const double slope = (*dt - d_inside) / (trial - inside);
@@ -96,8 +97,10 @@ std::optional<double> solve_junction(const LacChain& chain, std::size_t j) {
     return d.value_or(0.0);  // 0: the solver stops at once
   };
   std::uintmax_t iterations = 60;
-  const auto [lo, hi] = boost::math::tools::toms748_solve(mismatch, std::min(inside, *outside), std::max(inside, *outside),
-                                                          boost::math::tools::eps_tolerance<double>(48), iterations);
+  const bool rising = inside < *outside;
+  const auto [lo, hi] = boost::math::tools::toms748_solve(
+      mismatch, rising ? inside : *outside, rising ? *outside : inside, rising ? d_inside : d_outside,
+      rising ? d_outside : d_inside, boost::math::tools::eps_tolerance<double>(48), iterations);
   if (infeasible) return std::nullopt;
   return 0.5 * (lo + hi);
 }

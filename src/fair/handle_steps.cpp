@@ -377,20 +377,21 @@ std::vector<std::size_t> nudge_jumping_nodes(std::vector<OutlineNode>& nodes, co
   return nudged;
 }
 
-// The handle of `node` (an out-handle when sign is +1) exactly on the line through p along d:
-// for a smooth node a whole number m ≥ 1 of its steps from it, where the line crosses its
-// handle line there; for a corner, the grid point of the line nearest where its handle is.
+// The handle of `node` (an out-handle when sign is +1) exactly on the line through p along d,
+// on the side of p that handle faces (behind p for an out-handle of the node before it): for a
+// smooth node a whole number m ≥ 1 of its steps from it, where the line crosses its handle line
+// there; for a corner, the grid point of the line nearest where its handle is.
 std::optional<Vec2> handle_on_line(const OutlineNode& node, std::optional<Vec2> step, double sign, Vec2 p, Vec2 d) {
+  std::optional<Vec2> h;
   if (!node.smooth) {
-    const Vec2 h = sign > 0.0 ? *node.out_handle : *node.in_handle;
-    return p + d * std::round(dot(h - p, d) / dot(d, d));
+    const Vec2 now = sign > 0.0 ? *node.out_handle : *node.in_handle;
+    h = p + d * std::round(dot(now - p, d) / dot(d, d));
+  } else if (step && cross(d, *step) != 0.0) {
+    const double m = -cross(d, node.point - p) / (sign * cross(d, *step));
+    if (m >= 1.0 && m == std::round(m)) h = node.point + *step * (sign * m);
   }
-  if (!step) return std::nullopt;
-  const double across = cross(d, *step);
-  if (across == 0.0) return std::nullopt;
-  const double m = -cross(d, node.point - p) / (sign * across);
-  if (m < 1.0 || m != std::round(m)) return std::nullopt;
-  return node.point + *step * (sign * m);
+  if (h && -sign * dot(*h - p, d) <= 0.0) return std::nullopt;
+  return h;
 }
 
 // An inflection node (κ = 0 on both sides before rounding) keeps κ = 0 on the grid only where
