@@ -6,7 +6,9 @@
     contour count and each contour's direction are kept; every glyph is within the
     profile's default tolerance of the source (two-sided Hausdorff from dense samples);
     every coordinate is an integer; every smooth on-curve point is exactly collinear with
-    its neighbouring handles (G1 exact on the grid);
+    its neighbouring handles (G1 exact on the grid); on a–z A–Z no kinks, and for handwriting
+    at most 2 % of the smooth joins with a g2-jump (the fairing issue's bars, by
+    independent_checks.py);
   * --no-round keeps fractional coordinates; .svg and .json outputs; --proof writes a PDF;
   * --continuity g3 --segments: the exported faired pieces are G3 at their smooth joins;
   * a point-sequence JSON (tests/data/handwriting-points.json) is fitted and faired, every
@@ -30,6 +32,7 @@ from scipy.spatial import cKDTree
 
 from cli_contract import error_problem, finish
 from fairing_bars import area, dense, glyph_contours, segment_bars
+from independent_checks import join_counts
 
 
 def run(glyphfair, *args):
@@ -85,6 +88,8 @@ def check_font(glyphfair, font_path, profile, tolerance_fraction, work, failures
     for code, name in font.getBestCmap().items():
         cmap.setdefault(name, set()).add(code)
     contents = reader.getGlyphSet().contents
+    letters = {name for code, name in font.getBestCmap().items() if chr(code).isascii() and chr(code).isalpha()}
+    kinks = jumps = smooth = 0
     for name in font.getGlyphOrder():
         a = glyph_contours(src, name, True)
         if not a:
@@ -105,6 +110,9 @@ def check_font(glyphfair, font_path, profile, tolerance_fraction, work, failures
         for k, (x, y) in enumerate(zip(a, b)):
             if (area(x) > 0) != (area(y) > 0):
                 failures.append(f"{profile}: {name} contour {k} changed direction")
+        if name in letters:
+            k, j, n, _ = join_counts(b, upm)
+            kinks, jumps, smooth = kinks + k, jumps + j, smooth + n
         pa, pb = dense(a), dense(b)
         d = max(cKDTree(pb).query(pa)[0].max(), cKDTree(pa).query(pb)[0].max())
         if d > tolerance * 1.01:
@@ -114,6 +122,13 @@ def check_font(glyphfair, font_path, profile, tolerance_fraction, work, failures
             failures.append(f"{profile}: {name} has {fractional} fractional coordinates")
         if bad:
             failures.append(f"{profile}: {name} has {bad} smooth points not collinear with their handles")
+    # The fairing issue's bars on a–z A–Z: no kinks; for handwriting, at most 2 % of the smooth
+    # joins with a curvature jump over 5 % (independent_checks' rule).
+    print(f"{profile}: a–z A–Z {kinks} kinks, {jumps} of {smooth} smooth joins with a g2-jump")
+    if kinks:
+        failures.append(f"{profile}: {kinks} kinks on a–z A–Z")
+    if profile == "handwriting" and jumps > 0.02 * smooth:
+        failures.append(f"{profile}: {jumps} of {smooth} smooth joins on a–z A–Z jump in curvature (bar 2 %)")
 
 
 def main():
