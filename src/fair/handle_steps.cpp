@@ -488,6 +488,7 @@ std::vector<Vec2> handles_near_line(Vec2 node, Vec2 step, double sign, Vec2 line
 
 void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal,
                          std::span<const std::optional<Vec2>> grid_steps, bool closed, const HandleStepLimits& limits) {
+  // The grid steps as rounding left them; a node turned or seated here takes a new one.
   const std::size_t n = nodes.size();
   if (n < 2) return;
   const OutlineJoins joins{nodes, closed};
@@ -500,6 +501,7 @@ void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<Outl
   if (cycle && joins.is_cubic(0)) runs.push_back({0});
   if (runs.empty()) return;
   std::vector<std::size_t> run_of(n, runs.size());  // the run each node inside one belongs to
+  if (cycle) run_of[0] = 0;                          // a run that closes on itself: its seam too
   for (std::size_t r = 0; r < runs.size(); ++r)
     for (std::size_t j = (runs[r].back() + 1) % n; joins.joins_cubics(j) && j != runs[r].front(); j = (j + 1) % n) {
       runs[r].push_back(j);
@@ -515,7 +517,7 @@ void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<Outl
     return join_jump(joins, (run.back() + 1) % n, limits.flat_curvature) > target_jump;
   };
   CubicJudge judge(nodes, ideal, joins, limits);
-  std::vector<std::optional<Vec2>> steps(grid_steps.begin(), grid_steps.end());  // an inflection seated turns its own
+  std::vector<std::optional<Vec2>> steps(grid_steps.begin(), grid_steps.end());
   std::vector<bool> again(runs.size(), true);
   for (int pass = 0; pass < max_passes; ++pass) {
     std::vector<std::size_t> inside;

@@ -38,14 +38,17 @@ struct HandleStepLimits {
 /// the join the grid allows, κ = 0 when on the line.
 std::vector<Vec2> handles_near_line(Vec2 node, Vec2 step, double sign, Vec2 line_point, Vec2 line_dir);
 
-/// Moves the handles of `nodes` (rounded, G1 exact along `steps`) by whole steps along their
-/// grid directions, and a corner's handle by a unit, to minimise the curvature jumps at
+/// Moves the handles of `nodes` (rounded, G1 exact along `grid_steps`) by whole steps along
+/// their grid directions, and a corner's handle by a unit, to minimise the curvature jumps at
 /// smooth nodes; then moves a node still jumping (or next to one) by a unit with its handles,
-/// where that helps. `ideal` is the outline before rounding; no cubic moves farther from it
-/// than the limits allow (as a curve: a handle slid along its tangent moves the curve little),
-/// none gains an inflection or an H/V extremum, and curvature variation inside a cubic beyond
-/// its unrounded self's costs (a third of the weight of a matching jump at a node).
+/// or turns it to a nearby primitive direction, where that helps, and seats an inflection node
+/// still jumping where κ = 0 holds exactly on both sides; and chooses the steps again around
+/// what moved, at most eight passes. `ideal` is the outline before rounding; no cubic moves
+/// farther from it than the limits allow (as a curve: a handle slid along its tangent moves
+/// the curve little), none gains an inflection or an H/V extremum, and curvature variation
+/// inside a cubic beyond its unrounded self's costs (a third of the weight of a matching jump
+/// at a node).
 void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal,
-                         std::span<const std::optional<Vec2>> steps, bool closed, const HandleStepLimits& limits);
+                         std::span<const std::optional<Vec2>> grid_steps, bool closed, const HandleStepLimits& limits);
 
 }  // namespace gf
