@@ -284,13 +284,14 @@ class SpanWriter {
       if (std::min(distance(c.p[0], c.p[1]), distance(c.p[2], c.p[3])) < min_handle_fraction * chord) continue;
       // Handles that overreach fold the cubic back on itself (a loop or a cusp), which may
       // stay within the budget of the path yet turns by half a turn more than it.
+      const bool have_within = best.within(budget_);
+      const double q = std::max(node_coarseness(c, SegmentEnd::start, start_step), node_coarseness(c, SegmentEnd::end, end_step));
+      if (have_within && q > finest) continue;  // coarser than one already within: not measured
       const std::vector<Vec2> pts = cubic_points(c);
       if (absolute_turning(pa.tangent, pts, pb.tangent) > turning + fold_margin) continue;
-      const bool have_within = best.within(budget_);
       const double d = cubic_deviation(pts, lac, have_within ? budget_ : std::min(cap, std::max(best.deviation, budget_)));
       if (d <= budget_) {
-        const double q = std::max(node_coarseness(c, SegmentEnd::start, start_step), node_coarseness(c, SegmentEnd::end, end_step));
-        if (!have_within || q < finest || (q == finest && d < best.deviation)) best = {c, d}, finest = q;
+        if (!have_within || q < finest || d < best.deviation) best = {c, d}, finest = q;
       } else if (!have_within) {
         if (d < best.deviation && d <= cap) best = {c, d};
         else if (!best.cubic) best.deviation = std::min(best.deviation, d);
