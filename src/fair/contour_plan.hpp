@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "geom/contour.hpp"
+#include "geom/join.hpp"
 
 namespace gf {
 
@@ -38,9 +39,9 @@ struct ContourPlan {
   std::vector<std::size_t> start_nodes;  ///< the source node each piece starts at
 };
 
-/// The check's kink limit: a join turning by less than this (and more than 0.05°) is a kink,
-/// meant smooth; a corner must turn by at least this much.
-inline constexpr double kink_limit_deg = 3.0;
+/// The kink limit of geom/join.hpp: a join turning by less than this (and more than 0.05°) is
+/// a kink, meant smooth; a corner must turn by at least this much.
+inline constexpr double kink_limit_deg = JoinThresholds{}.kink_max_deg;
 
 /// A cubic whose control points lie on its chord, in order, is a line.
 bool is_straight(const Cubic& c);
