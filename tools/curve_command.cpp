@@ -26,18 +26,10 @@ namespace {
 
 using json = nlohmann::ordered_json;  // fields in the documented order
 
-// A finite number, all of `text`.
-std::optional<double> parse_number(const std::string& text) {
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || *end != '\0' || !std::isfinite(v)) return std::nullopt;
-  return v;
-}
-
 Vec2 parse_point(const std::string& text, const char* option) {
   const auto parts = split_trimmed(text);
-  const auto x = parts.size() == 2 ? parse_number(std::string(parts[0])) : std::nullopt;
-  const auto y = parts.size() == 2 ? parse_number(std::string(parts[1])) : std::nullopt;
+  const auto x = parts.size() == 2 ? parse_number(parts[0]) : std::nullopt;
+  const auto y = parts.size() == 2 ? parse_number(parts[1]) : std::nullopt;
   if (!x || !y) throw InputError(std::string(option) + ": '" + text + "' is not x,y");
   return {*x, *y};
 }

@@ -10,6 +10,7 @@
 #include <pugixml.hpp>
 
 #include "io/input_error.hpp"
+#include "io/number_format.hpp"
 #include "io/svg_path_data.hpp"
 
 namespace fs = std::filesystem;
@@ -71,11 +72,7 @@ Affine parse_transform(std::string_view s, const std::string& where) {
 std::optional<double> number_attribute(const pugi::xml_node& n, const char* name) {
   const pugi::xml_attribute a = n.attribute(name);
   if (!a) return std::nullopt;
-  const std::string_view v = a.value();
-  double x = 0;
-  const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), x);
-  if (ec != std::errc() || end != v.data() + v.size() || !std::isfinite(x)) return std::nullopt;
-  return x;
+  return parse_number(a.value());
 }
 
 struct Walker {

@@ -7,6 +7,7 @@
 #include <pugixml.hpp>
 
 #include "io/input_error.hpp"
+#include "io/number_format.hpp"
 #include "io/plist.hpp"
 
 namespace fs = std::filesystem;
@@ -104,12 +105,10 @@ class ContourBuilder {
 double attr_number(const pugi::xml_node& n, const char* name, double fallback, const std::string& where) {
   const pugi::xml_attribute a = n.attribute(name);
   if (!a) return fallback;
-  char* end = nullptr;
   const std::string text = a.value();
-  const double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || *end != '\0' || !std::isfinite(v))
-    throw InputError(where + ": attribute " + name + "=\"" + text + "\" is not a number");
-  return v;
+  const std::optional<double> v = parse_number(text);
+  if (!v) throw InputError(where + ": attribute " + name + "=\"" + text + "\" is not a number");
+  return *v;
 }
 
 RawGlyph read_glif(const fs::path& file, const std::string& expected_name, const std::string& ufo) {

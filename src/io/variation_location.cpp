@@ -1,9 +1,9 @@
 #include "io/variation_location.hpp"
 
-#include <charconv>
 #include <cmath>
 
 #include "io/input_error.hpp"
+#include "io/number_format.hpp"
 #include "io/text_list.hpp"
 
 namespace gf {
@@ -25,15 +25,13 @@ std::vector<AxisValue> parse_variation_location(std::string_view spec) {
     for (const char ch : tag)
       if (ch < 0x20 || ch > 0x7E) throw InputError(where + "has an axis tag with a non-ASCII character");
     const std::string_view number = entry.substr(eq + 1);
-    double value = 0.0;
-    const auto [end, ec] = std::from_chars(number.data(), number.data() + number.size(), value);
-    if (ec != std::errc() || end != number.data() + number.size() || number.empty() || !std::isfinite(value))
-      throw InputError(where + "has a value that is not a number");
+    const std::optional<double> value = parse_number(number);
+    if (!value) throw InputError(where + "has a value that is not a number");
     std::string padded(tag);
     padded.resize(4, ' ');
     for (const AxisValue& a : location)
       if (a.tag == padded) throw InputError(where + "sets axis '" + std::string(tag) + "' twice");
-    location.push_back({padded, value});
+    location.push_back({padded, *value});
   }
   if (location.empty()) throw InputError("--location: no axis values given");
   return location;
