@@ -1,6 +1,5 @@
 #include "io/variation_location.hpp"
 
-#include <cmath>
 
 #include "io/input_error.hpp"
 #include "io/number_format.hpp"
