@@ -9,6 +9,7 @@ inline const std::string fonts = GLYPHFAIR_FONTS;
 inline const std::string dejavu = fonts + "/DejaVuSans/DejaVuSans-subset.ttf";
 inline const std::string because_we_learn = fonts + "/BecauseWeLearn/BecauseWeLearn-Regular-subset.otf";
 inline const std::string inter_variable = fonts + "/Inter/Inter-subset.var.ttf";
+inline const std::string inconsolata = fonts + "/Inconsolata/Inconsolata-subset.otf";
 inline const std::string cff2_variable = fonts + "/Inter/GlyphfairProbe-CFF2.var.otf";
 
 }  // namespace gf::test

@@ -113,8 +113,9 @@ struct FreetypeFont::Impl {
   std::vector<std::vector<char32_t>> unicodes;  // by glyph index
   std::vector<VariationAxis> axes;
   std::vector<AxisValue> location;
-  /// Off the default instance, and for CFF2 (which FreeType cannot load unscaled), outlines
-  /// come from HarfBuzz: FreeType rounds variation results (sketch-refine-io.md §4).
+  /// Off the default instance, and for CFF and CFF2, outlines come from HarfBuzz: FreeType
+  /// rounds variation results (sketch-refine-io.md §4), truncates CFF's fractional
+  /// coordinates unscaled, and cannot load CFF2 unscaled at all.
   bool varied = false;
   std::optional<HarfbuzzInstance> instance;
 
@@ -318,7 +319,9 @@ FreetypeFont FreetypeFont::open(const std::filesystem::path& path, const FontLoa
   impl->read_names();
   impl->read_info(path);
   impl->apply_variations(options);
-  if (impl->varied || (directory && directory->tables.count("CFF2")))
+  // CFF charstrings carry fractions (Inconsolata's E stands at x = 58.68), which FreeType
+  // unscaled truncates to whole units; HarfBuzz draws them as they are.
+  if (impl->varied || (directory && (directory->tables.count("CFF2") || directory->tables.count("CFF "))))
     impl->instance.emplace(impl->bytes, impl->location);
   return FreetypeFont(std::move(impl));
 }

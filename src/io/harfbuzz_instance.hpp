@@ -1,6 +1,7 @@
-// Outlines and advances of a variable font's instance through HarfBuzz, whose glyf and CFF2
-// variation arithmetic is unrounded (float, ~1e-4 unit), where FreeType's is rounded to
-// 1/64 unit (glyf) or to whole units (CFF2), and FreeType cannot load CFF2 unscaled at all.
+// Outlines and advances of a variable font's instance, or of a CFF font, through HarfBuzz,
+// whose glyf and CFF2 variation arithmetic is unrounded (float, ~1e-4 unit), where FreeType's
+// is rounded to 1/64 unit (glyf) or to whole units (CFF2); FreeType cannot load CFF2 unscaled
+// at all, and truncates CFF's fractional coordinates to whole units.
 #pragma once
 
 #include <cstdint>

@@ -63,6 +63,17 @@ TEST(Cff, ReadsCubics) {
   EXPECT_TRUE(cubic);
 }
 
+TEST(Cff, KeepsFractionalCoordinates) {
+  // Inconsolata's E stands at x = 58.68359375 (fontTools reads the charstring so); FreeType
+  // unscaled would give 58.
+  const FreetypeFont font = FreetypeFont::open(test::inconsolata);
+  const Glyph e = font.load_glyph(*font.glyph_by_name("E"));
+  ASSERT_FALSE(e.outline.contours.empty());
+  const Vec2 p = start_point(e.outline.contours[0].segments[0]);
+  EXPECT_DOUBLE_EQ(p.x, 58.68359375);
+  EXPECT_DOUBLE_EQ(p.y, 623.94921875);
+}
+
 TEST(Shaping, TextSelectsTheLigaturesItUses) {
   const FreetypeFont font = FreetypeFont::open(test::dejavu);
   std::vector<std::string> names;
