@@ -49,8 +49,9 @@ cplx power_series(double psi_star, double sigma, double abs_c, double p, double 
     else integral = delta0 > 0.0 ? lower * std::expm1(k * log_ratio) / k : upper / k;
     const cplx term = factor * integral;
     sum += term;
-    if (n > 3 && std::abs(term) <= 1e-18 * std::abs(sum)) break;
-    factor *= cplx(0.0, sigma) / double(n + 1);
+    // |term| ≤ 1e-18 |sum|, squared (std::abs of a complex is a hypot, on the hottest loop).
+    if (n > 3 && std::norm(term) <= 1e-36 * std::norm(sum)) break;
+    factor = times_i(factor, sigma) / double(n + 1);
     upper *= delta1;
     lower *= delta0;
   }

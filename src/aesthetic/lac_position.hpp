@@ -11,6 +11,12 @@
 
 namespace gf {
 
+/// z · iσ, written out: std::complex's operator* checks for NaNs in a library call
+/// (__muldc3), and the power series below multiplies by iσ at every term.
+inline std::complex<double> times_i(std::complex<double> z, double sigma) {
+  return {-z.imag() * sigma, z.real() * sigma};
+}
+
 /// ∫_{δ0}^{δ1} e^{i(ψ* + σδ)} (|c|δ)^p dδ, 0 ≤ δ0 ≤ δ1, p > −1 when δ0 = 0: the LAC integrand
 /// written by the distance δ to the singular angle, which keeps ρ = (|c|δ)^p accurate
 /// however close δ comes to 0.

@@ -161,8 +161,8 @@ double inflection_chord_angle(double q, double big_theta) {
   for (int n = 0; n < 120; ++n) {
     const cplx term = factor / (n + q);
     sum += term;
-    if (n > 3 && std::abs(term) < 1e-18 * std::abs(sum)) break;
-    factor *= cplx(0.0, big_theta) / double(n + 1);
+    if (n > 3 && std::norm(term) < 1e-36 * std::norm(sum)) break;
+    factor = times_i(factor, big_theta) / double(n + 1);
   }
   return std::arg(sum);
 }
