@@ -22,6 +22,7 @@ namespace {
 constexpr double default_alpha = 1.0;  // for arcs (every α fits) and pieces without a usable LCG
 constexpr double alpha_candidates[] = {-2.0, -1.5, -1.0, -0.5, 0.0, 0.5, 1.0, 1.5, 2.0, 3.0, 4.0};
 constexpr int max_rounds = 10;
+constexpr int fallback_rounds = 4;  // a text run on its guide, after its own outline failed
 constexpr double max_relative_mismatch = 1e-9;  // |Δκ| / max|κ| the G2 solve must reach
 constexpr int max_g3_rounds = 4;  // of cutting the segments whose G3 spirals stray
 
@@ -347,7 +348,8 @@ ChainOutcome fair_chain(const ChainSpan& span, const RunReference& ref, const Ru
 // it (geom/smoothing_spline; one span per half feature window), while fidelity is measured
 // against the source itself. A line's tangent is held at its end; a corner's is the guide's.
 // None when no spline comes within the tolerance; a professional outline is its own guide.
-std::optional<SmoothRun> guide_for(const SmoothRun& run, const RunReference& source, double tolerance, double window) {
+std::optional<SmoothRun> guide_for(const SmoothRun& run, const RunReference& source, double tolerance, double window,
+                                   SmoothingPenalty penalty) {
   const double L = source.length();
   const int count = std::clamp(static_cast<int>(L / 1.5), 40, 1200);
   std::vector<Vec2> points;
@@ -359,7 +361,7 @@ std::optional<SmoothRun> guide_for(const SmoothRun& run, const RunReference& sou
   if (!run.closed && run.start.kind == RunEndKind::line) ends.start_tangent = run.start.tangent;
   if (!run.closed && run.end.kind == RunEndKind::line) ends.end_tangent = run.end.tangent;
   const int spans = std::clamp(static_cast<int>(std::ceil(L / (0.5 * window))), run.closed ? 4 : 1, 80);
-  const BSplineFit fit = fit_smoothing_spline(points, tolerance, spans, run.closed, ends, SmoothingPenalty::sparse);
+  const BSplineFit fit = fit_smoothing_spline(points, tolerance, spans, run.closed, ends, penalty);
   if (fit.spans.empty() || fit.max_residual > 1.05 * tolerance) return std::nullopt;
   SmoothRun guide = run;
   guide.cubics = fit.spans;
@@ -484,12 +486,13 @@ LacPoint FairedChain::end_frame() const {
   return closed ? guide->guide->frame_at(guide->s1) : guide->end;
 }
 
-FairedRun fair_run(const SmoothRun& run, const FairSettings& settings, double budget) {
+namespace {
+
+// The run faired on `guide` (its smoothing guide) or, without one, on its source itself, in at
+// most `rounds` rounds.
+FairedRun fair_run_on(const SmoothRun& run, const RunReference& source, const std::optional<SmoothRun>& guide,
+                      const FairSettings& settings, double budget, int rounds) {
   FairedRun result;
-  const RunReference source(run);
-  const std::optional<SmoothRun> guide = settings.profile == FairProfile::handwriting
-                                             ? guide_for(run, source, budget * settings.guide_share, settings.feature_window_units)
-                                             : std::nullopt;
   const SmoothRun& guide_run = guide ? *guide : run;
   const auto guide_ref = guide ? std::make_shared<const RunReference>(*guide) : nullptr;
   const RunReference& ref = guide_ref ? *guide_ref : source;
@@ -502,7 +505,7 @@ FairedRun fair_run(const SmoothRun& run, const FairSettings& settings, double bu
   // cut and drop junctions of the spans that did): its outcome, a chain or none to be had, is
   // kept, not solved again.
   std::vector<std::pair<ChainSpan, ChainOutcome>> settled;
-  for (int round = 0; round < max_rounds; ++round) {
+  for (int round = 0; round < rounds; ++round) {
     std::vector<double> cuts, drops;
     too_far = false;
     result.chains.clear();
@@ -516,12 +519,12 @@ FairedRun fair_run(const SmoothRun& run, const FairSettings& settings, double bu
       ChainOutcome o = known != settled.end()
                            ? known->second
                            : fair_chain(span, ref, source, guide.has_value(), guide_run, settings, budget,
-                                        round >= max_rounds / 2);
+                                        round >= rounds / 2);
       if (known == settled.end() && !o.adjusts()) settled.emplace_back(span, o);
       result.deviation = std::max(result.deviation, o.deviation);
       too_far = too_far || o.too_far;
       // A guided span with no chain when the rounds run out (or none to be had) is the guide.
-      const bool last_round = round + 1 == max_rounds || !o.adjusts();
+      const bool last_round = round + 1 == rounds || !o.adjusts();
       if (!o.chain && guide && last_round) {
         o = ChainOutcome{};
         o.chain = guide_stretch(span, guide_ref, guide_run, settings.feature_window_units);
@@ -548,8 +551,33 @@ FairedRun fair_run(const SmoothRun& run, const FairSettings& settings, double bu
   }
   result.reason = (too_far ? "still " + std::to_string(result.deviation) + " units from the source"
                            : std::string("no drawable G2 chain on the junctions")) +
-                  " after " + std::to_string(max_rounds) + " rounds of refinement";
+                  " after " + std::to_string(rounds) + " rounds of refinement";
   return result;
+}
+
+}  // namespace
+
+FairedRun fair_run(const SmoothRun& run, const FairSettings& settings, double budget, bool on_guide) {
+  const RunReference source(run);
+  const auto guide = [&](SmoothingPenalty penalty) {
+    return guide_for(run, source, budget * settings.guide_share, settings.feature_window_units, penalty);
+  };
+  if (settings.profile == FairProfile::handwriting)
+    return fair_run_on(run, source, guide(SmoothingPenalty::sparse), settings, budget, max_rounds);
+  if (!on_guide) return fair_run_on(run, source, std::nullopt, settings, budget, max_rounds);
+  // A professional outline is its own guide, until no chain on it comes G2 within the budget
+  // (Inter's U: κ falls from its shoulders to a flat bottom and rises again, and the solve
+  // stalls): then the run is faired on its smoothing guide, as handwriting is, with the squared
+  // penalty (a designed outline has no scan noise for the sparse one to gather, and it costs
+  // three times the solves) and fewer rounds before a span is the guide itself (ten cost twice
+  // the time on whole DejaVu Sans).
+  const std::optional<SmoothRun> smoothed = guide(SmoothingPenalty::squared);
+  if (!smoothed) {
+    FairedRun none;
+    none.reason = "no smoothing guide within the budget";
+    return none;
+  }
+  return fair_run_on(run, source, smoothed, settings, budget, fallback_rounds);
 }
 
 }  // namespace gf

@@ -55,6 +55,9 @@ struct FairedRun {
   bool g3() const { return !chains.empty() && !chains.front().spirals.empty(); }
 };
 
-FairedRun fair_run(const SmoothRun& run, const FairSettings& settings, double budget_units);
+/// The run faired within `budget_units`. Handwriting is faired on its smoothing guide; text
+/// on its own outline, or on its guide when `on_guide` (for a contour that could not be
+/// faired on its own outlines).
+FairedRun fair_run(const SmoothRun& run, const FairSettings& settings, double budget_units, bool on_guide = false);
 
 }  // namespace gf

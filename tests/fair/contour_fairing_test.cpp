@@ -84,6 +84,13 @@ TEST(ContourFairing, ProfessionalGlyphsAreFairedWithinTheTolerance) {
   for (const char* g : {"o", "e", "n", "S", "O", "D"}) expect_faired(test::dejavu, g, FairProfile::text);
 }
 
+TEST(ContourFairing, ProfessionalGlyphsWithNoChainOfTheirOwnAreFairedOnTheirGuides) {
+  // Inter's U and m: κ falls from the shoulders to a flat bottom (or top) and rises again; no
+  // G2 chain of log-aesthetic segments comes within the budget on their own outlines (they were
+  // kept unfaired), and their smoothing guides carry them.
+  for (const char* g : {"uni0055", "uni006D"}) expect_faired(test::inter_variable, g, FairProfile::text);
+}
+
 TEST(ContourFairing, HandwritingGlyphsAreFairedWithinTheTolerance) {
   // a, e, s, B, G, R: no chain of log-aesthetic segments fits some of their spans, which are
   // written from the smoothing guide instead (they were kept unfaired before that existed).
