@@ -347,7 +347,8 @@ ChainOutcome fair_chain(const ChainSpan& span, const RunReference& ref, const Ru
 // the chain are built on a guide, the smoothest cubic spline of the run within `tolerance` of
 // it (geom/smoothing_spline; one span per half feature window), while fidelity is measured
 // against the source itself. A line's tangent is held at its end; a corner's is the guide's.
-// None when no spline comes within the tolerance; a professional outline is its own guide.
+// None when no spline comes within the tolerance. A professional outline is its own guide
+// until no chain on it comes within the budget (fair_run).
 std::optional<SmoothRun> guide_for(const SmoothRun& run, const RunReference& source, double tolerance, double window,
                                    SmoothingPenalty penalty) {
   const double L = source.length();
