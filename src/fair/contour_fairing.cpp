@@ -278,8 +278,8 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
   const double rounding = settings.round_to_integers ? 0.5 : 0.0;
   double available = std::max(settings.tolerance_units - rounding, 0.25 * settings.tolerance_units);
   bool run_failed = false;
-  // On the guides, one try: a second, with half the budget, cost a tenth of whole DejaVu
-  // Sans's time for a few contours.
+  // On the guides, one try: a second, with half the budget, took whole DejaVu Sans 8 % more
+  // time to fair 18 more contours.
   const int attempts = on_guide ? 1 : 2;
   for (int attempt = 0; attempt < attempts; ++attempt, available *= 0.5) {
     Attempt a = fair_with_budgets(plan, settings, {settings.chain_share * available, (1.0 - settings.chain_share) * available},

@@ -570,8 +570,8 @@ FairedRun fair_run(const SmoothRun& run, const FairSettings& settings, double bu
   // (Inter's U: κ falls from its shoulders to a flat bottom and rises again, and the solve
   // stalls): then the run is faired on its smoothing guide, as handwriting is, with the squared
   // penalty (a designed outline has no scan noise for the sparse one to gather, and it costs
-  // three times the solves) and fewer rounds before a span is the guide itself (ten cost twice
-  // the time on whole DejaVu Sans).
+  // three times the solves) and fewer rounds before a span is the guide itself (ten rounds
+  // took a tenth more of whole DejaVu Sans's time).
   const std::optional<SmoothRun> smoothed = guide(SmoothingPenalty::squared);
   if (!smoothed) {
     FairedRun none;
