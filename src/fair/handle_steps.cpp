@@ -445,8 +445,8 @@ std::vector<std::size_t> seat_inflections(std::vector<OutlineNode>& nodes, const
 
 // The whole steps of one run of cubics joined at smooth nodes (the nodes starting them, in
 // order), chosen together (Viterbi; a run that closes on itself with each state of its first
-// cubic in turn).
-void choose_run_steps(std::vector<OutlineNode>& nodes, std::span<const std::optional<Vec2>> steps,
+// cubic in turn). Returns whether any handle moved.
+bool choose_run_steps(std::vector<OutlineNode>& nodes, std::span<const std::optional<Vec2>> steps,
                       const OutlineJoins& joins, std::span<const std::size_t> cubics, bool cycle, CubicJudge& judge,
                       double flat) {
   const std::size_t n = nodes.size();
@@ -465,13 +465,17 @@ void choose_run_steps(std::vector<OutlineNode>& nodes, std::span<const std::opti
   } else {
     best = best_run(run, flat, std::nullopt);
   }
-  if (best.cost == infeasible) return;
+  if (best.cost == infeasible) return false;
+  bool moved = false;
   for (std::size_t k = 0; k < run.size(); ++k) {
     const CubicChoices& c = run[k];
     const std::size_t state = best.states[k];
-    nodes[c.start].out_handle = c.outs[state / c.ins.size()];
-    nodes[c.end].in_handle = c.ins[state % c.ins.size()];
+    const Vec2 out = c.outs[state / c.ins.size()], in = c.ins[state % c.ins.size()];
+    moved = moved || nodes[c.start].out_handle != out || nodes[c.end].in_handle != in;
+    nodes[c.start].out_handle = out;
+    nodes[c.end].in_handle = in;
   }
+  return moved;
 }
 
 }  // namespace
@@ -523,9 +527,7 @@ void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<Outl
     std::vector<std::size_t> inside;
     for (std::size_t r = 0; r < runs.size(); ++r) {
       if (!again[r]) continue;
-      const std::vector<OutlineNode> before = nodes;
-      choose_run_steps(nodes, steps, joins, runs[r], cycle, judge, limits.flat_curvature);
-      again[r] = nodes != before;
+      again[r] = choose_run_steps(nodes, steps, joins, runs[r], cycle, judge, limits.flat_curvature);
       inside.insert(inside.end(), runs[r].begin() + 1, runs[r].end());
       if (cycle) inside.push_back(runs[r].front());
     }
