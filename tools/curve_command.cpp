@@ -3,7 +3,6 @@
 //                 [--samples N] [--format json|svg] [-o FILE]
 // One log-aesthetic segment from its control triangle, or the G3 curve through points with
 // their curvature (seed 004 §6), for scripting and for seeing it.
-#include <cmath>
 #include <iostream>
 #include <numbers>
 

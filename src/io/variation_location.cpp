@@ -1,6 +1,5 @@
 #include "io/variation_location.hpp"
 
-
 #include "io/input_error.hpp"
 #include "io/number_format.hpp"
 #include "io/text_list.hpp"

@@ -88,7 +88,7 @@ def check_font(glyphfair, font_path, profile, tolerance_fraction, work, failures
     for code, name in font.getBestCmap().items():
         cmap.setdefault(name, set()).add(code)
     contents = reader.getGlyphSet().contents
-    letters = {name for code, name in font.getBestCmap().items() if chr(code).isascii() and chr(code).isalpha()}
+    letters = {name for name, codes in cmap.items() if any(chr(c).isascii() and chr(c).isalpha() for c in codes)}
     kinks = jumps = smooth = 0
     for name in font.getGlyphOrder():
         a = glyph_contours(src, name, True)
