@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "fair/line_rounding.hpp"
 #include "geom/curvature.hpp"
 #include "geom/g2_hermite.hpp"
 
@@ -141,69 +142,7 @@ std::vector<OutlineNode> round_to_grid(const std::vector<OutlineNode>& nodes, bo
     dst.point = c.point, dst.in_handle = c.in, dst.out_handle = c.out;
     steps[i] = c.step;
   }
-  // Lines with a curve meeting them tangentially: the curve's handle must lie on the line, in
-  // whole steps of the line's primitive direction. A diagonal line between nearest grid points
-  // may have a long primitive step (DejaVu's S spine: (122, −25)), so both ends may move to a
-  // neighbouring grid point where the step is short; the choice that moves least wins. An end
-  // an earlier line already placed stays (moving it would turn that line off its curve's handle).
-  std::vector<bool> placed(n, false);
-  for (std::size_t i = 0; i < (closed ? n : n - 1); ++i) {
-    const std::size_t j = (i + 1) % n;
-    if (nodes[i].out_handle || nodes[j].in_handle) continue;  // not a line
-    const bool at_start = nodes[i].smooth && nodes[i].in_handle && !open_end(i);
-    const bool at_end = nodes[j].smooth && nodes[j].out_handle && !open_end(j);
-    if (!at_start && !at_end) continue;
-    const Vec2 a0 = r[i].point, b0 = r[j].point;
-    // The curve meeting the line at `end` with its near handle `near` on the line: its far
-    // handle (node k's out-handle when the curve arrives, its in-handle when it leaves) at the
-    // whole step nearest the line. Cost: how far that handle moves, or a unit when even there
-    // the curvature at the join stays visible.
-    auto far_handle_cost = [&](std::size_t k, bool out, Vec2 end, Vec2 near, Vec2 d) {
-      k %= n;
-      const std::optional<Vec2> wanted = out ? nodes[k].out_handle : nodes[k].in_handle;
-      if (!steps[k] || !wanted) return 0.0;
-      double best = 1.0;
-      for (const Vec2 h : handles_near_line(r[k].point, *steps[k], out ? 1.0 : -1.0, end, d)) {
-        const Cubic c = out ? Cubic{r[k].point, h, near, end} : Cubic{end, near, h, r[k].point};
-        const double kappa = node_curvature(c, out ? SegmentEnd::end : SegmentEnd::start);
-        if (std::abs(kappa) <= 0.05 * limits.flat_curvature) best = std::min(best, 0.3 * distance(h, *wanted));
-      }
-      return best;
-    };
-    double best_cost = 1e300;
-    Vec2 best_a = a0, best_b = b0, best_d;
-    std::optional<Vec2> best_in, best_out;
-    for (int k = 0; k < 81; ++k) {
-      const Vec2 da{double(k % 3 - 1), double(k / 3 % 3 - 1)}, db{double(k / 9 % 3 - 1), double(k / 27 % 3 - 1)};
-      if ((placed[i] && da != Vec2{}) || (placed[j] && db != Vec2{})) continue;
-      const Vec2 a = a0 + da, b = b0 + db;
-      const Vec2 along = b - a;
-      const long long g = std::gcd(static_cast<long long>(std::abs(along.x)), static_cast<long long>(std::abs(along.y)));
-      if (g == 0) continue;
-      const Vec2 d = along / static_cast<double>(g);
-      // A long step leaves whole steps too coarse to give the curve κ = 0 at the join: each
-      // unit of |d| counts as a tenth of a unit moved.
-      double cost = std::max(distance(a, nodes[i].point), distance(b, nodes[j].point)) + 0.1 * norm(d);
-      std::optional<Vec2> in, out;
-      if (at_start) {  // the curve arrives at a along d
-        in = stepped_handle(a, d, -1.0, nodes[i].point, *nodes[i].in_handle);
-        cost = std::max(cost, distance(*in, *nodes[i].in_handle));
-      }
-      if (at_end) {  // the curve leaves b along d
-        out = stepped_handle(b, d, 1.0, nodes[j].point, *nodes[j].out_handle);
-        cost = std::max(cost, distance(*out, *nodes[j].out_handle));
-      }
-      // κ = 0 at the join needs the curve's far handle on the line: prefer ends where it can be.
-      if (at_start) cost += far_handle_cost(i + n - 1, true, a, *in, d);
-      if (at_end) cost += far_handle_cost(j + 1, false, b, *out, d);
-      if (cost < best_cost) best_cost = cost, best_a = a, best_b = b, best_d = d, best_in = in, best_out = out;
-    }
-    r[i].point = best_a;
-    r[j].point = best_b;
-    placed[i] = placed[j] = true;
-    if (best_in) r[i].in_handle = best_in, steps[i] = best_d;
-    if (best_out) r[j].out_handle = best_out, steps[j] = best_d;
-  }
+  place_lines_on_grid(nodes, r, steps, closed, limits);
   resolve_handle_lengths(r, nodes, steps, closed);
   choose_handle_steps(r, nodes, steps, closed, limits);
   return r;

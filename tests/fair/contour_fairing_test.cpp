@@ -91,6 +91,14 @@ TEST(ContourFairing, ProfessionalGlyphsWithNoChainOfTheirOwnAreFairedOnTheirGuid
   for (const char* g : {"uni0055", "uni006D"}) expect_faired(test::inter_variable, g, FairProfile::text);
 }
 
+TEST(ContourFairing, DiagonalStrokesEndingInCurvesAreFairedOnTheGrid) {
+  // Inconsolata's y: each diagonal stroke meets a curve tangentially, and the nearest grid
+  // points give the strokes only long primitive steps ((−11, 28) and longer). The curve's
+  // handle on the line grew to such a step and the glyph came out 9 units off (kept unfaired)
+  // until the curve's end could slide along its line (fair/line_rounding.hpp).
+  expect_faired(test::inconsolata, "y", FairProfile::text);
+}
+
 TEST(ContourFairing, HandwritingGlyphsAreFairedWithinTheTolerance) {
   // a, e, s, B, G, R: no chain of log-aesthetic segments fits some of their spans, which are
   // written from the smoothing guide instead (they were kept unfaired before that existed).

@@ -1,0 +1,288 @@
+#include "fair/line_rounding.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+#include "fair/handle_steps.hpp"
+#include "geom/polyline_distance.hpp"
+
+namespace gf {
+
+namespace {
+
+constexpr double off_line = 0.75;        // units a slid end may lie off the line
+constexpr double slide_weight = 0.02;    // a unit of slide costs this much of a unit moved
+constexpr double step_weight = 0.1;      // a unit of primitive step costs this much
+constexpr double tie_weight = 0.01;      // of a unit moved, at the ends of a line no curve meets
+constexpr double far_handle_unit = 1.0;  // the cost of a join the curve cannot leave with κ = 0
+constexpr int curve_samples = 32;
+constexpr int slid_samples = 12;
+constexpr double max_slide = 16.0;       // units, and at most half the curve's handle
+constexpr double short_step = 3.0;       // units: no slide gives a shorter step than (2, 1)
+constexpr double stray_share = 0.25;     // of its length, a handle on the line may change by
+
+struct EndPlace {
+  Vec2 point;
+  double moved;     ///< from the exact end: its distance, or as Slide::moved measures a slid end
+  bool slid = false;  ///< its curve's handle keeps its tip, not its length
+};
+
+// How a curve's end may slide along the line it meets tangentially: to a grid point near the
+// line, its handle's tip staying where it was. The cost of a place is how far the curve from
+// there (its first cubic, started at the place) strays from the exact line and curve, plus a
+// fiftieth of the slide: sliding into the curve puts the join where the curve has bent off the
+// line, sliding back along the line bends the curve's start.
+class Slide {
+ public:
+  /// `curve`: the exact cubic, starting at the join; `line_end`: the line's other end;
+  /// `off_limit`: what the line has left of the tolerance.
+  Slide(const Cubic& curve, Vec2 line_end, double off_limit) : curve_(curve), off_limit_(off_limit) {
+    const Vec2 tangent = curve.p[1] - curve.p[0];
+    into_ = tangent / norm(tangent);
+    reach_ = std::min(max_slide, 0.5 * norm(tangent));
+    path_.push_back(line_end);
+    for (int k = 0; k <= curve_samples; ++k) path_.push_back(curve.point_at(static_cast<double>(k) / curve_samples));
+  }
+
+  double reach() const { return reach_; }
+
+  /// How far the end at `p` moves from `exact`, or nothing where it may not go.
+  std::optional<double> moved(Vec2 exact, Vec2 p) const {
+    const double along = std::abs(dot(into_, p - exact));
+    if (along > reach_ || std::abs(cross(into_, p - exact)) > off_limit_) return std::nullopt;
+    const Cubic slid{p, curve_.p[1], curve_.p[2], curve_.p[3]};
+    std::vector<Vec2> samples;
+    for (int k = 0; k <= slid_samples; ++k) samples.push_back(slid.point_at(static_cast<double>(k) / slid_samples));
+    const double strays = directed_hausdorff(samples, path_, off_limit_);
+    if (strays > off_limit_) return std::nullopt;
+    return strays + slide_weight * along;
+  }
+
+ private:
+  Cubic curve_;
+  double off_limit_;
+  Vec2 into_;
+  double reach_;
+  std::vector<Vec2> path_;  ///< the line's far end, then the curve
+};
+
+// Where a line's end may go: its nearest grid point and the neighbours; a curve's end also the
+// grid points its slide allows.
+std::vector<EndPlace> end_places(Vec2 exact, const std::optional<Slide>& slide) {
+  std::vector<EndPlace> out;
+  const Vec2 base = nearest_grid_point(exact);
+  const int reach = slide ? static_cast<int>(std::ceil(slide->reach() + off_line)) : 1;
+  for (int dx = -reach; dx <= reach; ++dx)
+    for (int dy = -reach; dy <= reach; ++dy) {
+      const Vec2 p = base + Vec2{double(dx), double(dy)};
+      const bool neighbour = std::abs(dx) <= 1 && std::abs(dy) <= 1;
+      const std::optional<double> slid = slide ? slide->moved(exact, p) : std::nullopt;
+      if (slid) out.push_back({p, *slid, true});
+      else if (neighbour) out.push_back({p, distance(p, exact)});
+    }
+  return out;
+}
+
+// The outline's line from node i to node i + 1 and what rounding must keep of it.
+struct LineOnGrid {
+  std::size_t i, j;
+  bool curve_arrives;  ///< at node i a curve meets the line tangentially (node i's in-handle)
+  bool curve_leaves;   ///< at node j likewise (node j's out-handle)
+};
+
+// How a line placed with its ends at a and b fares.
+struct LinePlacement {
+  double cost = std::numeric_limits<double>::infinity();
+  Vec2 step;
+  std::optional<Vec2> in_handle, out_handle;  ///< the curves' handles on the line, at i and j
+  double in_moved = 0.0, out_moved = 0.0;     ///< how far each moved from where it was
+};
+
+class LinePlacer {
+ public:
+  LinePlacer(const std::vector<OutlineNode>& exact, const std::vector<OutlineNode>& rounded,
+             const std::vector<std::optional<Vec2>>& steps, double flat_curvature)
+      : exact_(exact), rounded_(rounded), steps_(steps), flat_(flat_curvature) {}
+
+  /// Past `bound`, only that it is past (the cost then is at least the bound).
+  LinePlacement place(const LineOnGrid& line, const EndPlace& a, const EndPlace& b,
+                      double bound = std::numeric_limits<double>::infinity()) const {
+    LinePlacement out;
+    const Vec2 along = b.point - a.point;
+    const long long g = std::gcd(static_cast<long long>(std::abs(along.x)), static_cast<long long>(std::abs(along.y)));
+    if (g == 0) return out;
+    out.step = along / static_cast<double>(g);
+    // A line no curve meets tangentially needs no short step, and its ends' moves only break
+    // ties: the lines beside it that a curve does meet decide where they go.
+    if (!line.curve_arrives && !line.curve_leaves) {
+      out.cost = tie_weight * std::max(a.moved, b.moved);
+      return out;
+    }
+    const double step_cost = step_weight * norm(out.step);
+    out.cost = std::max(a.moved, b.moved) + step_cost;
+    if (out.cost >= bound) return out;
+    // A curve's handle on the line: as long as it was (a slid end: its tip where it was, so the
+    // curve keeps its shape); then its far handle nearest the line, so the join can keep κ = 0.
+    const auto on_line = [&](const EndPlace& end, std::size_t node, Vec2 wanted, double sign) {
+      const Vec2 from = end.slid ? end.point : exact_[node].point;
+      return end.point + out.step * (sign * std::max(1.0, whole_steps(from, wanted, out.step, sign)));
+    };
+    if (line.curve_arrives) {
+      const Vec2 wanted = *exact_[line.i].in_handle;
+      out.in_handle = on_line(a, line.i, wanted, -1.0);
+      out.in_moved = distance(*out.in_handle, wanted);
+    }
+    if (line.curve_leaves) {
+      const Vec2 wanted = *exact_[line.j].out_handle;
+      out.out_handle = on_line(b, line.j, wanted, 1.0);
+      out.out_moved = distance(*out.out_handle, wanted);
+    }
+    out.cost = std::max({out.cost, out.in_moved, out.out_moved});
+    if (out.cost >= bound) return out;
+    if (out.in_handle) out.cost += far_handle_cost(previous(line.i), true, a.point, *out.in_handle, out.step);
+    if (out.out_handle) out.cost += far_handle_cost((line.j + 1) % exact_.size(), false, b.point, *out.out_handle, out.step);
+    return out;
+  }
+
+ private:
+  std::size_t previous(std::size_t k) const { return (k + exact_.size() - 1) % exact_.size(); }
+
+  // The curve meeting the line at `end` with its near handle `near` on the line: its far handle
+  // (node k's out-handle when the curve arrives, its in-handle when it leaves) at the whole
+  // step nearest the line. Its cost: how far that handle moves (three tenths), or a unit when
+  // even there the curvature at the join stays visible.
+  double far_handle_cost(std::size_t k, bool out, Vec2 end, Vec2 near, Vec2 d) const {
+    const std::optional<Vec2> wanted = out ? exact_[k].out_handle : exact_[k].in_handle;
+    if (!steps_[k] || !wanted) return 0.0;
+    double best = far_handle_unit;
+    for (const Vec2 h : handles_near_line(rounded_[k].point, *steps_[k], out ? 1.0 : -1.0, end, d)) {
+      const Cubic c = out ? Cubic{rounded_[k].point, h, near, end} : Cubic{end, near, h, rounded_[k].point};
+      const double kappa = node_curvature(c, out ? SegmentEnd::end : SegmentEnd::start);
+      if (std::abs(kappa) <= 0.05 * flat_) best = std::min(best, 0.3 * distance(h, *wanted));
+    }
+    return best;
+  }
+
+  const std::vector<OutlineNode>& exact_;
+  const std::vector<OutlineNode>& rounded_;
+  const std::vector<std::optional<Vec2>>& steps_;
+  double flat_;
+};
+
+// The runs of consecutive lines (each run's lines in order), split where a curve comes between.
+std::vector<std::vector<LineOnGrid>> line_runs(const std::vector<OutlineNode>& exact, bool closed) {
+  const std::size_t n = exact.size();
+  const auto open_end = [&](std::size_t i) { return !closed && (i == 0 || i + 1 == n); };
+  const auto is_line = [&](std::size_t i) {
+    return (closed || i + 1 < n) && !exact[i].out_handle && !exact[(i + 1) % n].in_handle;
+  };
+  // Start where a run cannot continue from the node before: after a curve, or at an open start.
+  std::size_t first = n;
+  for (std::size_t i = 0; i < n && first == n; ++i)
+    if (is_line(i) && (open_end(i) || !is_line((i + n - 1) % n))) first = i;
+  std::vector<std::vector<LineOnGrid>> runs;
+  if (first == n) return runs;  // no lines, or nothing but lines (no curve meets them)
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t i = (first + k) % n, j = (i + 1) % n;
+    if (!is_line(i)) continue;
+    const bool starts = runs.empty() || open_end(i) || !is_line((i + n - 1) % n);
+    if (starts) runs.emplace_back();
+    runs.back().push_back({i, j, exact[i].smooth && exact[i].in_handle && !open_end(i),
+                           exact[j].smooth && exact[j].out_handle && !open_end(j)});
+  }
+  return runs;
+}
+
+// The places of a run's nodes (Viterbi over the run, least total cost); empty where every
+// choice is degenerate.
+std::vector<std::size_t> cheapest_places(const std::vector<LineOnGrid>& run, const std::vector<std::vector<EndPlace>>& places,
+                                         const LinePlacer& placer) {
+  std::vector<std::vector<double>> best(places.size());
+  std::vector<std::vector<std::size_t>> from(places.size());
+  best[0].assign(places[0].size(), 0.0);
+  for (std::size_t t = 0; t < run.size(); ++t) {
+    best[t + 1].assign(places[t + 1].size(), std::numeric_limits<double>::infinity());
+    from[t + 1].assign(places[t + 1].size(), 0);
+    for (std::size_t a = 0; a < places[t].size(); ++a)
+      for (std::size_t b = 0; b < places[t + 1].size(); ++b) {
+        const double bound = best[t + 1][b] - best[t][a];
+        if (bound <= 0.0) continue;
+        const double c = best[t][a] + placer.place(run[t], places[t][a], places[t + 1][b], bound).cost;
+        if (c < best[t + 1][b]) best[t + 1][b] = c, from[t + 1][b] = a;
+      }
+  }
+  const std::vector<double>& last = best.back();
+  std::vector<std::size_t> chosen(places.size());
+  chosen.back() = static_cast<std::size_t>(std::min_element(last.begin(), last.end()) - last.begin());
+  if (!std::isfinite(last[chosen.back()])) return {};
+  for (std::size_t t = places.size() - 1; t > 0; --t) chosen[t - 1] = from[t][chosen[t]];
+  return chosen;
+}
+
+}  // namespace
+
+void place_lines_on_grid(const std::vector<OutlineNode>& exact, std::vector<OutlineNode>& rounded,
+                         std::vector<std::optional<Vec2>>& steps, bool closed, const HandleStepLimits& limits) {
+  const LinePlacer placer(exact, rounded, steps, limits.flat_curvature);
+  for (const std::vector<LineOnGrid>& run : line_runs(exact, closed)) {
+    if (std::none_of(run.begin(), run.end(), [](const LineOnGrid& l) { return l.curve_arrives || l.curve_leaves; })) continue;
+    // A curve's end slides along its line, off it by no more than the line has left of
+    // the tolerance.
+    const std::size_t n = exact.size();
+    const auto slide = [&](const LineOnGrid& l, bool arrives) -> std::optional<Slide> {
+      if (!(arrives ? l.curve_arrives : l.curve_leaves)) return std::nullopt;
+      const Cubic c = arrives ? outline_cubic(exact, (l.i + n - 1) % n) : outline_cubic(exact, l.j);
+      const Cubic from_join = arrives ? Cubic{c.p[3], c.p[2], c.p[1], c.p[0]} : c;
+      if (norm(from_join.p[1] - from_join.p[0]) == 0.0) return std::nullopt;
+      return Slide(from_join, exact[arrives ? l.j : l.i].point, std::min(off_line, limits.allowance_at(l.i)));
+    };
+    // First each end at its grid point or a neighbour; where a curve's handle on the line then
+    // strays, its end slides too.
+    const auto places_for = [&](bool slides) {
+      std::vector<std::vector<EndPlace>> places;
+      places.push_back(end_places(exact[run.front().i].point, slides ? slide(run.front(), true) : std::nullopt));
+      for (const LineOnGrid& l : run) places.push_back(end_places(exact[l.j].point, slides ? slide(l, false) : std::nullopt));
+      return places;
+    };
+    const auto placements = [&](const std::vector<std::vector<EndPlace>>& places, const std::vector<std::size_t>& chosen) {
+      std::vector<LinePlacement> out;
+      for (std::size_t t = 0; t < run.size(); ++t)
+        out.push_back(placer.place(run[t], places[t][chosen[t]], places[t + 1][chosen[t + 1]]));
+      return out;
+    };
+    std::vector<std::vector<EndPlace>> places = places_for(false);
+    std::vector<std::size_t> chosen = cheapest_places(run, places, placer);
+    if (chosen.empty()) continue;  // every choice degenerate: keep the nearest grid points
+    std::vector<LinePlacement> placed = placements(places, chosen);
+    // A handle slid along its own tangent moves the curve little: only one that grows or
+    // shrinks by more than a quarter (and more than the curve's allowance) strays, and only
+    // a long step can be made shorter by sliding.
+    const auto strays_at = [&](std::size_t node, bool in, double moved, std::size_t cubic) {
+      const Vec2 h = in ? *exact[node].in_handle : *exact[node].out_handle;
+      return moved > std::max(limits.allowance_at(cubic), stray_share * distance(h, exact[node].point));
+    };
+    const bool strays = std::any_of(run.begin(), run.end(), [&](const LineOnGrid& l) {
+      const LinePlacement& p = placed[static_cast<std::size_t>(&l - run.data())];
+      if (norm(p.step) <= short_step) return false;
+      return (p.in_handle && strays_at(l.i, true, p.in_moved, (l.i + n - 1) % n)) ||
+             (p.out_handle && strays_at(l.j, false, p.out_moved, l.j));
+    });
+    if (strays) {
+      std::vector<std::vector<EndPlace>> slid = places_for(true);
+      const std::vector<std::size_t> again = cheapest_places(run, slid, placer);
+      if (!again.empty()) places = std::move(slid), chosen = again, placed = placements(places, chosen);
+    }
+    for (std::size_t t = 0; t < run.size(); ++t) {
+      const LineOnGrid& l = run[t];
+      const LinePlacement& p = placed[t];
+      rounded[l.i].point = places[t][chosen[t]].point;
+      rounded[l.j].point = places[t + 1][chosen[t + 1]].point;
+      if (p.in_handle) rounded[l.i].in_handle = p.in_handle, steps[l.i] = p.step;
+      if (p.out_handle) rounded[l.j].out_handle = p.out_handle, steps[l.j] = p.step;
+    }
+  }
+}
+
+}  // namespace gf

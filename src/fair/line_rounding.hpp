@@ -1,0 +1,32 @@
+// Lines of an outline being rounded to the grid, where a curve meets them tangentially. The
+// curve's handle there must lie on the line, a whole number of the line's primitive steps from
+// the join, for G1 to stay exact; a diagonal line between nearby grid points may have a long
+// primitive step (DejaVu's S spine: (122, −25); Inter's y: (−65, −176)), and the handle would
+// be at least that long. So the ends of each run of lines meeting at corners are chosen
+// together (Viterbi over the run): each end at its nearest grid point or a neighbour; and where
+// a curve's handle would then grow or shrink by more than a quarter, the curve's end may also
+// slide along its line (a curve leaves a G2 line join straight, κ = 0, so starting it a few
+// units earlier or later along the line, its handle's tip kept, barely moves it) to where the
+// line's step is short.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "fair/handle_steps.hpp"
+#include "fair/outline_nodes.hpp"
+
+namespace gf {
+
+/// Places the nodes of every run of lines that a curve meets tangentially: `rounded` gets
+/// their grid points and each such curve's handle on its line, `steps` the line's primitive
+/// direction at those joins. Each line that a curve meets costs its largest move (of its ends
+/// and the curves' handles; a slid end by how far its curve then strays from `exact`, plus a
+/// fiftieth of the slide) and a tenth of a unit per unit of step, and more where the curve's
+/// far handle cannot give it κ = 0 at the join (|κ| within a twentieth of
+/// `limits.flat_curvature`); the run's least total wins. A slid end stays within what the
+/// line has left of the tolerance (`limits.allowance_at`) of it.
+void place_lines_on_grid(const std::vector<OutlineNode>& exact, std::vector<OutlineNode>& rounded,
+                         std::vector<std::optional<Vec2>>& steps, bool closed, const HandleStepLimits& limits);
+
+}  // namespace gf

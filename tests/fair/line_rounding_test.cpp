@@ -1,0 +1,71 @@
+// Lines on the grid: a curve meeting a line tangentially keeps its handle exactly on the line,
+// and where the line's nearest grid points give it only a long primitive step, the curve's end
+// slides along the line to where the step is short, instead of the handle growing to it.
+#include "fair/line_rounding.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace gf {
+namespace {
+
+std::vector<OutlineNode> nearest_grid_points(std::vector<OutlineNode> nodes) {
+  for (OutlineNode& n : nodes) n.point = nearest_grid_point(n.point);
+  return nodes;
+}
+
+TEST(LineRounding, ACurveLeavingALongDiagonalLineKeepsItsHandleLength) {
+  // Inter's y: a corner, a 1,877-unit diagonal line, a curve leaving it tangentially with a
+  // 49-unit handle. The nearest grid points and their neighbours give the line no primitive
+  // step shorter than (−65, −176), 187 units: the handle would grow almost fourfold.
+  std::vector<OutlineNode> nodes(3);
+  nodes[0].point = {1472.0, 1536.0};
+  nodes[0].smooth = false;
+  nodes[1].point = {820.0, -224.0};
+  nodes[1].out_handle = Vec2{802.83, -270.34};
+  nodes[2].point = {683.87, -450.83};
+  nodes[2].in_handle = Vec2{766.63, -368.07};
+  nodes[2].smooth = false;
+  std::vector<OutlineNode> r = nearest_grid_points(nodes);
+  std::vector<std::optional<Vec2>> steps(nodes.size());
+  place_lines_on_grid(nodes, r, steps, true, HandleStepLimits{});
+
+  const Vec2 line = nodes[1].point - nodes[0].point, handle = *nodes[1].out_handle - nodes[1].point;
+  ASSERT_TRUE(r[1].out_handle && steps[1]);
+  const Vec2 h = *r[1].out_handle;
+  EXPECT_TRUE(h.x == std::round(h.x) && h.y == std::round(h.y));
+  EXPECT_EQ(cross(r[1].point - r[0].point, h - r[1].point), 0.0);  // G1 exact on the grid
+  EXPECT_EQ(cross(*steps[1], h - r[1].point), 0.0);
+  EXPECT_LT(norm(*steps[1]), 40.0);
+  // The handle's tip stays near where it was, so the curve keeps its shape.
+  EXPECT_LE(distance(h, *nodes[1].out_handle), 0.5 * norm(*steps[1]) + 1.0);
+  EXPECT_LE(std::abs(norm(h - r[1].point) - norm(handle)), 0.25 * norm(handle));
+  // The join slid along the line, not off it; the corner moved a unit at most.
+  EXPECT_LE(std::abs(cross(line / norm(line), r[1].point - nodes[1].point)), 0.75);
+  EXPECT_LE(distance(r[1].point, nodes[1].point), 16.0);
+  EXPECT_LE(distance(r[0].point, nodes[0].point), std::sqrt(2.0));
+}
+
+TEST(LineRounding, AShortStepNeedsNoSlide) {
+  // A line close to (2, 5) from a corner to a curve: the nearest grid points already give the
+  // short step, and the curve's end stays at its nearest grid point or a neighbour.
+  std::vector<OutlineNode> nodes(3);
+  nodes[0].point = {0.3, 0.2};
+  nodes[0].smooth = false;
+  nodes[1].point = {100.2, 250.1};
+  nodes[1].out_handle = Vec2{108.2, 270.1};
+  nodes[2].point = {150.0, 300.0};
+  nodes[2].in_handle = Vec2{130.0, 300.0};
+  nodes[2].smooth = false;
+  std::vector<OutlineNode> r = nearest_grid_points(nodes);
+  std::vector<std::optional<Vec2>> steps(nodes.size());
+  place_lines_on_grid(nodes, r, steps, true, HandleStepLimits{});
+  ASSERT_TRUE(steps[1]);
+  EXPECT_EQ(*steps[1], Vec2(2.0, 5.0));
+  EXPECT_LE(distance(r[1].point, nodes[1].point), std::sqrt(2.0));
+  EXPECT_EQ(*r[1].out_handle, r[1].point + Vec2(8.0, 20.0));
+}
+
+}  // namespace
+}  // namespace gf
