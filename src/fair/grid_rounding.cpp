@@ -12,13 +12,6 @@ namespace gf {
 
 namespace {
 
-// node + sign·m·d: the handle m ≥ 1 whole grid steps from the node on its side (sign −1 for
-// an in-handle), m nearest to how far `handle` lies from `from` along d.
-Vec2 stepped_handle(Vec2 node, Vec2 d, double sign, Vec2 from, Vec2 handle) {
-  const double m = std::max(1.0, whole_steps(from, handle, d, sign));
-  return node + d * (sign * m);
-}
-
 // A node's handles along the integer direction d: P − m_in d and P + m_out d.
 struct Choice {
   Vec2 point;

@@ -126,8 +126,7 @@ class LinePlacer {
     // A curve's handle on the line: as long as it was (a slid end: its tip where it was, so the
     // curve keeps its shape); then its far handle nearest the line, so the join can keep κ = 0.
     const auto on_line = [&](const EndPlace& end, std::size_t node, Vec2 wanted, double sign) {
-      const Vec2 from = end.slid ? end.point : exact_[node].point;
-      return end.point + out.step * (sign * std::max(1.0, whole_steps(from, wanted, out.step, sign)));
+      return stepped_handle(end.point, out.step, sign, end.slid ? end.point : exact_[node].point, wanted);
     };
     if (line.curve_arrives) {
       const Vec2 wanted = *exact_[line.i].in_handle;
@@ -263,12 +262,13 @@ void place_lines_on_grid(const std::vector<OutlineNode>& exact, std::vector<Outl
       const Vec2 h = in ? *exact[node].in_handle : *exact[node].out_handle;
       return moved > std::max(limits.allowance_at(cubic), stray_share * distance(h, exact[node].point));
     };
-    const bool strays = std::any_of(run.begin(), run.end(), [&](const LineOnGrid& l) {
-      const LinePlacement& p = placed[static_cast<std::size_t>(&l - run.data())];
-      if (norm(p.step) <= short_step) return false;
-      return (p.in_handle && strays_at(l.i, true, p.in_moved, (l.i + n - 1) % n)) ||
-             (p.out_handle && strays_at(l.j, false, p.out_moved, l.j));
-    });
+    bool strays = false;
+    for (std::size_t t = 0; t < run.size() && !strays; ++t) {
+      const LineOnGrid& l = run[t];
+      const LinePlacement& p = placed[t];
+      strays = norm(p.step) > short_step && ((p.in_handle && strays_at(l.i, true, p.in_moved, (l.i + n - 1) % n)) ||
+                                             (p.out_handle && strays_at(l.j, false, p.out_moved, l.j)));
+    }
     if (strays) {
       std::vector<std::vector<EndPlace>> slid = places_for(true);
       const std::vector<std::size_t> again = cheapest_places(run, slid, placer);

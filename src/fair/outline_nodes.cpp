@@ -1,5 +1,6 @@
 #include "fair/outline_nodes.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace gf {
@@ -25,6 +26,10 @@ Contour to_contour(const std::vector<OutlineNode>& nodes, bool closed) {
 
 double whole_steps(Vec2 from, Vec2 handle, Vec2 d, double sign) {
   return std::round(sign * dot(handle - from, d) / dot(d, d));
+}
+
+Vec2 stepped_handle(Vec2 node, Vec2 d, double sign, Vec2 from, Vec2 handle) {
+  return node + d * (sign * std::max(1.0, whole_steps(from, handle, d, sign)));
 }
 
 double node_curvature(const Cubic& c, SegmentEnd end) { return end_curvature(c, end).curvature.value_or(0.0); }

@@ -38,6 +38,10 @@ inline Vec2 nearest_grid_point(Vec2 p) { return {std::round(p.x), std::round(p.y
 /// of the node: sign +1 for an out-handle, −1 for an in-handle (0 or less: not on its side).
 double whole_steps(Vec2 from, Vec2 handle, Vec2 d, double sign);
 
+/// node + sign·m·d: the handle m ≥ 1 whole steps of d from `node` on its side (sign −1 for an
+/// in-handle), m = whole_steps(from, handle, d, sign) at least 1.
+Vec2 stepped_handle(Vec2 node, Vec2 d, double sign, Vec2 from, Vec2 handle);
+
 /// Curvature where a cubic of the outline leaves its start or reaches its end
 /// (geom/curvature.hpp), 0 where a retracted handle leaves it unbounded.
 double node_curvature(const Cubic& c, SegmentEnd end);
