@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace gf {
 
@@ -26,6 +27,18 @@ double squared_distance_to_polyline(Vec2 p, std::span<const Vec2> polyline) {
   return best;
 }
 
+// An axis-aligned box, for a lower bound on the distance to everything inside it.
+struct Box {
+  Vec2 lo, hi;
+  static Box of(Vec2 a, Vec2 b) { return {{std::min(a.x, b.x), std::min(a.y, b.y)}, {std::max(a.x, b.x), std::max(a.y, b.y)}}; }
+  Box with(Vec2 p) const { return {{std::min(lo.x, p.x), std::min(lo.y, p.y)}, {std::max(hi.x, p.x), std::max(hi.y, p.y)}}; }
+  double squared_distance(Vec2 p) const {
+    const double dx = std::max({lo.x - p.x, 0.0, p.x - hi.x});
+    const double dy = std::max({lo.y - p.y, 0.0, p.y - hi.y});
+    return dx * dx + dy * dy;
+  }
+};
+
 }  // namespace
 
 double directed_hausdorff(std::span<const Vec2> from, std::span<const Vec2> to_polyline, double stop_above) {
@@ -37,20 +50,42 @@ double directed_hausdorff(std::span<const Vec2> from, std::span<const Vec2> to_p
   }
   // Exact, with an early exit (Taha & Hanbury 2015): a point with any segment nearer than the
   // worst so far cannot raise it. Segments are tried outwards from the one nearest the
-  // previous point, so along two curves traced the same way the exit comes at once.
+  // previous point, so along two curves traced the same way the exit comes at once; a
+  // direction stops where the box of every segment left that way is no nearer than the
+  // nearest found. Pieces between extrema run monotone in x and y, where those boxes are tight.
   const std::size_t segments = to_polyline.size() - 1;
+  std::vector<Box> before(segments), after(segments);  // segments 0..i and i..end
+  before[0] = Box::of(to_polyline[0], to_polyline[1]);
+  for (std::size_t i = 1; i < segments; ++i) before[i] = before[i - 1].with(to_polyline[i + 1]);
+  after[segments - 1] = Box::of(to_polyline[segments - 1], to_polyline[segments]);
+  for (std::size_t i = segments - 1; i-- > 0;) after[i] = after[i + 1].with(to_polyline[i]);
   double worst = 0.0;
   std::size_t hint = 0;
   for (const Vec2 p : from) {
-    double nearest = std::numeric_limits<double>::infinity();
+    double nearest = squared_distance_to_segment(p, to_polyline[hint], to_polyline[hint + 1]);
     std::size_t nearest_at = hint;
-    for (std::size_t k = 0; k < 2 * segments; ++k) {
-      const std::size_t step = (k + 1) / 2;
-      if (k % 2 == 1 ? hint + step >= segments : step > hint) continue;
-      const std::size_t i = k % 2 == 1 ? hint + step : hint - step;
-      const double d = squared_distance_to_segment(p, to_polyline[i], to_polyline[i + 1]);
-      if (d < nearest) nearest = d, nearest_at = i;
-      if (nearest <= worst) break;
+    bool up = hint + 1 < segments, down = hint > 0;
+    for (std::size_t step = 1; nearest > worst && (up || down); ++step) {
+      if (up) {
+        const std::size_t i = hint + step;
+        if (after[i].squared_distance(p) >= nearest) {
+          up = false;
+        } else {
+          const double d = squared_distance_to_segment(p, to_polyline[i], to_polyline[i + 1]);
+          if (d < nearest) nearest = d, nearest_at = i;
+          up = i + 1 < segments;
+        }
+      }
+      if (down && nearest > worst) {
+        const std::size_t i = hint - step;
+        if (before[i].squared_distance(p) >= nearest) {
+          down = false;
+        } else {
+          const double d = squared_distance_to_segment(p, to_polyline[i], to_polyline[i + 1]);
+          if (d < nearest) nearest = d, nearest_at = i;
+          down = i > 0;
+        }
+      }
     }
     hint = nearest_at;
     worst = std::max(worst, nearest);

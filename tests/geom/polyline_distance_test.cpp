@@ -1,5 +1,6 @@
 // Directed Hausdorff distances to polylines: closed forms, the brute-force definition on
-// random curves (the early exit and the grid must change nothing), and the stop_above promise.
+// random curves (the early exit, the pruning by boxes and the grid must change nothing), and
+// the stop_above promise.
 #include "geom/polyline_distance.hpp"
 
 #include <gtest/gtest.h>
