@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <memory>
 #include <span>
 
@@ -26,12 +27,27 @@ constexpr int fallback_rounds = 4;  // a text run on its guide, after its own ou
 constexpr double max_relative_mismatch = 1e-9;  // |Δκ| / max|κ| the G2 solve must reach
 constexpr int max_g3_rounds = 4;  // of cutting the segments whose G3 spirals stray
 
-double lcg_alpha(const RunReference& ref, double s0, double s1) {
-  const std::vector<Cubic> cubics = ref.cubics_between(s0, s1);
-  const std::vector<Segment> segments(cubics.begin(), cubics.end());
-  const LcgSlope slope = estimate_lcg_slope(segments);
-  return slope.kind == LcgSlope::Kind::slope ? std::clamp(slope.alpha, -2.0, 4.0) : default_alpha;
-}
+// α of each piece of a run's reference from its LCG, estimated once: a round of refinement
+// solves again only the spans whose junctions changed, and most of their pieces are pieces of
+// the round before (DejaVu Sans: one estimate in two was a repeat).
+class PieceAlphas {
+ public:
+  explicit PieceAlphas(const RunReference& ref) : ref_(ref) {}
+  double operator()(double s0, double s1) {
+    const auto [at, added] = known_.try_emplace({s0, s1}, 0.0);
+    if (added) {
+      const std::vector<Cubic> cubics = ref_.cubics_between(s0, s1);
+      const std::vector<Segment> segments(cubics.begin(), cubics.end());
+      const LcgSlope slope = estimate_lcg_slope(segments);
+      at->second = slope.kind == LcgSlope::Kind::slope ? std::clamp(slope.alpha, -2.0, 4.0) : default_alpha;
+    }
+    return at->second;
+  }
+
+ private:
+  const RunReference& ref_;
+  std::map<std::pair<double, double>, double> known_;
+};
 
 /// A chain over junctions first … last (indices into `junctions`, wrapping for a closed run).
 struct ChainSpan {
@@ -158,7 +174,8 @@ Vec2 end_tangent_of(double s, const RunReference& ref, const SmoothRun& run, dou
 
 // The chain on the span's junctions, before any repair: points averaged over the window and
 // made to turn one way, balanced starting tangents, κ = 0 ends aimed, α from each piece's LCG.
-LacChain initial_chain(const ChainSpan& span, const RunReference& ref, const SmoothRun& run, double w, double budget) {
+LacChain initial_chain(const ChainSpan& span, const RunReference& ref, PieceAlphas& alphas, const SmoothRun& run, double w,
+                       double budget) {
   const double L = ref.length();
   const std::size_t points = span.s.size();
   LacChain chain;
@@ -202,7 +219,7 @@ LacChain initial_chain(const ChainSpan& span, const RunReference& ref, const Smo
         if (!tangents_meet_in_front(chain, i)) chain.tangent_angles = before;
     }
   for (std::size_t i = 0; i < chain.segment_count(); ++i)
-    chain.alphas.push_back(lcg_alpha(ref, span.s[i], segment_end_s(span, i, L)));
+    chain.alphas.push_back(alphas(span.s[i], segment_end_s(span, i, L)));
   return chain;
 }
 
@@ -295,13 +312,13 @@ void check_fidelity(const std::vector<std::vector<Vec2>>& lac, const ChainSpan& 
 }
 
 // `guided`: ref is the run's smoothing guide, source the run itself (else both are the source).
-ChainOutcome fair_chain(const ChainSpan& span, const RunReference& ref, const RunReference& source, bool guided,
-                        const SmoothRun& run, const FairSettings& settings, double budget, bool accept_mismatch) {
+ChainOutcome fair_chain(const ChainSpan& span, const RunReference& ref, PieceAlphas& alphas, const RunReference& source,
+                        bool guided, const SmoothRun& run, const FairSettings& settings, double budget, bool accept_mismatch) {
   ChainOutcome out;
   const double L = ref.length();
   out.cuts = missing_junctions(span, L);
   if (out.adjusts()) return out;
-  LacChain chain = initial_chain(span, ref, run, settings.feature_window_units, budget);
+  LacChain chain = initial_chain(span, ref, alphas, run, settings.feature_window_units, budget);
   make_drawable(chain, span, ref, run, out);
   if (out.adjusts()) return out;
 
@@ -506,6 +523,7 @@ FairedRun fair_run_on(const SmoothRun& run, const RunReference& source, const st
   // cut and drop junctions of the spans that did): its outcome, a chain or none to be had, is
   // kept, not solved again.
   std::vector<std::pair<ChainSpan, ChainOutcome>> settled;
+  PieceAlphas alphas(ref);
   for (int round = 0; round < rounds; ++round) {
     std::vector<double> cuts, drops;
     too_far = false;
@@ -519,7 +537,7 @@ FairedRun fair_run_on(const SmoothRun& run, const RunReference& source, const st
       const auto known = std::find_if(settled.begin(), settled.end(), [&](const auto& e) { return e.first == span; });
       ChainOutcome o = known != settled.end()
                            ? known->second
-                           : fair_chain(span, ref, source, guide.has_value(), guide_run, settings, budget,
+                           : fair_chain(span, ref, alphas, source, guide.has_value(), guide_run, settings, budget,
                                         round >= rounds / 2);
       if (known == settled.end() && !o.adjusts()) settled.emplace_back(span, o);
       result.deviation = std::max(result.deviation, o.deviation);
