@@ -270,14 +270,19 @@ class NodeChange {
   }
 
   /// The jump costs at node i and its neighbours, as the outline stands.
-  double cost() const {
+  double jump_costs() const {
     const std::array<double, 3> j = jumps_now();
     return jump_cost(j[0]) + jump_cost(j[1]) + jump_cost(j[2]);
   }
-  /// Whether any of those jumps is over the target.
-  bool jumps() const {
+  /// Those, and an inflection either cubic at i has that its unrounded self lacks as the cubic
+  /// choice weighs it (a nearly straight cubic whose rounded ends leave its chord outside their
+  /// tangents can only be an S).
+  double cost() const { return jump_costs() + wrong_way * inflections_added(); }
+  /// Whether either cubic bends the wrong way, or any of those jumps is over the target.
+  bool needs_change() const {
     const std::array<double, 3> j = jumps_now();
-    return std::any_of(j.begin(), j.end(), [](double x) { return jump_cost(x) > target_jump * target_jump; });
+    return inflections_added() > 0 ||
+           std::any_of(j.begin(), j.end(), [](double x) { return jump_cost(x) > target_jump * target_jump; });
   }
 
   /// Whether the outline as it stands is an allowed change.
@@ -292,6 +297,13 @@ class NodeChange {
   }
 
  private:
+  int inflections_added() const {
+    int added = 0;
+    for (const std::size_t k : {h_, i_})
+      added += judge_.traits(k, outline_cubic(nodes_, k)).shape.sign_changes > judge_.unrounded(k).shape.sign_changes;
+    return added;
+  }
+
   // The jumps at the neighbour before, at node i and at the neighbour after (join_jump, with
   // only the two cubics at i evaluated where the contour has room).
   std::array<double, 3> jumps_now() const {
@@ -341,7 +353,7 @@ std::vector<std::size_t> nudge_jumping_nodes(std::vector<OutlineNode>& nodes, co
   for (const std::size_t i : candidates) {
     if (!joins.joins_cubics(i) || !steps[i]) continue;
     const NodeChange change(nodes, joins, judge, flat, i);
-    if (!change.jumps()) continue;
+    if (!change.needs_change()) continue;
     const OutlineNode kept = nodes[i];
     const OutlineNode& target = ideal[i];
     // Turned, only to steps of at most 10 units a side: whole steps of a longer one are too
@@ -366,7 +378,8 @@ std::vector<std::size_t> nudge_jumping_nodes(std::vector<OutlineNode>& nodes, co
             nodes[i].point = p;
             nodes[i].in_handle = p - d * (m_in + a);
             nodes[i].out_handle = p + d * (m_out + b);
-            const double c = change.cost();  // the cheap test first
+            if (change.jump_costs() >= best_cost) continue;  // the cheap test first
+            const double c = change.cost();
             if (c < best_cost && change.allowed()) best_cost = c, best = nodes[i], best_step = d;
           }
     }
@@ -430,6 +443,7 @@ std::vector<std::size_t> seat_inflections(std::vector<OutlineNode>& nodes, const
             if (m_in + a < 1.0 || m_out + b < 1.0) continue;
             nodes[i].in_handle = p - d * (m_in + a);
             nodes[i].out_handle = p + d * (m_out + b);
+            if (change.jump_costs() >= best_cost) continue;
             const double c = change.cost();
             if (c < best_cost && change.allowed()) best_cost = c, best = {nodes[h], nodes[i], nodes[j]}, best_step = d;
           }

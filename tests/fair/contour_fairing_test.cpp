@@ -11,6 +11,7 @@
 
 #include "fair/contour_plan.hpp"
 #include "geom/curvature.hpp"
+#include "geom/join.hpp"
 #include "io/source.hpp"
 #include "point_set_distance.hpp"
 #include "test_fonts.hpp"
@@ -97,6 +98,45 @@ TEST(ContourFairing, DiagonalStrokesEndingInCurvesAreFairedOnTheGrid) {
   // handle on the line grew to such a step and the glyph came out 9 units off (kept unfaired)
   // until the curve's end could slide along its line (fair/line_rounding.hpp).
   expect_faired(test::inconsolata, "y", FairProfile::text);
+}
+
+// Sign changes of κ along the smooth stretches of a contour (joins within 3° continue a
+// stretch, as the fairing bars count them), from 64 steps per segment, |κ|·UPM under 1e-6 as 0.
+int inflections(const Contour& c, double upm) {
+  std::vector<bool> breaks(c.segments.size(), !c.closed);
+  for (const Join& j : joins_of(c)) breaks[j.node] = j.kind == JoinKind::corner || j.kind == JoinKind::degenerate;
+  int count = 0, sign = 0;
+  for (std::size_t k = 0; k < c.segments.size(); ++k) {
+    if (breaks[k]) sign = 0;
+    for (int step = 0; step <= 64; ++step) {
+      const double kappa = curvature(derivatives_at(c.segments[k], step / 64.0)).value_or(0.0) * upm;
+      if (std::abs(kappa) < 1e-6) continue;
+      const int s = kappa > 0.0 ? 1 : -1;
+      count += sign != 0 && s != sign;
+      sign = s;
+    }
+  }
+  return count;
+}
+
+TEST(ContourFairing, RoundingAddsNoInflection) {
+  // Inter's a: rounding turned nearly straight cubics of its bowl into S curves (4 inflections
+  // against the source's 2). A node is nudged while either of its cubics bends more ways than
+  // before rounding, not only while its curvature jumps.
+  SourceOptions options;
+  options.selection.names.push_back("uni0061");
+  const GlyphSource source = GlyphSource::open(test::inter_variable, options);
+  const Glyph g = *source.load(0);
+  const double upm = source.font().units_per_em;
+  FairOptions fo;
+  fo.profile = FairProfile::text;
+  const GlyphFairing r = fair_glyph(g, resolve_settings(fo, upm));
+  ASSERT_TRUE(r.kept.empty()) << r.kept.front();
+  int before = 0, after = 0;
+  for (const Contour& c : g.outline.contours) before += inflections(c, upm);
+  for (const Contour& c : r.glyph.outline.contours) after += inflections(c, upm);
+  EXPECT_GT(before, 0);
+  EXPECT_LE(after, before);
 }
 
 TEST(ContourFairing, HandwritingGlyphsAreFairedWithinTheTolerance) {
