@@ -174,8 +174,8 @@ Vec2 end_tangent_of(double s, const RunReference& ref, const SmoothRun& run, dou
 
 // The chain on the span's junctions, before any repair: points averaged over the window and
 // made to turn one way, balanced starting tangents, κ = 0 ends aimed, α from each piece's LCG.
-LacChain initial_chain(const ChainSpan& span, const RunReference& ref, PieceAlphas& alphas, const SmoothRun& run, double w,
-                       double budget) {
+LacChain initial_chain(const ChainSpan& span, const RunReference& ref, PieceAlphas& alphas, const SmoothRun& run,
+                       double w, double budget) {
   const double L = ref.length();
   const std::size_t points = span.s.size();
   LacChain chain;
@@ -313,7 +313,8 @@ void check_fidelity(const std::vector<std::vector<Vec2>>& lac, const ChainSpan& 
 
 // `guided`: ref is the run's smoothing guide, source the run itself (else both are the source).
 ChainOutcome fair_chain(const ChainSpan& span, const RunReference& ref, PieceAlphas& alphas, const RunReference& source,
-                        bool guided, const SmoothRun& run, const FairSettings& settings, double budget, bool accept_mismatch) {
+                        bool guided, const SmoothRun& run, const FairSettings& settings, double budget,
+                        bool accept_mismatch) {
   ChainOutcome out;
   const double L = ref.length();
   out.cuts = missing_junctions(span, L);

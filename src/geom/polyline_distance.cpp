@@ -30,8 +30,10 @@ double squared_distance_to_polyline(Vec2 p, std::span<const Vec2> polyline) {
 // An axis-aligned box, for a lower bound on the distance to everything inside it.
 struct Box {
   Vec2 lo, hi;
-  static Box of(Vec2 a, Vec2 b) { return {{std::min(a.x, b.x), std::min(a.y, b.y)}, {std::max(a.x, b.x), std::max(a.y, b.y)}}; }
-  Box with(Vec2 p) const { return {{std::min(lo.x, p.x), std::min(lo.y, p.y)}, {std::max(hi.x, p.x), std::max(hi.y, p.y)}}; }
+  static Box of(Vec2 a, Vec2 b) { return Box{a, a}.with(b); }
+  Box with(Vec2 p) const {
+    return {{std::min(lo.x, p.x), std::min(lo.y, p.y)}, {std::max(hi.x, p.x), std::max(hi.y, p.y)}};
+  }
   double squared_distance(Vec2 p) const {
     const double dx = std::max({lo.x - p.x, 0.0, p.x - hi.x});
     const double dy = std::max({lo.y - p.y, 0.0, p.y - hi.y});
