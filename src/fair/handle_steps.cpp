@@ -274,10 +274,12 @@ class NodeChange {
     const std::array<double, 3> j = jumps_now();
     return jump_cost(j[0]) + jump_cost(j[1]) + jump_cost(j[2]);
   }
-  /// Those, and an inflection either cubic at i has that its unrounded self lacks as the cubic
+  /// What either cubic at i costs for an inflection its unrounded self lacks, as the cubic
   /// choice weighs it (a nearly straight cubic whose rounded ends leave its chord outside their
   /// tangents can only be an S).
-  double cost() const { return jump_costs() + wrong_way * inflections_added(); }
+  double bend_cost() const { return wrong_way * inflections_added(); }
+  /// Both.
+  double cost() const { return jump_costs() + bend_cost(); }
   /// Whether either cubic bends the wrong way, or any of those jumps is over the target.
   bool needs_change() const {
     const std::array<double, 3> j = jumps_now();
@@ -378,8 +380,9 @@ std::vector<std::size_t> nudge_jumping_nodes(std::vector<OutlineNode>& nodes, co
             nodes[i].point = p;
             nodes[i].in_handle = p - d * (m_in + a);
             nodes[i].out_handle = p + d * (m_out + b);
-            if (change.jump_costs() >= best_cost) continue;  // the cheap test first
-            const double c = change.cost();
+            const double jumps = change.jump_costs();  // the cheap test first
+            if (jumps >= best_cost) continue;
+            const double c = jumps + change.bend_cost();
             if (c < best_cost && change.allowed()) best_cost = c, best = nodes[i], best_step = d;
           }
     }
@@ -443,8 +446,9 @@ std::vector<std::size_t> seat_inflections(std::vector<OutlineNode>& nodes, const
             if (m_in + a < 1.0 || m_out + b < 1.0) continue;
             nodes[i].in_handle = p - d * (m_in + a);
             nodes[i].out_handle = p + d * (m_out + b);
-            if (change.jump_costs() >= best_cost) continue;
-            const double c = change.cost();
+            const double jumps = change.jump_costs();
+            if (jumps >= best_cost) continue;
+            const double c = jumps + change.bend_cost();
             if (c < best_cost && change.allowed()) best_cost = c, best = {nodes[h], nodes[i], nodes[j]}, best_step = d;
           }
       }

@@ -66,28 +66,17 @@ double directed_hausdorff(std::span<const Vec2> from, std::span<const Vec2> to_p
   for (const Vec2 p : from) {
     double nearest = squared_distance_to_segment(p, to_polyline[hint], to_polyline[hint + 1]);
     std::size_t nearest_at = hint;
+    // Segment i, unless everything from it on (`rest`) is no nearer; whether to go on.
+    const auto visit = [&](std::size_t i, const Box& rest) {
+      if (rest.squared_distance(p) >= nearest) return false;
+      const double d = squared_distance_to_segment(p, to_polyline[i], to_polyline[i + 1]);
+      if (d < nearest) nearest = d, nearest_at = i;
+      return true;
+    };
     bool up = hint + 1 < segments, down = hint > 0;
     for (std::size_t step = 1; nearest > worst && (up || down); ++step) {
-      if (up) {
-        const std::size_t i = hint + step;
-        if (after[i].squared_distance(p) >= nearest) {
-          up = false;
-        } else {
-          const double d = squared_distance_to_segment(p, to_polyline[i], to_polyline[i + 1]);
-          if (d < nearest) nearest = d, nearest_at = i;
-          up = i + 1 < segments;
-        }
-      }
-      if (down && nearest > worst) {
-        const std::size_t i = hint - step;
-        if (before[i].squared_distance(p) >= nearest) {
-          down = false;
-        } else {
-          const double d = squared_distance_to_segment(p, to_polyline[i], to_polyline[i + 1]);
-          if (d < nearest) nearest = d, nearest_at = i;
-          down = i > 0;
-        }
-      }
+      if (up) up = visit(hint + step, after[hint + step]) && hint + step + 1 < segments;
+      if (down && nearest > worst) down = visit(hint - step, before[hint - step]) && hint - step > 0;
     }
     hint = nearest_at;
     worst = std::max(worst, nearest);

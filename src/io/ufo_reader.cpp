@@ -105,9 +105,9 @@ class ContourBuilder {
 double attr_number(const pugi::xml_node& n, const char* name, double fallback, const std::string& where) {
   const pugi::xml_attribute a = n.attribute(name);
   if (!a) return fallback;
-  const std::string text = a.value();
+  const std::string_view text = a.value();
   const std::optional<double> v = parse_number(text);
-  if (!v) throw InputError(where + ": attribute " + name + "=\"" + text + "\" is not a number");
+  if (!v) throw InputError(where + ": attribute " + name + "=\"" + std::string(text) + "\" is not a number");
   return *v;
 }
 
