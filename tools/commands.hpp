@@ -76,6 +76,7 @@ class FairCommand : public Subcommand {
   std::string continuity_ = "g2";
   std::optional<double> tolerance_;
   std::optional<double> corner_angle_;
+  bool round_ = false;
   bool no_round_ = false;
   std::string proof_;
   std::string segments_;

@@ -1,5 +1,5 @@
 // glyphfair fair SRC [selection] -o OUT.ufo|.svg|.json [--continuity g1|g2|g3] [--tolerance UNITS]
-//                [--profile text|handwriting] [--corner-angle DEG] [--no-round] [--proof FILE.pdf]
+//                [--profile text|handwriting] [--corner-angle DEG] [--round|--no-round] [--proof FILE.pdf]
 //                [--segments FILE.json] [--jobs N]
 #include <algorithm>
 #include <filesystem>
@@ -44,7 +44,9 @@ void FairCommand::add_to(CLI::App& app) {
   c.add_option("--corner-angle", corner_angle_,
                "Joins turning by more than this many degrees stay corners (default 3 for text, 30 for handwriting)")
       ->check(CLI::Range(0.0, 180.0));
-  c.add_flag("--no-round", no_round_, "Keep fractional coordinates instead of rounding to the integer grid");
+  CLI::Option* round = c.add_flag("--round", round_,
+                                  "Round to the integer grid even a glyph the source draws off it (the default for SVG and point sequences)");
+  c.add_flag("--no-round", no_round_, "Keep fractional coordinates instead of rounding to the integer grid")->excludes(round);
   c.add_option("--proof", proof_, "Also draw a before/after proof of every faired glyph (PDF)");
   c.add_option("--segments", segments_,
                "Also write the faired curve before the cubic writeback: every piece with its end κ and κ′ (JSON)");
@@ -61,7 +63,13 @@ int FairCommand::run() const {
   options.continuity = *parse_continuity(continuity_);
   options.tolerance_units = tolerance_;
   options.corner_angle_deg = corner_angle_;
-  options.round_to_integers = !no_round_;
+  // A font or UFO glyph drawn off the integer grid keeps its fractions; SVG paths and fitted
+  // point sequences have no grid of their own, and a font made from them wants integers.
+  const std::string in_ext = lower_extension(source_);
+  const bool designed_grid = in_ext != ".svg" && in_ext != ".json";
+  options.rounding = no_round_ ? Rounding::none
+                     : round_ || !designed_grid ? Rounding::integers
+                                                : Rounding::as_source;
 
   const GlyphSource source = GlyphSource::open(source_, selection_.parse());
   const FontInfo& font = source.font();

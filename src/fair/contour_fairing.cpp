@@ -275,8 +275,8 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
                                    std::vector<std::size_t>& kinked) {
   ContourFairing out;
   out.contour = source;
-  const double rounding = settings.round_to_integers ? 0.5 : 0.0;
-  double available = std::max(settings.tolerance_units - rounding, 0.25 * settings.tolerance_units);
+  const bool round = settings.rounding == Rounding::integers;
+  double available = std::max(settings.tolerance_units - (round ? 0.5 : 0.0), 0.25 * settings.tolerance_units);
   bool run_failed = false;
   // On the guides, one try: a second, with half the budget, took whole DejaVu Sans 8 % more
   // time to fair 18 more contours.
@@ -296,7 +296,7 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
     const std::vector<double> by_segment = distance_by_piece(sampled.grid, sampled.samples.segment_of, sampled_source.grid);
     double d = by_segment.empty() ? distance_between(sampled, sampled_source)
                                   : *std::max_element(by_segment.begin(), by_segment.end());
-    if (settings.round_to_integers && d <= settings.tolerance_units) {
+    if (round && d <= settings.tolerance_units) {
       // What the float outline leaves of the tolerance, segment by segment, is what rounding
       // may spend on G2 there (5 % kept for sampling).
       HandleStepLimits limits{settings.flat_curvature, 0.95 * (settings.tolerance_units - d), {}};
@@ -344,7 +344,9 @@ double contour_distance(const Contour& a, const Contour& b) {
   return distance_between(SampledContour(a), SampledContour(b));
 }
 
-ContourFairing fair_contour(const Contour& source, const FairSettings& settings) {
+ContourFairing fair_contour(const Contour& source, const FairSettings& requested) {
+  FairSettings settings = requested;
+  settings.rounding = resolve_rounding(requested.rounding, {&source, 1});
   ContourFairing out;
   out.contour = source;
   const ContourPlan plan = plan_contour(source, settings.corner_angle_deg);

@@ -27,6 +27,8 @@ struct ContourFairing {
   FairedPieces pieces;     ///< the faired curve before the writeback (empty when kept)
 };
 
+/// `settings.rounding` as_source resolved on this contour alone (fair_glyph resolves it on
+/// the whole glyph first, so that its contours agree).
 ContourFairing fair_contour(const Contour& source, const FairSettings& settings);
 
 /// Two-sided Hausdorff distance between two contours, from dense samples of both.

@@ -1,12 +1,14 @@
 #include "fair/fair_options.hpp"
 
+#include <algorithm>
+
 namespace gf {
 
 FairSettings resolve_settings(const FairOptions& options, double units_per_em) {
   FairSettings s;
   s.profile = options.profile;
   s.continuity = options.continuity;
-  s.round_to_integers = options.round_to_integers;
+  s.rounding = options.rounding;
   const bool hand = options.profile == FairProfile::handwriting;
   s.tolerance_units = options.tolerance_units.value_or((hand ? 0.01 : 0.001) * units_per_em);
   s.corner_angle_deg = options.corner_angle_deg.value_or(hand ? 30.0 : 3.0);
@@ -14,6 +16,12 @@ FairSettings resolve_settings(const FairOptions& options, double units_per_em) {
   s.chain_share = hand ? 0.7 : 0.4;
   s.feature_window_units = hand ? 0.03 * units_per_em : 0.004 * units_per_em;
   return s;
+}
+
+Rounding resolve_rounding(Rounding rounding, std::span<const Contour> contours) {
+  if (rounding != Rounding::as_source) return rounding;
+  const bool whole = std::all_of(contours.begin(), contours.end(), on_integer_grid);
+  return whole ? Rounding::integers : Rounding::none;
 }
 
 std::optional<FairProfile> parse_fair_profile(const std::string& name) {

@@ -2,20 +2,27 @@
 #pragma once
 
 #include <optional>
+#include <span>
 #include <string>
+
+#include "geom/contour.hpp"
 
 namespace gf {
 
 enum class FairProfile { text, handwriting };
 /// g3: after the G2 solve, dκ/ds continuous too (fair/g3_run.hpp).
 enum class Continuity { g1, g2, g3 };
+/// How the written coordinates are rounded. as_source: a glyph whose source points are all
+/// whole units goes to the integer grid; one drawn off it (a CFF font in fixed point, as
+/// Inconsolata's 1/1024 units) keeps fractions, which the grid would coarsen.
+enum class Rounding { as_source, integers, none };
 
 struct FairOptions {
   FairProfile profile = FairProfile::text;
   Continuity continuity = Continuity::g2;
   std::optional<double> tolerance_units;   ///< two-sided Hausdorff bound, font units
   std::optional<double> corner_angle_deg;  ///< joins turning more than this stay corners
-  bool round_to_integers = true;
+  Rounding rounding = Rounding::as_source;
 };
 
 /// The options with every default filled in for a font of `units_per_em`.
@@ -35,7 +42,7 @@ struct FairSettings {
   /// Length over which the source's tangent is averaged to find inflections and curvature
   /// extrema: wobbles shorter than this are not features.
   double feature_window_units = 5.0;
-  bool round_to_integers = true;
+  Rounding rounding = Rounding::as_source;
   /// |κ| (1/unit) of half a unit per em: flatter curves are compared by the difference of
   /// their curvatures, not the ratio (the check's g2-jump rule).
   double flat_curvature = 5e-4;
@@ -49,6 +56,9 @@ struct FairSettings {
 };
 
 FairSettings resolve_settings(const FairOptions& options, double units_per_em);
+
+/// `rounding` for the outline made of `contours`: as_source resolved to integers or none.
+Rounding resolve_rounding(Rounding rounding, std::span<const Contour> contours);
 
 std::optional<FairProfile> parse_fair_profile(const std::string& name);
 std::optional<Continuity> parse_continuity(const std::string& name);

@@ -4,7 +4,9 @@
 
 namespace gf {
 
-GlyphFairing fair_glyph(const Glyph& source, const FairSettings& settings) {
+GlyphFairing fair_glyph(const Glyph& source, const FairSettings& requested) {
+  FairSettings settings = requested;
+  settings.rounding = resolve_rounding(requested.rounding, source.outline.contours);
   GlyphFairing out;
   out.glyph = source;
   out.glyph.outline.contours.clear();

@@ -24,6 +24,8 @@ struct GlyphFairing {
   std::vector<FairedPieces> pieces;        ///< per contour, the faired curve before the writeback
 };
 
+/// `settings.rounding` as_source resolved on the whole glyph: rounded to integers only when
+/// every point of every contour is a whole unit.
 GlyphFairing fair_glyph(const Glyph& source, const FairSettings& settings);
 
 }  // namespace gf

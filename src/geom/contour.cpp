@@ -1,5 +1,6 @@
 #include "geom/contour.hpp"
 
+#include <cmath>
 
 namespace gf {
 
@@ -21,6 +22,23 @@ double signed_area(const Contour& c) {
   double area = 0.0;
   for (const Segment& s : c.segments) area += area_contribution(s);
   return area;
+}
+
+bool on_integer_grid(const Contour& c) {
+  const auto whole = [](Vec2 p) { return p.x == std::round(p.x) && p.y == std::round(p.y); };
+  for (std::size_t i = 0; i < c.segments.size(); ++i) {
+    const int last = degree_of(c.segments[i]);
+    int k = 0;
+    bool ok = true;
+    for_each_point(c.segments[i], [&](Vec2 p) {
+      // A segment's end is the next one's start, looked at there (an open end below).
+      const bool stored = k < last && (k > 0 || !c.nodes[i].implied);
+      ok = ok && (!stored || whole(p));
+      ++k;
+    });
+    if (!ok) return false;
+  }
+  return c.closed || c.segments.empty() || c.nodes.back().implied || whole(end_point(c.segments.back()));
 }
 
 Contour with_cubics(const Contour& c) {

@@ -39,6 +39,10 @@ double signed_area(const Contour& c);
 /// curve is unchanged, its new control points are the thirds); implied nodes become explicit.
 Contour with_cubics(const Contour& c);
 
+/// Every point the source stores on a whole unit (a TrueType on-curve point implied halfway
+/// between two off-curve points is not stored, and may fall on a half).
+bool on_integer_grid(const Contour& c);
+
 struct Outline {
   std::vector<Contour> contours;
 };

@@ -34,6 +34,28 @@ TEST(ContourPlan, ALineJoinBeyondTheKinkLimitIsACornerUnlessMadeSmooth) {
   EXPECT_EQ(joined.end.kind, RunEndKind::corner);
 }
 
+TEST(ContourPlan, AStubHandleBesideALineIsACornerTowardsTheNextControlPoint) {
+  // Inconsolata's q: the bowl leaves the stem along it with a 0.4-unit handle (0.26 % of its
+  // chord), then turns up and left at once; drawn, that is a corner of about 158°.
+  Contour c;
+  const Vec2 a{373.7, 456.5}, b{373.7, 390.1}, next{341.9, 468.7}, d{240.5, 468.7};
+  c.segments = {Line{a, b}, Cubic{b, b + Vec2{0, -0.4}, next, d}, Line{d, a}};
+  c.nodes.resize(3);
+  const ContourPlan plan = plan_contour(c, 3.0);
+  ASSERT_EQ(plan.pieces.size(), 3u);
+  const SmoothRun& run = std::get<SmoothRun>(plan.pieces[1]);
+  EXPECT_EQ(run.start.kind, RunEndKind::corner);
+  const Vec2 towards = (next - b) / norm(next - b);
+  EXPECT_NEAR(run.start.tangent.x, towards.x, 1e-12);
+  EXPECT_NEAR(run.start.tangent.y, towards.y, 1e-12);
+  EXPECT_EQ(run.cubics.front().p[1], b);  // the stub retracted onto its node
+
+  // A handle of 2 % of the chord is the designer's tangent: a line join, as drawn.
+  std::get<Cubic>(c.segments[1]).p[1] = b + Vec2{0, -0.02 * norm(d - b)};
+  const SmoothRun& kept = std::get<SmoothRun>(plan_contour(c, 3.0).pieces[1]);
+  EXPECT_EQ(kept.start.kind, RunEndKind::line);
+}
+
 TEST(ContourPlan, TwoLinesMadeSmoothAreOneLine) {
   // A quadrilateral whose bottom edge bends by 1° at (100, 0.87).
   Contour c;

@@ -23,7 +23,7 @@ GlyphFairing fair_g3(const std::string& glyph, FairSettings& settings) {
   const GlyphSource source = GlyphSource::open(test::dejavu, options);
   FairOptions fo;
   fo.continuity = Continuity::g3;
-  fo.round_to_integers = false;
+  fo.rounding = Rounding::none;
   settings = resolve_settings(fo, source.font().units_per_em);
   return fair_glyph(*source.load(0), settings);
 }

@@ -29,5 +29,25 @@ TEST(Contour, SignedAreaIsExactForCurves) {
   EXPECT_NEAR(signed_area(cubic), 4.0 / 3.0, 1e-15);
 }
 
+TEST(Contour, OnIntegerGridLooksAtStoredPointsOnly) {
+  // A TrueType circle-ish contour: the on-curve point implied between two off-curve points
+  // falls on a half and is not stored.
+  Contour c;
+  c.segments = {Quad{{{0, 0}, {1, 0}, {1.5, 0.5}}}, Quad{{{1.5, 0.5}, {2, 1}, {0, 0}}}};
+  c.nodes = {NodeFlags{}, NodeFlags{true, std::nullopt}};
+  EXPECT_TRUE(on_integer_grid(c));
+  c.nodes[1].implied = false;
+  EXPECT_FALSE(on_integer_grid(c));
+  Contour open;
+  open.closed = false;
+  open.segments = {Cubic{{{0, 0}, {1, 2}, {3, 2}, {4, 0.25}}}};
+  open.nodes.assign(2, NodeFlags{});
+  EXPECT_FALSE(on_integer_grid(open));
+  std::get<Cubic>(open.segments[0]).p[3].y = 0.0;
+  EXPECT_TRUE(on_integer_grid(open));
+  std::get<Cubic>(open.segments[0]).p[1].x = 58.68;
+  EXPECT_FALSE(on_integer_grid(open));
+}
+
 }  // namespace
 }  // namespace gf

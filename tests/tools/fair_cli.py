@@ -153,6 +153,22 @@ def main():
     if "." not in coords:
         failures.append("--no-round wrote no fractional coordinate at all")
 
+    # A font drawn off the integer grid (Inconsolata: CFF in 1/1024 units) keeps fractions by
+    # default, and --round puts it on the grid.
+    inconsolata = os.path.join(fonts, "Inconsolata/Inconsolata-subset.otf")
+    for flags, fractions in (((), True), (("--round",), False)):
+        out = os.path.join(work, f"inconsolata{''.join(flags)}.ufo")
+        r = run(glyphfair, inconsolata, "--glyphs", "S", *flags, "-o", out)
+        if r.returncode != 0:
+            failures.append(f"Inconsolata S {' '.join(flags)}: exit {r.returncode}: {r.stderr.strip()}")
+            continue
+        fractional, _ = grid_problems(os.path.join(out, "glyphs", "S_.glif"), set())
+        if (fractional > 0) != fractions:
+            failures.append(f"Inconsolata S {' '.join(flags) or '(default)'}: fractions {'lost' if fractions else 'left'}")
+    r = run(glyphfair, inconsolata, "--glyphs", "S", "--round", "--no-round", "-o", os.path.join(work, "both.ufo"))
+    if r.returncode == 0:
+        failures.append("--round with --no-round was accepted")
+
     # G3 with the faired segments exported: every smooth join between pieces has κ′ matched to
     # 1e-6 but the line joins the summary reports as G2 only, and every spiral rebuilt here from
     # its own data reaches the end it reports (fairing_bars.segment_bars).
