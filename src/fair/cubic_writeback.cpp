@@ -125,9 +125,12 @@ class ChainPath {
     i = i == 0 ? 0 : i - 1;
     const PathPiece& piece = pieces_[i];
     const double local = sigma - starts_[i];
-    if (local <= 0.0) return with_mean_curvature(piece.at(0.0), i == 0 ? (closed_ ? n_ - 1 : n_) : i - 1, false);
-    if (local >= piece.length)
+    // Within rounding of a piece's end is its end: σ sums the lengths before it, and near an
+    // inflection end κ falls to 0 so steeply that 1e-13 short of it left κ·UPM at 0.19
+    // (Cantarell's U, where its bowl meets the stem).
+    if (local >= piece.length * (1.0 - 1e-12))
       return with_mean_curvature(piece.at(piece.length), i + 1 < n_ ? i + 1 : (closed_ ? 0 : n_), true);
+    if (local <= 0.0) return with_mean_curvature(piece.at(0.0), i == 0 ? (closed_ ? n_ - 1 : n_) : i - 1, false);
     return piece.at(local);
   }
 

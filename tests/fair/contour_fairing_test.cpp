@@ -204,6 +204,36 @@ TEST(ContourFairing, HandwritingGlyphsAreG2BeforeRounding) {
   }
 }
 
+// A curve meets a line it leaves tangentially with κ = 0 (the inflection-end segment), and the
+// unrounded cubic there has it to rounding: the writeback once took the chain's end κ a
+// rounding short of its end, where κ falls steeply (Inter's a had 7.8 per em there).
+TEST(ContourFairing, CurvesMeetTheirLinesWithZeroCurvatureBeforeRounding) {
+  const std::pair<const std::string*, const char*> glyphs[] = {
+      {&test::inter_variable, "uni0061"}, {&test::inter_variable, "uni0067"}, {&test::dejavu, "S"}, {&test::dejavu, "y"}};
+  for (const auto& [font, name] : glyphs) {
+    SourceOptions options;
+    options.selection.names.push_back(name);
+    const GlyphSource source = GlyphSource::open(*font, options);
+    const double upm = source.font().units_per_em;
+    FairOptions fo;
+    fo.rounding = Rounding::none;
+    const GlyphFairing r = fair_glyph(*source.load(0), resolve_settings(fo, upm));
+    ASSERT_TRUE(r.kept.empty()) << name << ": " << r.kept.front();
+    int line_joins = 0;
+    for (const Contour& c : r.glyph.outline.contours)
+      for (const Join& j : joins_of(c)) {
+        const std::size_t n = c.segments.size();
+        const Segment& in = c.segments[(j.node + n - 1) % n];
+        const Segment& out = c.segments[j.node];
+        if (j.kind != JoinKind::smooth || is_line(in) == is_line(out)) continue;
+        ++line_joins;
+        const double kappa = is_line(in) ? *j.curvature_out : *j.curvature_in;
+        EXPECT_LT(std::abs(kappa) * upm, 1e-6) << name << " node " << j.node;
+      }
+    EXPECT_GT(line_joins, 0) << name;
+  }
+}
+
 // Inconsolata is drawn in fixed point (1/1024 unit): by default its glyphs keep fractions,
 // and the small terminals the integer grid cannot make G2 (3- to 8-unit cubics on a 1,000-unit
 // em) stay G2. DejaVu Sans, drawn on whole units, is still rounded.
