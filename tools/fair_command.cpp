@@ -63,15 +63,11 @@ int FairCommand::run() const {
   options.continuity = *parse_continuity(continuity_);
   options.tolerance_units = tolerance_;
   options.corner_angle_deg = corner_angle_;
+  const GlyphSource source = GlyphSource::open(source_, selection_.parse());
   // A font or UFO glyph drawn off the integer grid keeps its fractions; SVG paths and fitted
   // point sequences have no grid of their own, and a font made from them wants integers.
-  const std::string in_ext = lower_extension(source_);
-  const bool designed_grid = in_ext != ".svg" && in_ext != ".json";
-  options.rounding = no_round_ ? Rounding::none
-                     : round_ || !designed_grid ? Rounding::integers
-                                                : Rounding::as_source;
-
-  const GlyphSource source = GlyphSource::open(source_, selection_.parse());
+  const bool own_grid = source.kind() == SourceKind::font || source.kind() == SourceKind::ufo;
+  options.rounding = no_round_ ? Rounding::none : round_ || !own_grid ? Rounding::integers : Rounding::as_source;
   const FontInfo& font = source.font();
   const FairSettings settings = resolve_settings(options, font.units_per_em);
   const fs::path inputs[] = {source_};

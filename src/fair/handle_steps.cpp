@@ -280,6 +280,15 @@ class NodeChange {
   double bend_cost() const { return wrong_way * inflections_added(); }
   /// Both.
   double cost() const { return jump_costs() + bend_cost(); }
+  /// cost() where it is under `best` and the outline as it stands is an allowed change: the
+  /// jumps first, the cubics' shapes only where the jumps leave room.
+  std::optional<double> cost_under(double best) const {
+    const double jumps = jump_costs();
+    if (jumps >= best) return std::nullopt;
+    const double c = jumps + bend_cost();
+    if (c >= best || !allowed()) return std::nullopt;
+    return c;
+  }
   /// Whether either cubic bends the wrong way, or any of those jumps is over the target.
   bool needs_change() const {
     const std::array<double, 3> j = jumps_now();
@@ -380,10 +389,7 @@ std::vector<std::size_t> nudge_jumping_nodes(std::vector<OutlineNode>& nodes, co
             nodes[i].point = p;
             nodes[i].in_handle = p - d * (m_in + a);
             nodes[i].out_handle = p + d * (m_out + b);
-            const double jumps = change.jump_costs();  // the cheap test first
-            if (jumps >= best_cost) continue;
-            const double c = jumps + change.bend_cost();
-            if (c < best_cost && change.allowed()) best_cost = c, best = nodes[i], best_step = d;
+            if (const std::optional<double> c = change.cost_under(best_cost)) best_cost = *c, best = nodes[i], best_step = d;
           }
     }
     nodes[i] = best;
@@ -446,10 +452,8 @@ std::vector<std::size_t> seat_inflections(std::vector<OutlineNode>& nodes, const
             if (m_in + a < 1.0 || m_out + b < 1.0) continue;
             nodes[i].in_handle = p - d * (m_in + a);
             nodes[i].out_handle = p + d * (m_out + b);
-            const double jumps = change.jump_costs();
-            if (jumps >= best_cost) continue;
-            const double c = jumps + change.bend_cost();
-            if (c < best_cost && change.allowed()) best_cost = c, best = {nodes[h], nodes[i], nodes[j]}, best_step = d;
+            if (const std::optional<double> c = change.cost_under(best_cost))
+              best_cost = *c, best = {nodes[h], nodes[i], nodes[j]}, best_step = d;
           }
       }
     nodes[h] = kept_h, nodes[i] = kept, nodes[j] = kept_j;

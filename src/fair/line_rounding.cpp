@@ -5,7 +5,6 @@
 #include <limits>
 #include <numeric>
 
-#include "fair/handle_steps.hpp"
 #include "geom/polyline_distance.hpp"
 
 namespace gf {

@@ -1,6 +1,7 @@
 #include "geom/contour.hpp"
 
 #include <cmath>
+#include <variant>
 
 namespace gf {
 
@@ -26,19 +27,15 @@ double signed_area(const Contour& c) {
 
 bool on_integer_grid(const Contour& c) {
   const auto whole = [](Vec2 p) { return p.x == std::round(p.x) && p.y == std::round(p.y); };
-  for (std::size_t i = 0; i < c.segments.size(); ++i) {
-    const int last = degree_of(c.segments[i]);
-    int k = 0;
-    bool ok = true;
-    for_each_point(c.segments[i], [&](Vec2 p) {
-      // A segment's end is the next one's start, looked at there (an open end below).
-      const bool stored = k < last && (k > 0 || !c.nodes[i].implied);
-      ok = ok && (!stored || whole(p));
-      ++k;
-    });
-    if (!ok) return false;
-  }
-  return c.closed || c.segments.empty() || c.nodes.back().implied || whole(end_point(c.segments.back()));
+  bool all = true;
+  // Each segment's points but its end, which is the next one's start (an open end below).
+  for (std::size_t i = 0; i < c.segments.size() && all; ++i)
+    std::visit(
+        [&](const auto& b) {
+          for (std::size_t k = c.nodes[i].implied ? 1 : 0; k + 1 < b.p.size(); ++k) all = all && whole(b.p[k]);
+        },
+        c.segments[i]);
+  return all && (c.closed || c.segments.empty() || c.nodes.back().implied || whole(end_point(c.segments.back())));
 }
 
 Contour with_cubics(const Contour& c) {

@@ -37,6 +37,7 @@ struct LoadedCatalog {
 
 struct GlyphSource::Impl {
   fs::path path;
+  SourceKind kind;
   std::variant<FreetypeFont, GlyphSet> data;
   std::vector<std::uint32_t> selected;
   bool whole = true;
@@ -59,10 +60,11 @@ GlyphSource GlyphSource::open(const fs::path& path, const SourceOptions& options
   const bool is_ufo = ext == ".ufo" || fs::is_directory(path, ec);
   const bool is_svg = ext == ".svg";
   const bool is_points = ext == ".json";
+  const SourceKind kind = is_ufo ? SourceKind::ufo : is_svg ? SourceKind::svg : is_points ? SourceKind::points : SourceKind::font;
   if ((is_ufo || is_svg || is_points) && (!options.font.location.empty() || options.font.named_instance))
     throw InputError(file + ": --location and --instance apply to variable font files only");
 
-  auto impl = std::make_unique<Impl>(Impl{path, GlyphSet{}, {}, options.selection.empty()});
+  auto impl = std::make_unique<Impl>(Impl{path, kind, GlyphSet{}, {}, options.selection.empty()});
   GlyphCatalog catalog;
   std::optional<LoadedCatalog> loaded;
   if (is_ufo || is_svg || is_points) {
@@ -105,6 +107,7 @@ GlyphSource GlyphSource::open(const fs::path& path, const SourceOptions& options
 
 const FontInfo& GlyphSource::font() const { return impl_->font(); }
 const fs::path& GlyphSource::path() const { return impl_->path; }
+SourceKind GlyphSource::kind() const { return impl_->kind; }
 std::size_t GlyphSource::size() const { return impl_->selected.size(); }
 
 std::optional<Glyph> GlyphSource::load(std::size_t i) const {

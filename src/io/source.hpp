@@ -17,6 +17,10 @@ struct SourceOptions {
   GlyphSelection selection;
 };
 
+/// What kind of file a source is: its outlines are a designer's own (font, UFO), traced paths
+/// (SVG) or fitted to handwritten points (JSON).
+enum class SourceKind { font, ufo, svg, points };
+
 class GlyphSource {
  public:
   /// Throws InputError (one line naming the file and problem).
@@ -27,6 +31,7 @@ class GlyphSource {
 
   const FontInfo& font() const;
   const std::filesystem::path& path() const;
+  SourceKind kind() const;
   /// Number of selected glyphs.
   std::size_t size() const;
   /// The i-th selected glyph. With no selection (the whole source), glyphs without an outline

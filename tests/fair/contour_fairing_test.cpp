@@ -42,16 +42,32 @@ double absolute_turning(const Segment& s) {
 
 double brute_force_hausdorff(const Contour& a, const Contour& b) { return test::point_set_hausdorff(dense(a), dense(b)); }
 
+// A glyph of a bundled font by name, faired with `options`.
+struct FairedGlyph {
+  Glyph source;
+  double upm;
+  FairSettings settings;
+  GlyphFairing result;
+};
+
+FairedGlyph fair_named(const std::string& font, const std::string& glyph, const FairOptions& options) {
+  SourceOptions selection;
+  selection.selection.names.push_back(glyph);
+  const GlyphSource source = GlyphSource::open(font, selection);
+  FairedGlyph out{*source.load(0), source.font().units_per_em, {}, {}};
+  out.settings = resolve_settings(options, out.upm);
+  out.result = fair_glyph(out.source, out.settings);
+  return out;
+}
+
 void expect_faired(const std::string& font, const std::string& glyph, FairProfile profile) {
-  SourceOptions options;
-  options.selection.names.push_back(glyph);
-  const GlyphSource source = GlyphSource::open(font, options);
-  const Glyph g = *source.load(0);
   FairOptions fo;
   fo.profile = profile;
   fo.rounding = Rounding::integers;
-  const FairSettings settings = resolve_settings(fo, source.font().units_per_em);
-  const GlyphFairing r = fair_glyph(g, settings);
+  const FairedGlyph f = fair_named(font, glyph, fo);
+  const Glyph& g = f.source;
+  const FairSettings& settings = f.settings;
+  const GlyphFairing& r = f.result;
   ASSERT_TRUE(r.kept.empty()) << glyph << ": " << r.kept.front();
   ASSERT_EQ(r.glyph.outline.contours.size(), g.outline.contours.size());
   EXPECT_EQ(r.glyph.name, g.name);
@@ -124,18 +140,11 @@ TEST(ContourFairing, RoundingAddsNoInflection) {
   // Inter's a: rounding turned nearly straight cubics of its bowl into S curves (4 inflections
   // against the source's 2). A node is nudged while either of its cubics bends more ways than
   // before rounding, not only while its curvature jumps.
-  SourceOptions options;
-  options.selection.names.push_back("uni0061");
-  const GlyphSource source = GlyphSource::open(test::inter_variable, options);
-  const Glyph g = *source.load(0);
-  const double upm = source.font().units_per_em;
-  FairOptions fo;
-  fo.profile = FairProfile::text;
-  const GlyphFairing r = fair_glyph(g, resolve_settings(fo, upm));
-  ASSERT_TRUE(r.kept.empty()) << r.kept.front();
+  const FairedGlyph f = fair_named(test::inter_variable, "uni0061", FairOptions{});
+  ASSERT_TRUE(f.result.kept.empty()) << f.result.kept.front();
   int before = 0, after = 0;
-  for (const Contour& c : g.outline.contours) before += inflections(c, upm);
-  for (const Contour& c : r.glyph.outline.contours) after += inflections(c, upm);
+  for (const Contour& c : f.source.outline.contours) before += inflections(c, f.upm);
+  for (const Contour& c : f.result.glyph.outline.contours) after += inflections(c, f.upm);
   EXPECT_GT(before, 0);
   EXPECT_LE(after, before);
 }
@@ -176,31 +185,17 @@ bool has_fraction(const Outline& o) {
   return any;
 }
 
-GlyphFairing fair_by_default(const std::string& font, const std::string& glyph, FairProfile profile, double& upm) {
-  SourceOptions options;
-  options.selection.names.push_back(glyph);
-  const GlyphSource source = GlyphSource::open(font, options);
-  upm = source.font().units_per_em;
-  FairOptions fo;
-  fo.profile = profile;
-  return fair_glyph(*source.load(0), resolve_settings(fo, upm));
-}
-
 // Unrounded, every smooth node of a faired handwriting glyph is G2, the guide's stretches and
 // their joins to the chains included; only the nodes the fairing reports as G1 may miss.
 TEST(ContourFairing, HandwritingGlyphsAreG2BeforeRounding) {
+  FairOptions fo;
+  fo.profile = FairProfile::handwriting;
+  fo.rounding = Rounding::none;
   for (const char* name : {"a", "e", "s", "B", "G", "R"}) {
-    SourceOptions options;
-    options.selection.names.push_back(name);
-    const GlyphSource source = GlyphSource::open(test::because_we_learn, options);
-    const Glyph g = *source.load(0);
-    const double upm = source.font().units_per_em;
-    FairOptions fo;
-    fo.profile = FairProfile::handwriting;
-    fo.rounding = Rounding::none;
-    const GlyphFairing r = fair_glyph(g, resolve_settings(fo, upm));
+    const FairedGlyph f = fair_named(test::because_we_learn, name, fo);
+    const GlyphFairing& r = f.result;
     ASSERT_TRUE(r.kept.empty()) << name << ": " << r.kept.front();
-    EXPECT_LE(g2_jumps(r.glyph.outline, upm), r.g1_nodes) << name;
+    EXPECT_LE(g2_jumps(r.glyph.outline, f.upm), r.g1_nodes) << name;
   }
 }
 
@@ -210,14 +205,12 @@ TEST(ContourFairing, HandwritingGlyphsAreG2BeforeRounding) {
 TEST(ContourFairing, CurvesMeetTheirLinesWithZeroCurvatureBeforeRounding) {
   const std::pair<const std::string*, const char*> glyphs[] = {
       {&test::inter_variable, "uni0061"}, {&test::inter_variable, "uni0067"}, {&test::dejavu, "S"}, {&test::dejavu, "y"}};
+  FairOptions fo;
+  fo.rounding = Rounding::none;
   for (const auto& [font, name] : glyphs) {
-    SourceOptions options;
-    options.selection.names.push_back(name);
-    const GlyphSource source = GlyphSource::open(*font, options);
-    const double upm = source.font().units_per_em;
-    FairOptions fo;
-    fo.rounding = Rounding::none;
-    const GlyphFairing r = fair_glyph(*source.load(0), resolve_settings(fo, upm));
+    const FairedGlyph f = fair_named(*font, name, fo);
+    const GlyphFairing& r = f.result;
+    const double upm = f.upm;
     ASSERT_TRUE(r.kept.empty()) << name << ": " << r.kept.front();
     int line_joins = 0;
     for (const Contour& c : r.glyph.outline.contours)
@@ -238,19 +231,19 @@ TEST(ContourFairing, CurvesMeetTheirLinesWithZeroCurvatureBeforeRounding) {
 // and the small terminals the integer grid cannot make G2 (3- to 8-unit cubics on a 1,000-unit
 // em) stay G2. DejaVu Sans, drawn on whole units, is still rounded.
 TEST(ContourFairing, GlyphsDrawnOffTheGridKeepTheirFractions) {
-  double upm = 0.0;
   for (const char* name : {"S", "s", "v"}) {
-    const GlyphFairing r = fair_by_default(test::inconsolata, name, FairProfile::text, upm);
+    const FairedGlyph f = fair_named(test::inconsolata, name, FairOptions{});
+    const GlyphFairing& r = f.result;
     ASSERT_TRUE(r.kept.empty()) << name << ": " << r.kept.front();
     EXPECT_TRUE(has_fraction(r.glyph.outline)) << name;
-    EXPECT_LE(g2_jumps(r.glyph.outline, upm), r.g1_nodes) << name;
+    EXPECT_LE(g2_jumps(r.glyph.outline, f.upm), r.g1_nodes) << name;
   }
   // q: a 0.4-unit handle where its bowl leaves the stem reads as a corner (fair/contour_plan).
-  const GlyphFairing q = fair_by_default(test::inconsolata, "q", FairProfile::text, upm);
-  ASSERT_TRUE(q.kept.empty()) << q.kept.front();
-  EXPECT_EQ(g2_jumps(q.glyph.outline, upm), 0);
+  const FairedGlyph q = fair_named(test::inconsolata, "q", FairOptions{});
+  ASSERT_TRUE(q.result.kept.empty()) << q.result.kept.front();
+  EXPECT_EQ(g2_jumps(q.result.glyph.outline, q.upm), 0);
   for (const char* name : {"o", "S"}) {
-    const GlyphFairing r = fair_by_default(test::dejavu, name, FairProfile::text, upm);
+    const GlyphFairing r = fair_named(test::dejavu, name, FairOptions{}).result;
     ASSERT_TRUE(r.kept.empty()) << name << ": " << r.kept.front();
     EXPECT_FALSE(has_fraction(r.glyph.outline)) << name;
   }
