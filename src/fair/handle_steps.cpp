@@ -15,7 +15,8 @@ namespace gf {
 namespace {
 
 constexpr int reach = 3;              // whole steps either way from the rounded length
-constexpr int max_passes = 8;         // of choosing steps and nudging nodes in turn
+constexpr int max_passes = 16;        // of choosing steps and nudging nodes in turn (a corner's
+                                      // handle moves a unit a pass: DejaVu's Q tail took 9)
 constexpr double turn = 0.1;          // radians a node may turn on the grid (the allowance bounds what that moves)
 constexpr double target_jump = 0.03;  // below the check's 5 %, with room for its sampling
 constexpr double wrong_way = 1e4;     // an inflection or extremum the unrounded cubic lacks

@@ -44,7 +44,7 @@ std::vector<Vec2> handles_near_line(Vec2 node, Vec2 step, double sign, Vec2 line
 /// more ways than before rounding (an S no choice of whole steps undoes), by a unit with its
 /// handles, or turns it to a nearby primitive direction, where that helps; seats an inflection
 /// node still jumping where κ = 0 holds exactly on both sides; and chooses the steps again around
-/// what moved, at most eight passes. `ideal` is the outline before rounding; no cubic moves
+/// what moved, at most sixteen passes. `ideal` is the outline before rounding; no cubic moves
 /// farther from it than the limits allow (as a curve: a handle slid along its tangent moves
 /// the curve little), none gains an inflection or an H/V extremum, and curvature variation
 /// inside a cubic beyond its unrounded self's costs (a third of the weight of a matching jump

@@ -185,6 +185,16 @@ bool has_fraction(const Outline& o) {
   return any;
 }
 
+// DejaVu's Q: the tail's cubic leaves a corner and reaches the bowl's bottom with a 23-unit
+// handle, where a unit of its corner's handle decides the curvature. That handle moves a
+// unit per pass of the whole-step choice; G2 there took nine passes.
+TEST(ContourFairing, RoundedSmoothNodesStayG2WhereCornerHandlesMustMoveFar) {
+  const FairedGlyph f = fair_named(test::dejavu, "Q", FairOptions{});
+  ASSERT_TRUE(f.result.kept.empty()) << f.result.kept.front();
+  EXPECT_FALSE(has_fraction(f.result.glyph.outline));
+  EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm), 0);
+}
+
 // Unrounded, every smooth node of a faired handwriting glyph is G2, the guide's stretches and
 // their joins to the chains included; only the nodes the fairing reports as G1 may miss.
 TEST(ContourFairing, HandwritingGlyphsAreG2BeforeRounding) {
