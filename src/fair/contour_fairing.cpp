@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <limits>
 #include <numbers>
 #include <span>
 
@@ -241,8 +242,10 @@ struct SampledContour {
   const std::vector<Vec2>& points() const { return samples.points; }
 };
 
+// Infinite where one of them has no points and the other has (a contour faired to nothing).
 double distance_between(const SampledContour& a, const SampledContour& b) {
-  if (a.points().empty() || b.points().empty()) return a.points().size() == b.points().size() ? 0.0 : 1e300;
+  if (a.points().empty() || b.points().empty())
+    return a.points().size() == b.points().size() ? 0.0 : std::numeric_limits<double>::infinity();
   return std::max(directed_hausdorff(a.points(), b.grid), directed_hausdorff(b.points(), a.grid));
 }
 
@@ -319,7 +322,8 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
       kinked = kinked_corners(out.contour, a.corners);
       return out;
     }
-    out.reason = "the faired contour came out " + std::to_string(d) + " units from the source";
+    out.reason = std::isfinite(d) ? "the faired contour came out " + std::to_string(d) + " units from the source"
+                                  : std::string("the faired contour collapsed to nothing");
   }
   return out;
 }
@@ -347,6 +351,10 @@ double contour_distance(const Contour& a, const Contour& b) {
 ContourFairing fair_contour(const Contour& source, const FairSettings& requested) {
   FairSettings settings = requested;
   settings.rounding = resolve_rounding(requested.rounding, {&source, 1});
+  // Each side of a contour may move by the tolerance; past half its thickness the two sides
+  // could cross and turn it inside out (a brush font's 5-unit speck, faired at 10, came out
+  // reversed). So a thin contour is faired to half its thickness.
+  if (source.closed) settings.tolerance_units = std::min(settings.tolerance_units, 0.5 * thickness(source));
   ContourFairing out;
   out.contour = source;
   const ContourPlan plan = plan_contour(source, settings.corner_angle_deg);
@@ -377,6 +385,13 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& requested
     if (!again.faired) break;
     out = std::move(again);
     kinked = std::move(still);
+  }
+  // The last word on direction: a faired contour that winds the other way would fill (or
+  // cut) the opposite of what the source does.
+  if (out.faired && source.closed && (signed_area(out.contour) > 0.0) != (signed_area(source) > 0.0)) {
+    out = ContourFairing{};
+    out.contour = source;
+    out.reason = "the faired contour would wind the other way";
   }
   return out;
 }

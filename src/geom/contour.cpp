@@ -3,6 +3,8 @@
 #include <cmath>
 #include <variant>
 
+#include "geom/arc_length.hpp"
+
 namespace gf {
 
 namespace {
@@ -23,6 +25,12 @@ double signed_area(const Contour& c) {
   double area = 0.0;
   for (const Segment& s : c.segments) area += area_contribution(s);
   return area;
+}
+
+double thickness(const Contour& c) {
+  double perimeter = 0.0;
+  for (const Segment& s : c.segments) perimeter += arc_length_estimate(s);
+  return perimeter > 0.0 ? 2.0 * std::abs(signed_area(c)) / perimeter : 0.0;
 }
 
 bool on_integer_grid(const Contour& c) {

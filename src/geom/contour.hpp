@@ -35,6 +35,10 @@ struct Contour {
 /// positive for counter-clockwise contours.
 double signed_area(const Contour& c);
 
+/// How thick a closed contour is: 2·|area| / perimeter, a stroke's width for a long thin one,
+/// the radius of a round one; 0 for a contour with no length.
+double thickness(const Contour& c);
+
 /// The same contour with every quadratic written as its exact cubic (degree elevation: the
 /// curve is unchanged, its new control points are the thirds); implied nodes become explicit.
 Contour with_cubics(const Contour& c);

@@ -117,6 +117,23 @@ TEST(ContourFairing, DiagonalStrokesEndingInCurvesAreFairedOnTheGrid) {
   expect_faired(test::inconsolata, "y", FairProfile::text);
 }
 
+// A 5-unit speck of a brush font (Because We Create's c), faired at the handwriting tolerance
+// of 10 units: its sides could cross, and it came out winding the other way (a hole where the
+// source fills). A contour is faired to half its thickness and never reversed.
+TEST(ContourFairing, AContourThinnerThanTheToleranceKeepsItsDirection) {
+  Contour speck;
+  speck.segments = {Cubic{{{188, 578}, {188, 576}, {187, 575}, {185, 575}}}, Cubic{{{185, 575}, {184, 575}, {183, 576}, {183, 577}}},
+                    Cubic{{{183, 577}, {183, 578}, {184, 579}, {184, 580}}}, Cubic{{{184, 580}, {187, 580}, {188, 579}, {188, 578}}}};
+  speck.nodes.assign(4, NodeFlags{});
+  FairOptions fo;
+  fo.profile = FairProfile::handwriting;
+  const FairSettings settings = resolve_settings(fo, 1000.0);
+  ASSERT_GT(settings.tolerance_units, 3.0 * thickness(speck));
+  const ContourFairing r = fair_contour(speck, settings);
+  EXPECT_EQ(signed_area(r.contour) > 0.0, signed_area(speck) > 0.0) << r.reason;
+  EXPECT_LE(brute_force_hausdorff(speck, r.contour), 1.01 * 0.5 * thickness(speck)) << r.reason;
+}
+
 // Sign changes of κ along the smooth stretches of a contour (joins within 3° continue a
 // stretch, as the fairing bars count them), from 64 steps per segment, |κ|·UPM under 1e-6 as 0.
 int inflections(const Contour& c, double upm) {

@@ -49,5 +49,33 @@ TEST(Contour, OnIntegerGridLooksAtStoredPointsOnly) {
   EXPECT_FALSE(on_integer_grid(open));
 }
 
+TEST(Contour, ThicknessIsAStrokesWidthAndACirclesRadius) {
+  // A 100 × 10 bar: 2·1000 / 220.
+  Contour bar;
+  bar.segments = {Line{{{0, 0}, {100, 0}}}, Line{{{100, 0}, {100, 10}}}, Line{{{100, 10}, {0, 10}}}, Line{{{0, 10}, {0, 0}}}};
+  bar.nodes.assign(4, NodeFlags{});
+  EXPECT_NEAR(thickness(bar), 2000.0 / 220.0, 1e-12);
+  // A circle of radius 50 in four cubics (handles 0.5523 r: area and length within 3e-4 of the
+  // circle's): 2·πr² / 2πr = r.
+  const double r = 50.0, h = 0.5523 * r;
+  Contour circle;
+  circle.segments = {Cubic{{{r, 0}, {r, h}, {h, r}, {0, r}}}, Cubic{{{0, r}, {-h, r}, {-r, h}, {-r, 0}}},
+                     Cubic{{{-r, 0}, {-r, -h}, {-h, -r}, {0, -r}}}, Cubic{{{0, -r}, {h, -r}, {r, -h}, {r, 0}}}};
+  circle.nodes.assign(4, NodeFlags{});
+  EXPECT_NEAR(thickness(circle), r, 3e-4 * r);
+  // Its reverse is as thick; a contour of no length has none.
+  Contour reversed;
+  for (auto it = circle.segments.rbegin(); it != circle.segments.rend(); ++it) {
+    const Cubic& c = std::get<Cubic>(*it);
+    reversed.segments.push_back(Cubic{{c.p[3], c.p[2], c.p[1], c.p[0]}});
+  }
+  reversed.nodes.assign(4, NodeFlags{});
+  EXPECT_NEAR(thickness(reversed), thickness(circle), 1e-9);
+  Contour point;
+  point.segments = {Line{{{5, 5}, {5, 5}}}};
+  point.nodes.assign(1, NodeFlags{});
+  EXPECT_EQ(thickness(point), 0.0);
+}
+
 }  // namespace
 }  // namespace gf
