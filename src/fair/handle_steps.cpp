@@ -297,7 +297,8 @@ class NodeChange {
            std::any_of(j.begin(), j.end(), [](double x) { return jump_cost(x) > target_jump * target_jump; });
   }
 
-  /// Whether the outline as it stands is an allowed change.
+ private:
+  // Whether the outline as it stands is an allowed change.
   bool allowed() const {
     for (std::size_t side = 0; side < 2; ++side) {
       const std::size_t k = side == 0 ? h_ : i_;
@@ -308,7 +309,6 @@ class NodeChange {
     return true;
   }
 
- private:
   int inflections_added() const {
     int added = 0;
     for (const std::size_t k : {h_, i_})

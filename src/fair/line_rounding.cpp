@@ -219,6 +219,82 @@ std::vector<std::size_t> cheapest_places(const std::vector<LineOnGrid>& run, con
   return chosen;
 }
 
+// One run of lines placed on the grid: first each end at its grid point or a neighbour; where
+// a curve's handle on the line then strays, with the curves' ends sliding along their lines.
+class RunPlacement {
+ public:
+  RunPlacement(const std::vector<OutlineNode>& exact, const std::vector<LineOnGrid>& run, const LinePlacer& placer,
+               const HandleStepLimits& limits)
+      : exact_(exact), run_(run), placer_(placer), limits_(limits) {}
+
+  /// The cheapest placement with ends sliding or not; false (the placement as it was) where
+  /// every choice is degenerate.
+  bool choose(bool slides) {
+    std::vector<std::vector<EndPlace>> places;
+    places.push_back(end_places(exact_[run_.front().i].point, slides ? slide(run_.front(), true) : std::nullopt));
+    for (const LineOnGrid& l : run_) places.push_back(end_places(exact_[l.j].point, slides ? slide(l, false) : std::nullopt));
+    std::vector<std::size_t> chosen = cheapest_places(run_, places, placer_);
+    if (chosen.empty()) return false;
+    places_ = std::move(places), chosen_ = std::move(chosen);
+    placed_.clear();
+    for (std::size_t t = 0; t < run_.size(); ++t) placed_.push_back(placer_.place(run_[t], place(t), place(t + 1)));
+    return true;
+  }
+
+  /// Whether a curve's handle on a line of long step grows or shrinks by more than a quarter
+  /// (and more than its curve's allowance): a handle slid along its own tangent moves the curve
+  /// little, and only a long step can be made shorter by sliding.
+  bool strays() const {
+    const std::size_t n = exact_.size();
+    const auto strays_at = [&](std::size_t node, bool in, double moved, std::size_t cubic) {
+      const Vec2 h = in ? *exact_[node].in_handle : *exact_[node].out_handle;
+      return moved > std::max(limits_.allowance_at(cubic), stray_share * distance(h, exact_[node].point));
+    };
+    for (std::size_t t = 0; t < run_.size(); ++t) {
+      const LineOnGrid& l = run_[t];
+      const LinePlacement& p = placed_[t];
+      if (norm(p.step) > short_step && ((p.in_handle && strays_at(l.i, true, p.in_moved, (l.i + n - 1) % n)) ||
+                                        (p.out_handle && strays_at(l.j, false, p.out_moved, l.j))))
+        return true;
+    }
+    return false;
+  }
+
+  /// The nodes as placed, and the lines' steps where a curve meets them.
+  void write(std::vector<OutlineNode>& rounded, std::vector<std::optional<Vec2>>& steps) const {
+    for (std::size_t t = 0; t < run_.size(); ++t) {
+      const LineOnGrid& l = run_[t];
+      const LinePlacement& p = placed_[t];
+      rounded[l.i].point = place(t).point;
+      rounded[l.j].point = place(t + 1).point;
+      if (p.in_handle) rounded[l.i].in_handle = p.in_handle, steps[l.i] = p.step;
+      if (p.out_handle) rounded[l.j].out_handle = p.out_handle, steps[l.j] = p.step;
+    }
+  }
+
+ private:
+  const EndPlace& place(std::size_t t) const { return places_[t][chosen_[t]]; }
+
+  // A curve's end slides along its line, off it by no more than the line has left of the
+  // tolerance.
+  std::optional<Slide> slide(const LineOnGrid& l, bool arrives) const {
+    if (!(arrives ? l.curve_arrives : l.curve_leaves)) return std::nullopt;
+    const std::size_t n = exact_.size();
+    const Cubic c = arrives ? outline_cubic(exact_, (l.i + n - 1) % n) : outline_cubic(exact_, l.j);
+    const Cubic from_join = arrives ? Cubic{c.p[3], c.p[2], c.p[1], c.p[0]} : c;
+    if (norm(from_join.p[1] - from_join.p[0]) == 0.0) return std::nullopt;
+    return Slide(from_join, exact_[arrives ? l.j : l.i].point, std::min(off_line, limits_.allowance_at(l.i)));
+  }
+
+  const std::vector<OutlineNode>& exact_;
+  const std::vector<LineOnGrid>& run_;
+  const LinePlacer& placer_;
+  const HandleStepLimits& limits_;
+  std::vector<std::vector<EndPlace>> places_;
+  std::vector<std::size_t> chosen_;
+  std::vector<LinePlacement> placed_;
+};
+
 }  // namespace
 
 void place_lines_on_grid(const std::vector<OutlineNode>& exact, std::vector<OutlineNode>& rounded,
@@ -226,61 +302,10 @@ void place_lines_on_grid(const std::vector<OutlineNode>& exact, std::vector<Outl
   const LinePlacer placer(exact, rounded, steps, limits.flat_curvature);
   for (const std::vector<LineOnGrid>& run : line_runs(exact, closed)) {
     if (std::none_of(run.begin(), run.end(), [](const LineOnGrid& l) { return l.curve_arrives || l.curve_leaves; })) continue;
-    // A curve's end slides along its line, off it by no more than the line has left of
-    // the tolerance.
-    const std::size_t n = exact.size();
-    const auto slide = [&](const LineOnGrid& l, bool arrives) -> std::optional<Slide> {
-      if (!(arrives ? l.curve_arrives : l.curve_leaves)) return std::nullopt;
-      const Cubic c = arrives ? outline_cubic(exact, (l.i + n - 1) % n) : outline_cubic(exact, l.j);
-      const Cubic from_join = arrives ? Cubic{c.p[3], c.p[2], c.p[1], c.p[0]} : c;
-      if (norm(from_join.p[1] - from_join.p[0]) == 0.0) return std::nullopt;
-      return Slide(from_join, exact[arrives ? l.j : l.i].point, std::min(off_line, limits.allowance_at(l.i)));
-    };
-    // First each end at its grid point or a neighbour; where a curve's handle on the line then
-    // strays, its end slides too.
-    const auto places_for = [&](bool slides) {
-      std::vector<std::vector<EndPlace>> places;
-      places.push_back(end_places(exact[run.front().i].point, slides ? slide(run.front(), true) : std::nullopt));
-      for (const LineOnGrid& l : run) places.push_back(end_places(exact[l.j].point, slides ? slide(l, false) : std::nullopt));
-      return places;
-    };
-    const auto placements = [&](const std::vector<std::vector<EndPlace>>& places, const std::vector<std::size_t>& chosen) {
-      std::vector<LinePlacement> out;
-      for (std::size_t t = 0; t < run.size(); ++t)
-        out.push_back(placer.place(run[t], places[t][chosen[t]], places[t + 1][chosen[t + 1]]));
-      return out;
-    };
-    std::vector<std::vector<EndPlace>> places = places_for(false);
-    std::vector<std::size_t> chosen = cheapest_places(run, places, placer);
-    if (chosen.empty()) continue;  // every choice degenerate: keep the nearest grid points
-    std::vector<LinePlacement> placed = placements(places, chosen);
-    // A handle slid along its own tangent moves the curve little: only one that grows or
-    // shrinks by more than a quarter (and more than the curve's allowance) strays, and only
-    // a long step can be made shorter by sliding.
-    const auto strays_at = [&](std::size_t node, bool in, double moved, std::size_t cubic) {
-      const Vec2 h = in ? *exact[node].in_handle : *exact[node].out_handle;
-      return moved > std::max(limits.allowance_at(cubic), stray_share * distance(h, exact[node].point));
-    };
-    bool strays = false;
-    for (std::size_t t = 0; t < run.size() && !strays; ++t) {
-      const LineOnGrid& l = run[t];
-      const LinePlacement& p = placed[t];
-      strays = norm(p.step) > short_step && ((p.in_handle && strays_at(l.i, true, p.in_moved, (l.i + n - 1) % n)) ||
-                                             (p.out_handle && strays_at(l.j, false, p.out_moved, l.j)));
-    }
-    if (strays) {
-      std::vector<std::vector<EndPlace>> slid = places_for(true);
-      const std::vector<std::size_t> again = cheapest_places(run, slid, placer);
-      if (!again.empty()) places = std::move(slid), chosen = again, placed = placements(places, chosen);
-    }
-    for (std::size_t t = 0; t < run.size(); ++t) {
-      const LineOnGrid& l = run[t];
-      const LinePlacement& p = placed[t];
-      rounded[l.i].point = places[t][chosen[t]].point;
-      rounded[l.j].point = places[t + 1][chosen[t + 1]].point;
-      if (p.in_handle) rounded[l.i].in_handle = p.in_handle, steps[l.i] = p.step;
-      if (p.out_handle) rounded[l.j].out_handle = p.out_handle, steps[l.j] = p.step;
-    }
+    RunPlacement placement(exact, run, placer, limits);
+    if (!placement.choose(false)) continue;  // every choice degenerate: keep the nearest grid points
+    if (placement.strays()) placement.choose(true);
+    placement.write(rounded, steps);
   }
 }
 
