@@ -354,9 +354,16 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& requested
   // Each side of a contour may move by the tolerance; past half its thickness the two sides
   // could cross and turn it inside out (a brush font's 5-unit speck, faired at 10, came out
   // reversed). So a thin contour is faired to half its thickness.
-  if (source.closed) settings.tolerance_units = std::min(settings.tolerance_units, 0.5 * thickness(source));
   ContourFairing out;
   out.contour = source;
+  if (source.closed) {
+    const double thick = thickness(source);
+    if (thick == 0.0) {
+      out.reason = "it encloses no area";
+      return out;
+    }
+    settings.tolerance_units = std::min(settings.tolerance_units, 0.5 * thick);
+  }
   const ContourPlan plan = plan_contour(source, settings.corner_angle_deg);
   if (plan.pieces.empty()) {
     out.reason = "nothing to fair (every segment degenerate)";

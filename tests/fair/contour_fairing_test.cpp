@@ -132,6 +132,13 @@ TEST(ContourFairing, AContourThinnerThanTheToleranceKeepsItsDirection) {
   const ContourFairing r = fair_contour(speck, settings);
   EXPECT_EQ(signed_area(r.contour) > 0.0, signed_area(speck) > 0.0) << r.reason;
   EXPECT_LE(brute_force_hausdorff(speck, r.contour), 1.01 * 0.5 * thickness(speck)) << r.reason;
+  // A contour that encloses nothing (drawn out and back: the same font's q) is kept as it is.
+  Contour flat;
+  flat.segments = {Cubic{{{23, 245}, {23, 245}, {23, 245}, {23, 244}}}, Line{{{23, 244}, {23, 245}}}};
+  flat.nodes.assign(2, NodeFlags{});
+  const ContourFairing kept = fair_contour(flat, settings);
+  EXPECT_FALSE(kept.faired);
+  EXPECT_EQ(kept.reason, "it encloses no area");
 }
 
 // Sign changes of κ along the smooth stretches of a contour (joins within 3° continue a
