@@ -351,11 +351,11 @@ double contour_distance(const Contour& a, const Contour& b) {
 ContourFairing fair_contour(const Contour& source, const FairSettings& requested) {
   FairSettings settings = requested;
   settings.rounding = resolve_rounding(requested.rounding, {&source, 1});
+  ContourFairing out;
+  out.contour = source;
   // Each side of a contour may move by the tolerance; past half its thickness the two sides
   // could cross and turn it inside out (a brush font's 5-unit speck, faired at 10, came out
   // reversed). So a thin contour is faired to half its thickness.
-  ContourFairing out;
-  out.contour = source;
   if (source.closed) {
     const double thick = thickness(source);
     if (thick == 0.0) {

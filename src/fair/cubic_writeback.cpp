@@ -5,7 +5,6 @@
 #include <functional>
 #include <limits>
 #include <numbers>
-#include <numeric>
 #include <span>
 
 #include "geom/curvature.hpp"
@@ -36,7 +35,7 @@ std::vector<Vec2> grid_directions(int longest) {
   std::vector<Vec2> out;
   for (int p = -3; p <= 3; ++p)
     for (int q = -3; q <= 3; ++q)
-      if (p * p + q * q <= longest && std::gcd(std::abs(p), std::abs(q)) == 1) out.push_back({double(p), double(q)});
+      if (p * p + q * q <= longest && is_primitive({double(p), double(q)})) out.push_back({double(p), double(q)});
   return out;
 }
 

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 
 #include "fair/line_rounding.hpp"
 #include "geom/curvature.hpp"
@@ -36,9 +35,8 @@ Choice collinear_choice(Vec2 point, std::optional<Vec2> in, std::optional<Vec2> 
       const double minor = std::round(minor_exact) + delta;
       const double sx = steep ? minor : (dir.x < 0 ? -major : major);
       const double sy = steep ? (dir.y < 0 ? -major : major) : minor;
-      if (std::gcd(static_cast<long long>(std::abs(sx)), static_cast<long long>(std::abs(sy))) != 1) continue;
       const Vec2 d{sx, sy};
-      if (dot(d, dir) <= 0.0) continue;
+      if (!is_primitive(d) || dot(d, dir) <= 0.0) continue;
       for (int ox = -1; ox <= 1; ++ox)
         for (int oy = -1; oy <= 1; ++oy) {
           const Vec2 p = base + Vec2{double(ox), double(oy)};

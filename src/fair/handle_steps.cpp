@@ -5,7 +5,6 @@
 #include <cmath>
 #include <limits>
 #include <map>
-#include <numeric>
 
 #include "fair/cubic_change.hpp"
 #include "geom/curvature.hpp"
@@ -346,7 +345,7 @@ std::vector<Vec2> directions_near(Vec2 tangent, double most, int longest) {
   for (int x = -longest; x <= longest; ++x)
     for (int y = -longest; y <= longest; ++y) {
       const Vec2 d{double(x), double(y)};
-      if (std::gcd(std::abs(x), std::abs(y)) != 1 || dot(d, t) <= 0.0) continue;
+      if (!is_primitive(d) || dot(d, t) <= 0.0) continue;
       if (std::abs(turning_angle(t, d)) <= most) out.push_back(d);
     }
   return out;

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numeric>
 
 #include "geom/polyline_distance.hpp"
 
@@ -109,10 +108,9 @@ class LinePlacer {
   LinePlacement place(const LineOnGrid& line, const EndPlace& a, const EndPlace& b,
                       double bound = std::numeric_limits<double>::infinity()) const {
     LinePlacement out;
-    const Vec2 along = b.point - a.point;
-    const long long g = std::gcd(static_cast<long long>(std::abs(along.x)), static_cast<long long>(std::abs(along.y)));
-    if (g == 0) return out;
-    out.step = along / static_cast<double>(g);
+    const std::optional<Vec2> step = primitive_step(b.point - a.point);
+    if (!step) return out;
+    out.step = *step;
     // A line no curve meets tangentially needs no short step, and its ends' moves only break
     // ties: the lines beside it that a curve does meet decide where they go.
     if (!line.curve_arrives && !line.curve_leaves) {

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <numeric>
 
 namespace gf {
 
@@ -30,6 +32,12 @@ double whole_steps(Vec2 from, Vec2 handle, Vec2 d, double sign) {
 
 Vec2 stepped_handle(Vec2 node, Vec2 d, double sign, Vec2 from, Vec2 handle) {
   return node + d * (sign * std::max(1.0, whole_steps(from, handle, d, sign)));
+}
+
+std::optional<Vec2> primitive_step(Vec2 along) {
+  const long long g = std::gcd(std::llabs(std::llround(along.x)), std::llabs(std::llround(along.y)));
+  if (g == 0) return std::nullopt;
+  return along / static_cast<double>(g);
 }
 
 double node_curvature(const Cubic& c, SegmentEnd end) { return end_curvature(c, end).curvature.value_or(0.0); }

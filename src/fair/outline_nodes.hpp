@@ -42,6 +42,13 @@ double whole_steps(Vec2 from, Vec2 handle, Vec2 d, double sign);
 /// in-handle), m = whole_steps(from, handle, d, sign) at least 1.
 Vec2 stepped_handle(Vec2 node, Vec2 d, double sign, Vec2 from, Vec2 handle);
 
+/// An integer vector divided by the greatest common divisor of its components: the shortest
+/// grid step along it (a handle on it lies a whole number of these from its node); none for 0.
+std::optional<Vec2> primitive_step(Vec2 along);
+
+/// Whether `d` is its own primitive step.
+inline bool is_primitive(Vec2 d) { return primitive_step(d) == d; }
+
 /// Curvature where a cubic of the outline leaves its start or reaches its end
 /// (geom/curvature.hpp), 0 where a retracted handle leaves it unbounded.
 double node_curvature(const Cubic& c, SegmentEnd end);

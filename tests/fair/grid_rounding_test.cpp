@@ -12,6 +12,18 @@ namespace {
 
 bool on_grid(Vec2 p) { return p.x == std::round(p.x) && p.y == std::round(p.y); }
 
+TEST(GridRounding, PrimitiveStepsDivideByTheCommonDivisor) {
+  // DejaVu's s spine: (63, −14) = 7·(9, −2).
+  EXPECT_EQ(primitive_step({63, -14}), (Vec2{9, -2}));
+  EXPECT_EQ(primitive_step({0, -5}), (Vec2{0, -1}));
+  EXPECT_EQ(primitive_step({-270, -1650}), (Vec2{-9, -55}));
+  EXPECT_FALSE(primitive_step({0, 0}));
+  EXPECT_TRUE(is_primitive({2, 1}));
+  EXPECT_TRUE(is_primitive({-1, 0}));
+  EXPECT_FALSE(is_primitive({2, 2}));
+  EXPECT_FALSE(is_primitive({0, 0}));
+}
+
 TEST(GridRounding, SmoothNodesStayExactlyCollinear) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
