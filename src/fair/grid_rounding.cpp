@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
+#include "fair/contour_plan.hpp"
 #include "fair/line_rounding.hpp"
 #include "geom/curvature.hpp"
 #include "geom/g2_hermite.hpp"
@@ -19,16 +21,47 @@ struct Choice {
   double cost = 1e300;
 };
 
+// The cubics on either side of a node as the fairing drew them, with the far ends they have on
+// the grid so far: a direction for the node's handles must not bend either of them the other
+// way where it meets the node (a near-vertical node a unit off a vertical stem, rounded to
+// (0, 1), turns the cubic from the stem into an S).
+struct NodeSides {
+  std::optional<Cubic> before, after;          ///< as faired
+  std::optional<Vec2> before_from, before_far;  ///< the previous node and its out-handle, rounded
+  std::optional<Vec2> after_far, after_to;      ///< the next node's in-handle and that node, rounded
+  double flat_curvature = 0.0;
+
+  bool keeps_bend(const Choice& c) const {
+    return (!before || same_bend(*before, Cubic{{*before_from, *before_far, *c.in, c.point}}, SegmentEnd::end)) &&
+           (!after || same_bend(*after, Cubic{{c.point, *c.out, *after_far, *after_to}}, SegmentEnd::start));
+  }
+
+ private:
+  bool same_bend(const Cubic& faired, const Cubic& rounded, SegmentEnd end) const {
+    const double k = node_curvature(faired, end);
+    // κ = (2/3) h / a² at a cubic's end (h: the far handle's distance from the tangent, a: the
+    // near handle's length): where a quarter unit of h, 1 / (6 a²), bends it as much, rounding
+    // decides the sign whatever the direction (measured: half a unit lost Inter's b).
+    const double a = end == SegmentEnd::start ? distance(faired.p[0], faired.p[1]) : distance(faired.p[2], faired.p[3]);
+    if (std::abs(k) <= std::max(flat_curvature, 1.0 / (6.0 * a * a))) return true;
+    return node_curvature(rounded, end) * k >= 0.0;
+  }
+};
+
 // The exact collinear choice nearest to (point, in, out): directions d = (dx, dy) primitive,
 // near the handles' direction, no longer than the shorter handle; the node itself may move by
-// one unit from its nearest grid point.
-Choice collinear_choice(Vec2 point, std::optional<Vec2> in, std::optional<Vec2> out) {
+// one unit from its nearest grid point. A choice that keeps both cubics bent as they were,
+// turning the tangent by less than the kink limit, beats any that does not (a wider turn is a
+// visible change of its own: a brush font's half-unit handles would swing by 30–45°).
+Choice collinear_choice(Vec2 point, std::optional<Vec2> in, std::optional<Vec2> out, const NodeSides& sides) {
   const Vec2 dir = out ? *out - point : point - *in;
   const double shortest = std::min(in ? norm(point - *in) : 1e300, out ? norm(*out - point) : 1e300);
   const int reach = std::clamp(static_cast<int>(shortest), 1, 64);
   const bool steep = std::abs(dir.y) > std::abs(dir.x);
   const Vec2 base = nearest_grid_point(point);
+  const double most_turn = kink_limit_deg * std::numbers::pi / 180.0;
   Choice best;
+  bool best_keeps = false;
   for (int major = 1; major <= reach; ++major) {
     const double minor_exact = major * (steep ? dir.x / std::abs(dir.y) : dir.y / std::abs(dir.x));
     for (int delta = -1; delta <= 1; ++delta) {
@@ -52,7 +85,8 @@ Choice collinear_choice(Vec2 point, std::optional<Vec2> in, std::optional<Vec2> 
             c.out = stepped_handle(p, d, 1.0, point, *out);
             c.cost = std::max(c.cost, distance(*c.out, *out));
           }
-          if (c.cost < best.cost) best = c;
+          const bool keeps = std::abs(turning_angle(dir, d)) <= most_turn && sides.keeps_bend(c);
+          if (keeps > best_keeps || (keeps == best_keeps && c.cost < best.cost)) best = c, best_keeps = keeps;
         }
     }
   }
@@ -129,7 +163,18 @@ std::vector<OutlineNode> round_to_grid(const std::vector<OutlineNode>& nodes, bo
     OutlineNode& dst = r[i];
     if (!src.smooth || steps[i] || open_end(i)) continue;
     if (!src.in_handle || !src.out_handle) continue;
-    const Choice c = collinear_choice(src.point, src.in_handle, src.out_handle);
+    const std::size_t before = (i + n - 1) % n, after = (i + 1) % n;
+    NodeSides sides;
+    sides.flat_curvature = limits.flat_curvature;
+    if ((closed || i > 0) && nodes[before].out_handle) {
+      sides.before = outline_cubic(nodes, before);
+      sides.before_from = r[before].point, sides.before_far = r[before].out_handle;
+    }
+    if ((closed || i + 1 < n) && nodes[after].in_handle) {
+      sides.after = outline_cubic(nodes, i);
+      sides.after_far = r[after].in_handle, sides.after_to = r[after].point;
+    }
+    const Choice c = collinear_choice(src.point, src.in_handle, src.out_handle, sides);
     dst.point = c.point, dst.in_handle = c.in, dst.out_handle = c.out;
     steps[i] = c.step;
   }

@@ -209,6 +209,24 @@ bool has_fraction(const Outline& o) {
   return any;
 }
 
+// A smooth node a unit off a nearly straight stroke, its tangent a degree off the axis: rounded
+// along the axis, the cubic from the stroke has to come back to it and turns into an S (Inter's
+// b and p: one inflection the source lacks; its g: κ −31 per em against +0.25 there). The
+// node's direction is chosen so both its cubics still bend the way they did.
+TEST(ContourFairing, RoundedNodeDirectionsKeepTheirCubicsBent) {
+  for (const char* name : {"uni0062", "uni0067"}) {
+    const FairedGlyph f = fair_named(test::inter_variable, name, FairOptions{});
+    ASSERT_TRUE(f.result.kept.empty()) << name << ": " << f.result.kept.front();
+    EXPECT_FALSE(has_fraction(f.result.glyph.outline)) << name;
+    int before = 0, after = 0;
+    for (const Contour& c : f.source.outline.contours) before += inflections(c, f.upm);
+    for (const Contour& c : f.result.glyph.outline.contours) after += inflections(c, f.upm);
+    EXPECT_EQ(before, 0) << name;
+    EXPECT_EQ(after, 0) << name;
+    EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm), 0) << name;
+  }
+}
+
 // DejaVu's Q: the tail's cubic leaves a corner and reaches the bowl's bottom with a 23-unit
 // handle, where a unit of its corner's handle decides the curvature. That handle moves a
 // unit per pass of the whole-step choice; G2 there took nine passes.
