@@ -21,30 +21,38 @@ struct Choice {
   double cost = 1e300;
 };
 
-// The cubics on either side of a node as the fairing drew them, with the far ends they have on
-// the grid so far: a direction for the node's handles must not bend either of them the other
-// way where it meets the node (a near-vertical node a unit off a vertical stem, rounded to
-// (0, 1), turns the cubic from the stem into an S).
-struct NodeSides {
-  std::optional<Cubic> before, after;          ///< as faired
-  std::optional<Vec2> before_from, before_far;  ///< the previous node and its out-handle, rounded
-  std::optional<Vec2> after_far, after_to;      ///< the next node's in-handle and that node, rounded
-  double flat_curvature = 0.0;
+// A cubic at a node, as far as the choice of the node's grid direction needs it: the
+// curvature the fairing gave it where it meets the node (its sign is what counts), and its two
+// control points away from the node as they stand on the grid. A direction must not bend it
+// the other way there (a near-vertical node a unit off a vertical stem, rounded to (0, 1),
+// turns the cubic from the stem into an S).
+struct NodeSide {
+  double curvature;
+  Vec2 far_node, far_handle;
+};
 
-  bool keeps_bend(const Choice& c) const {
-    return (!before || same_bend(*before, Cubic{{*before_from, *before_far, *c.in, c.point}}, SegmentEnd::end)) &&
-           (!after || same_bend(*after, Cubic{{c.point, *c.out, *after_far, *after_to}}, SegmentEnd::start));
+// None where rounding decides the sign whatever the direction: κ = (2/3) h / a² at a cubic's
+// end (h: the far handle's distance from the tangent, a: the near handle's length), and a
+// quarter unit of h gives 1 / (6 a²) (measured: half a unit lost Inter's b).
+std::optional<NodeSide> node_side(const Cubic& faired, SegmentEnd end, Vec2 far_node, Vec2 far_handle, double flat) {
+  const double k = node_curvature(faired, end);
+  const double a = end == SegmentEnd::start ? distance(faired.p[0], faired.p[1]) : distance(faired.p[2], faired.p[3]);
+  if (std::abs(k) <= std::max(flat, 1.0 / (6.0 * a * a))) return std::nullopt;
+  return NodeSide{k, far_node, far_handle};
+}
+
+// Both cubics at a node, where their bend is to be kept.
+struct NodeSides {
+  std::optional<NodeSide> before, after;
+
+  bool kept_by(const Choice& c) const {
+    return (!before || bends_as_faired(*before, Cubic{{before->far_node, before->far_handle, *c.in, c.point}}, SegmentEnd::end)) &&
+           (!after || bends_as_faired(*after, Cubic{{c.point, *c.out, after->far_handle, after->far_node}}, SegmentEnd::start));
   }
 
  private:
-  bool same_bend(const Cubic& faired, const Cubic& rounded, SegmentEnd end) const {
-    const double k = node_curvature(faired, end);
-    // κ = (2/3) h / a² at a cubic's end (h: the far handle's distance from the tangent, a: the
-    // near handle's length): where a quarter unit of h, 1 / (6 a²), bends it as much, rounding
-    // decides the sign whatever the direction (measured: half a unit lost Inter's b).
-    const double a = end == SegmentEnd::start ? distance(faired.p[0], faired.p[1]) : distance(faired.p[2], faired.p[3]);
-    if (std::abs(k) <= std::max(flat_curvature, 1.0 / (6.0 * a * a))) return true;
-    return node_curvature(rounded, end) * k >= 0.0;
+  static bool bends_as_faired(const NodeSide& side, const Cubic& rounded, SegmentEnd end) {
+    return node_curvature(rounded, end) * side.curvature >= 0.0;
   }
 };
 
@@ -70,6 +78,7 @@ Choice collinear_choice(Vec2 point, std::optional<Vec2> in, std::optional<Vec2> 
       const double sy = steep ? (dir.y < 0 ? -major : major) : minor;
       const Vec2 d{sx, sy};
       if (!is_primitive(d) || dot(d, dir) <= 0.0) continue;
+      const bool near = std::abs(turning_angle(dir, d)) <= most_turn;
       for (int ox = -1; ox <= 1; ++ox)
         for (int oy = -1; oy <= 1; ++oy) {
           const Vec2 p = base + Vec2{double(ox), double(oy)};
@@ -85,7 +94,7 @@ Choice collinear_choice(Vec2 point, std::optional<Vec2> in, std::optional<Vec2> 
             c.out = stepped_handle(p, d, 1.0, point, *out);
             c.cost = std::max(c.cost, distance(*c.out, *out));
           }
-          const bool keeps = std::abs(turning_angle(dir, d)) <= most_turn && sides.keeps_bend(c);
+          const bool keeps = near && sides.kept_by(c);
           if (keeps > best_keeps || (keeps == best_keeps && c.cost < best.cost)) best = c, best_keeps = keeps;
         }
     }
@@ -164,16 +173,12 @@ std::vector<OutlineNode> round_to_grid(const std::vector<OutlineNode>& nodes, bo
     if (!src.smooth || steps[i] || open_end(i)) continue;
     if (!src.in_handle || !src.out_handle) continue;
     const std::size_t before = (i + n - 1) % n, after = (i + 1) % n;
+    const double flat = limits.flat_curvature;
     NodeSides sides;
-    sides.flat_curvature = limits.flat_curvature;
-    if ((closed || i > 0) && nodes[before].out_handle) {
-      sides.before = outline_cubic(nodes, before);
-      sides.before_from = r[before].point, sides.before_far = r[before].out_handle;
-    }
-    if ((closed || i + 1 < n) && nodes[after].in_handle) {
-      sides.after = outline_cubic(nodes, i);
-      sides.after_far = r[after].in_handle, sides.after_to = r[after].point;
-    }
+    if (nodes[before].out_handle)
+      sides.before = node_side(outline_cubic(nodes, before), SegmentEnd::end, r[before].point, *r[before].out_handle, flat);
+    if (nodes[after].in_handle)
+      sides.after = node_side(outline_cubic(nodes, i), SegmentEnd::start, r[after].point, *r[after].in_handle, flat);
     const Choice c = collinear_choice(src.point, src.in_handle, src.out_handle, sides);
     dst.point = c.point, dst.in_handle = c.in, dst.out_handle = c.out;
     steps[i] = c.step;

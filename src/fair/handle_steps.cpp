@@ -34,6 +34,15 @@ double jump(double k1, double k2, double flat) {
 // G2 first: any jump over the target costs more than every choice that meets it.
 double jump_cost(double j) { return j <= target_jump ? j * j : 1.0 + 100.0 * j; }
 
+// How many steps (not necessarily whole) of `step` from `node`, on the side `sign` gives, reach
+// the line through `line_point` along `line_dir`; none where they run parallel (as far from the
+// line at every step).
+std::optional<double> steps_to_line(Vec2 node, Vec2 step, double sign, Vec2 line_point, Vec2 line_dir) {
+  const double across = sign * cross(line_dir, step);
+  if (across == 0.0) return std::nullopt;
+  return -cross(line_dir, node - line_point) / across;
+}
+
 // Where one handle of a node may go: whole steps along the node's grid direction, a unit
 // either way for a corner's handle, else where it is. The rounded position comes first.
 std::vector<Vec2> handle_candidates(const OutlineNode& node, std::optional<Vec2> step, bool out) {
@@ -408,9 +417,9 @@ std::optional<Vec2> handle_on_line(const OutlineNode& node, std::optional<Vec2> 
   if (!node.smooth) {
     const Vec2 now = sign > 0.0 ? *node.out_handle : *node.in_handle;
     h = p + d * std::round(dot(now - p, d) / dot(d, d));
-  } else if (step && cross(d, *step) != 0.0) {
-    const double m = -cross(d, node.point - p) / (sign * cross(d, *step));
-    if (m >= 1.0 && m == std::round(m)) h = node.point + *step * (sign * m);
+  } else if (step) {
+    const std::optional<double> m = steps_to_line(node.point, *step, sign, p, d);
+    if (m && *m >= 1.0 && *m == std::round(*m)) h = node.point + *step * (sign * *m);
   }
   if (h && -sign * dot(*h - p, d) <= 0.0) return std::nullopt;
   return h;
@@ -503,12 +512,11 @@ bool choose_run_steps(std::vector<OutlineNode>& nodes, std::span<const std::opti
 }  // namespace
 
 std::vector<Vec2> handles_near_line(Vec2 node, Vec2 step, double sign, Vec2 line_point, Vec2 line_dir) {
-  const double across = sign * cross(line_dir, step);
-  if (across == 0.0) return {};  // parallel: as far from the line at every step
-  const double m = -cross(line_dir, node - line_point) / across;
+  const std::optional<double> m = steps_to_line(node, step, sign, line_point, line_dir);
+  if (!m) return {};
   std::vector<Vec2> out;
-  for (const double whole : {std::floor(m), std::ceil(m)})
-    if (whole >= 1.0 && (out.empty() || whole != std::floor(m))) out.push_back(node + step * (sign * whole));
+  for (const double whole : {std::floor(*m), std::ceil(*m)})
+    if (whole >= 1.0 && (out.empty() || whole != std::floor(*m))) out.push_back(node + step * (sign * whole));
   return out;
 }
 

@@ -1,6 +1,7 @@
 #include "fair/line_rounding.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -51,8 +52,8 @@ class Slide {
     const double along = std::abs(dot(into_, p - exact));
     if (along > reach_ || std::abs(cross(into_, p - exact)) > off_limit_) return std::nullopt;
     const Cubic slid{p, curve_.p[1], curve_.p[2], curve_.p[3]};
-    std::vector<Vec2> samples;
-    for (int k = 0; k <= slid_samples; ++k) samples.push_back(slid.point_at(static_cast<double>(k) / slid_samples));
+    std::array<Vec2, slid_samples + 1> samples;
+    for (int k = 0; k <= slid_samples; ++k) samples[k] = slid.point_at(static_cast<double>(k) / slid_samples);
     const double strays = directed_hausdorff(samples, path_, off_limit_);
     if (strays > off_limit_) return std::nullopt;
     return strays + slide_weight * along;
