@@ -26,7 +26,9 @@ struct FairOptions {
 };
 
 /// The options with every default filled in for a font of `units_per_em`.
-///   text:        tolerance 0.1 % of the em; corners from 3° (the check's kink limit: a
+///   text:        tolerance 0.125 % of the em (a professional font's bar is 0.15 %; of the
+///                0.1 % it was, rounding to the grid was left too little to make G2 exact
+///                where a curve meets a long diagonal: DejaVu's s); corners from 3° (the check's kink limit: a
 ///                professional font's smooth joins are G1 to 0.05°, so anything at 3° or
 ///                more was drawn as a corner);
 ///   handwriting: tolerance 1 % of the em; corners from 30° (fonts traced from scans break
