@@ -10,6 +10,7 @@
 #include "fair/contour_plan.hpp"
 #include "fair/cubic_writeback.hpp"
 #include "fair/grid_rounding.hpp"
+#include "fair/kink_fillet.hpp"
 #include "fair/run_fairing.hpp"
 #include "geom/polyline_distance.hpp"
 
@@ -342,6 +343,18 @@ ContourFairing fair_planned(const Contour& source, const ContourPlan& plan, cons
 // How many times corners that came out as kinks are made smooth and the contour faired again.
 constexpr int kink_passes = 2;
 
+// The kinks left between two lines (no run passes through them, and merging the lines strays:
+// Inter's Q tail, Cantarell's y) filleted within what the faired contour leaves of the tolerance.
+void fillet_kinks(ContourFairing& out, const Contour& source, const FairSettings& settings) {
+  const Contour filleted = fillet_line_kinks(out.contour, 0.95 * (settings.tolerance_units - out.deviation),
+                                             settings.rounding == Rounding::integers);
+  if (filleted.segments.size() == out.contour.segments.size()) return;
+  const double d = contour_distance(filleted, source);
+  if (d > settings.tolerance_units) return;
+  out.contour = filleted;
+  out.deviation = std::max(out.deviation, d);
+}
+
 }  // namespace
 
 double contour_distance(const Contour& a, const Contour& b) {
@@ -372,9 +385,10 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& requested
   const bool has_curve = std::any_of(plan.pieces.begin(), plan.pieces.end(),
                                      [](const auto& p) { return std::holds_alternative<SmoothRun>(p); });
   if (!has_curve) {
-    out.faired = true;  // lines only: already as fair as it gets
+    out.faired = true;  // lines only: as fair as it gets, but for its kinks
     for (const auto& piece : plan.pieces)
       out.pieces.push_back(line_piece(std::get<Line>(piece).start(), std::get<Line>(piece).end(), false));
+    fillet_kinks(out, source, settings);
     return out;
   }
   const SampledContour sampled_source(source);
@@ -393,6 +407,7 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& requested
     out = std::move(again);
     kinked = std::move(still);
   }
+  if (out.faired) fillet_kinks(out, source, settings);
   // The last word on direction: a faired contour that winds the other way would fill (or
   // cut) the opposite of what the source does.
   if (out.faired && source.closed && (signed_area(out.contour) > 0.0) != (signed_area(source) > 0.0)) {

@@ -1,0 +1,21 @@
+// Kinks between two lines filleted G2: a cubic with both handles on the kink's vertex.
+#pragma once
+
+#include "geom/contour.hpp"
+
+namespace gf {
+
+/// `contour` with every join of two lines that turns by more than the smooth limit and less
+/// than the kink limit (geom/join.hpp: no corner was drawn there) replaced by a fillet: the
+/// cubic (P0, C, C, P3) from a point P0 on the line before, through handles both at the vertex
+/// C, to a point P3 on the line after. Each handle lies on the line its end leaves along, and
+/// the other handle on it too, so κ = 0 at both ends (lac-math.md §3.2's line join): both
+/// joins are G2, where the kink was a break in direction. The shorter leg is the longest that
+/// keeps the fillet within `allowance_units` of the two lines, each leg at most its line (half
+/// of it where the line's other end is a kink too); on `integer_grid`, a whole number of its
+/// line's primitive steps (P0 and P3 on the grid). A kink whose fillet would bend against the
+/// curve or kink next to it along the contour (an inflection the kink did not count as) stays.
+/// Contours with no such kink come back unchanged.
+Contour fillet_line_kinks(const Contour& contour, double allowance_units, bool integer_grid);
+
+}  // namespace gf
