@@ -65,10 +65,12 @@ std::optional<Legs> fillet_legs(const Line& before, const Line& after, double mo
   return best;
 }
 
+double degrees(double radians) { return radians * 180.0 / std::numbers::pi; }
+
 // Whether lines a then b meet at a kink: turning by more than the smooth limit, less than the kink limit.
 bool is_kink(const Line& a, const Line& b) {
   const JoinThresholds limits;
-  const double turn = std::abs(turning_angle(a.end() - a.start(), b.end() - b.start())) * 180.0 / std::numbers::pi;
+  const double turn = std::abs(degrees(turning_angle(a.end() - a.start(), b.end() - b.start())));
   return turn > limits.smooth_max_deg && turn < limits.kink_max_deg;
 }
 
@@ -95,9 +97,9 @@ int neighbour_bend(const Contour& contour, std::size_t k, int step) {
     const std::optional<Vec2> a = end_tangent(step > 0 ? s : beyond, SegmentEnd::end);
     const std::optional<Vec2> b = end_tangent(step > 0 ? beyond : s, SegmentEnd::start);
     if (!a || !b) return 0;
-    const double turn = turning_angle(*a, *b);
-    if (std::abs(turn) * 180.0 / std::numbers::pi >= limits.kink_max_deg) return 0;
-    if (std::abs(turn) * 180.0 / std::numbers::pi > limits.smooth_max_deg) return (turn > 0.0) - (turn < 0.0);
+    const double turn = degrees(turning_angle(*a, *b));
+    if (std::abs(turn) >= limits.kink_max_deg) return 0;
+    if (std::abs(turn) > limits.smooth_max_deg) return (turn > 0.0) - (turn < 0.0);
   }
   return 0;
 }
