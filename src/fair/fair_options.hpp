@@ -26,11 +26,11 @@ struct FairOptions {
 };
 
 /// The options with every default filled in for a font of `units_per_em`.
-///   text:        tolerance 0.125 % of the em (a professional font's bar is 0.15 %; of the
-///                0.1 % it was, rounding to the grid was left too little to make G2 exact
-///                where a curve meets a long diagonal: DejaVu's s); corners from 3° (the check's kink limit: a
-///                professional font's smooth joins are G1 to 0.05°, so anything at 3° or
-///                more was drawn as a corner);
+///   text:        tolerance 0.125 % of the em (a professional font's bar is 0.15 %; at the
+///                0.1 % it was, rounding had too little left to make G2 exact where a curve
+///                meets a long diagonal: DejaVu's s); corners from 3° (the check's kink
+///                limit: a professional font's smooth joins are G1 to 0.05°, so anything at
+///                3° or more was drawn as a corner);
 ///   handwriting: tolerance 1 % of the em; corners from 30° (fonts traced from scans break
 ///                their curves by 3–20° at many joins; a stroke end or a sharp turn of the pen
 ///                turns by far more), and wobbles up to the tolerance smoothed away: each run

@@ -2,7 +2,6 @@
 
 #include <array>
 #include <cmath>
-#include <numbers>
 #include <optional>
 #include <vector>
 
@@ -65,41 +64,32 @@ std::optional<Legs> fillet_legs(const Line& before, const Line& after, double mo
   return best;
 }
 
-double degrees(double radians) { return radians * 180.0 / std::numbers::pi; }
+// The way a join turns: +1 left, −1 right.
+int way(const Join& j) { return (j.angle_deg > 0.0) - (j.angle_deg < 0.0); }
 
-// Whether lines a then b meet at a kink: turning by more than the smooth limit, less than the kink limit.
-bool is_kink(const Line& a, const Line& b) {
-  const JoinThresholds limits;
-  const double turn = std::abs(degrees(turning_angle(a.end() - a.start(), b.end() - b.start())));
-  return turn > limits.smooth_max_deg && turn < limits.kink_max_deg;
-}
+// Whether a join is a kink a fillet may take: under the kink limit (a join the source flags
+// smooth is a kink at any angle, but a fillet cannot pass for it past the limit).
+bool small_kink(const Join& j) { return j.kind == JoinKind::kink && std::abs(j.angle_deg) < JoinThresholds{}.kink_max_deg; }
 
 // The way (+1 left, −1 right, 0 none) a contour bends next to node k, going back (step −1)
 // or on (+1) from it along joins under the kink limit: the kinks' turns and the curves'
 // curvature near their end towards k, lines passed over. A fillet that turns against either
-// would add an inflection where the kink had none.
-int neighbour_bend(const Contour& contour, std::size_t k, int step) {
+// would add an inflection where the kink had none. `join_at`: each node's join (geom/join.hpp).
+int neighbour_bend(const Contour& contour, const std::vector<std::optional<Join>>& join_at, std::size_t k, int step) {
   const std::size_t n = contour.segments.size();
-  const JoinThresholds limits;
   for (std::size_t walked = 1; walked < n; ++walked) {
+    if (!contour.closed && (step > 0 ? k + walked > n : walked > k)) return 0;
     // The next segment that way, and the node beyond it.
     const std::size_t seg = step > 0 ? (k + walked - 1) % n : (k + n - walked) % n;
-    const std::size_t node = step > 0 ? (k + walked) % n : seg;
-    if (!contour.closed && (step > 0 ? k + walked > n : walked > k)) return 0;
     const Segment& s = contour.segments[seg];
     if (!is_line(s)) {
-      const double t = step > 0 ? 0.25 : 0.75;
-      const double kappa = curvature(derivatives_at(s, t)).value_or(0.0);
+      const double kappa = curvature(derivatives_at(s, step > 0 ? 0.25 : 0.75)).value_or(0.0);
       return (kappa > 0.0) - (kappa < 0.0);
     }
-    if (!contour.closed && (node == 0 || node >= n)) return 0;
-    const Segment& beyond = contour.segments[step > 0 ? node % n : (node + n - 1) % n];
-    const std::optional<Vec2> a = end_tangent(step > 0 ? s : beyond, SegmentEnd::end);
-    const std::optional<Vec2> b = end_tangent(step > 0 ? beyond : s, SegmentEnd::start);
-    if (!a || !b) return 0;
-    const double turn = degrees(turning_angle(*a, *b));
-    if (std::abs(turn) >= limits.kink_max_deg) return 0;
-    if (std::abs(turn) > limits.smooth_max_deg) return (turn > 0.0) - (turn < 0.0);
+    const std::size_t node = step > 0 ? (k + walked) % n : seg;
+    const std::optional<Join>& j = node < join_at.size() ? join_at[node] : std::nullopt;
+    if (!j || j->kind == JoinKind::degenerate || std::abs(j->angle_deg) >= JoinThresholds{}.kink_max_deg) return 0;
+    if (j->kind != JoinKind::smooth) return way(*j);
   }
   return 0;
 }
@@ -109,21 +99,18 @@ int neighbour_bend(const Contour& contour, std::size_t k, int step) {
 Contour fillet_line_kinks(const Contour& contour, double allowance_units, bool integer_grid) {
   const std::size_t n = contour.segments.size();
   const auto line = [&](std::size_t i) { return std::get_if<Line>(&contour.segments[i % n]); };
-  // Node k joins segment k − 1 to segment k.
+  std::vector<std::optional<Join>> join_at(contour.node_count());
+  for (const Join& j : joins_of(contour)) join_at[j.node] = j;
+  // Node k joins segment k − 1 to segment k; filleted only where the fillet bends the way its
+  // neighbours do.
   std::vector<bool> kink(contour.node_count(), false);
-  for (std::size_t k = contour.closed ? 0 : 1; k < n; ++k) {
-    const Line *before = line(k + n - 1), *after = line(k);
-    kink[k] = before && after && is_kink(*before, *after);
-  }
-  // Only where the fillet bends the way its neighbours do.
   for (std::size_t k = 0; k < n; ++k) {
-    if (!kink[k]) continue;
-    const Line &before = *line(k + n - 1), &after = *line(k);
-    const double turn = turning_angle(before.end() - before.start(), after.end() - after.start());
-    const int way = (turn > 0.0) - (turn < 0.0);
+    const std::optional<Join>& j = join_at[k];
+    if (!j || !small_kink(*j) || !line(k + n - 1) || !line(k)) continue;
+    kink[k] = true;
     for (const int step : {-1, 1}) {
-      const int other = neighbour_bend(contour, k, step);
-      if (other != 0 && other != way) kink[k] = false;
+      const int other = neighbour_bend(contour, join_at, k, step);
+      if (other != 0 && other != way(*j)) kink[k] = false;
     }
   }
   // A line with a kink at both ends gives each fillet half of it; else the whole.
