@@ -12,6 +12,7 @@
 #include "fair/grid_rounding.hpp"
 #include "fair/kink_fillet.hpp"
 #include "fair/run_fairing.hpp"
+#include "fair/tight_turn.hpp"
 #include "geom/polyline_distance.hpp"
 
 namespace gf {
@@ -355,6 +356,49 @@ void fillet_kinks(ContourFairing& out, const Contour& source, const FairSettings
   out.deviation = std::max(out.deviation, d);
 }
 
+// The contour faired on `curve` (the source, or the same curve split at its tight turns): planned,
+// its runs faired, and corners that came out as kinks made smooth.
+ContourFairing fair_curve(const Contour& source, const TightTurns& curve_and_turns, const FairSettings& settings) {
+  ContourFairing out;
+  out.contour = source;
+  const Contour& curve = curve_and_turns.contour;
+  const auto plan_with = [&](std::span<const std::size_t> smooth_nodes) {
+    ContourPlan p = plan_contour(curve, settings.corner_angle_deg, smooth_nodes);
+    aim_runs_at_tight_turns(p, curve_and_turns.turns);
+    return p;
+  };
+  const ContourPlan plan = plan_with({});
+  if (plan.pieces.empty()) {
+    out.reason = "nothing to fair (every segment degenerate)";
+    return out;
+  }
+  const bool has_curve = std::any_of(plan.pieces.begin(), plan.pieces.end(),
+                                     [](const auto& p) { return std::holds_alternative<SmoothRun>(p); });
+  if (!has_curve) {
+    out.faired = true;  // lines only: as fair as it gets, but for its kinks
+    for (const auto& piece : plan.pieces)
+      out.pieces.push_back(line_piece(std::get<Line>(piece).start(), std::get<Line>(piece).end(), false));
+    return out;
+  }
+  const SampledContour sampled_source(curve);
+  std::vector<std::size_t> kinked, smooth_nodes;
+  FairedRuns cache;
+  out = fair_planned(curve, plan, sampled_source, settings, cache, kinked);
+  // A corner whose faired pieces meet by less than the kink limit was noise the fairing
+  // straightened (or a scan's few degrees at a line): made smooth, it becomes G2 instead of
+  // a kink. Kept only when the contour still fairs.
+  for (int pass = 0; pass < kink_passes && out.faired && !kinked.empty(); ++pass) {
+    smooth_nodes.insert(smooth_nodes.end(), kinked.begin(), kinked.end());
+    std::vector<std::size_t> still;
+    ContourFairing again = fair_planned(curve, plan_with(smooth_nodes), sampled_source, settings, cache, still);
+    if (!again.faired) break;
+    out = std::move(again);
+    kinked = std::move(still);
+  }
+  if (!out.faired) out.contour = source;  // as it was, not split at its turns
+  return out;
+}
+
 }  // namespace
 
 double contour_distance(const Contour& a, const Contour& b) {
@@ -377,36 +421,12 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& requested
     }
     settings.tolerance_units = std::min(settings.tolerance_units, 0.5 * thick);
   }
-  const ContourPlan plan = plan_contour(source, settings.corner_angle_deg);
-  if (plan.pieces.empty()) {
-    out.reason = "nothing to fair (every segment degenerate)";
-    return out;
-  }
-  const bool has_curve = std::any_of(plan.pieces.begin(), plan.pieces.end(),
-                                     [](const auto& p) { return std::holds_alternative<SmoothRun>(p); });
-  if (!has_curve) {
-    out.faired = true;  // lines only: as fair as it gets, but for its kinks
-    for (const auto& piece : plan.pieces)
-      out.pieces.push_back(line_piece(std::get<Line>(piece).start(), std::get<Line>(piece).end(), false));
-    fillet_kinks(out, source, settings);
-    return out;
-  }
-  const SampledContour sampled_source(source);
-  std::vector<std::size_t> kinked, smooth_nodes;
-  FairedRuns cache;
-  out = fair_planned(source, plan, sampled_source, settings, cache, kinked);
-  // A corner whose faired pieces meet by less than the kink limit was noise the fairing
-  // straightened (or a scan's few degrees at a line): made smooth, it becomes G2 instead of
-  // a kink. Kept only when the contour still fairs.
-  for (int pass = 0; pass < kink_passes && out.faired && !kinked.empty(); ++pass) {
-    smooth_nodes.insert(smooth_nodes.end(), kinked.begin(), kinked.end());
-    std::vector<std::size_t> still;
-    ContourFairing again = fair_planned(source, plan_contour(source, settings.corner_angle_deg, smooth_nodes),
-                                        sampled_source, settings, cache, still);
-    if (!again.faired) break;
-    out = std::move(again);
-    kinked = std::move(still);
-  }
+  // Handwriting's tight turns are corners (fair/tight_turn.hpp), unless the contour then fails.
+  const TightTurns turns = settings.profile == FairProfile::handwriting
+                               ? find_tight_turns(source, {settings.corner_angle_deg, 160.0, settings.tolerance_units})
+                               : TightTurns{source, {}};
+  out = fair_curve(source, turns, settings);
+  if (!out.faired && !turns.turns.empty()) out = fair_curve(source, {source, {}}, settings);
   if (out.faired) fillet_kinks(out, source, settings);
   // The last word on direction: a faired contour that winds the other way would fill (or
   // cut) the opposite of what the source does.
