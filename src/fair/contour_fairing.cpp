@@ -5,6 +5,7 @@
 #include <deque>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <span>
 
 #include "fair/contour_plan.hpp"
@@ -356,15 +357,15 @@ void fillet_kinks(ContourFairing& out, const Contour& source, const FairSettings
   out.deviation = std::max(out.deviation, d);
 }
 
-// The contour faired on `curve` (the source, or the same curve split at its tight turns): planned,
-// its runs faired, and corners that came out as kinks made smooth.
-ContourFairing fair_curve(const Contour& source, const TightTurns& curve_and_turns, const FairSettings& settings) {
+// The contour faired on `curve` (the source, or the same curve split at its tight `turns`):
+// planned, its runs faired, and corners that came out as kinks made smooth.
+ContourFairing fair_curve(const Contour& source, const Contour& curve, std::span<const TightTurn> turns,
+                          const FairSettings& settings) {
   ContourFairing out;
   out.contour = source;
-  const Contour& curve = curve_and_turns.contour;
   const auto plan_with = [&](std::span<const std::size_t> smooth_nodes) {
     ContourPlan p = plan_contour(curve, settings.corner_angle_deg, smooth_nodes);
-    aim_runs_at_tight_turns(p, curve_and_turns.turns);
+    aim_runs_at_tight_turns(p, turns);
     return p;
   };
   const ContourPlan plan = plan_with({});
@@ -422,11 +423,14 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& requested
     settings.tolerance_units = std::min(settings.tolerance_units, 0.5 * thick);
   }
   // Handwriting's tight turns are corners (fair/tight_turn.hpp), unless the contour then fails.
-  const TightTurns turns = settings.profile == FairProfile::handwriting
-                               ? find_tight_turns(source, {settings.corner_angle_deg, 160.0, settings.tolerance_units})
-                               : TightTurns{source, {}};
-  out = fair_curve(source, turns, settings);
-  if (!out.faired && !turns.turns.empty()) out = fair_curve(source, {source, {}}, settings);
+  std::optional<TightTurns> turned;
+  if (settings.profile == FairProfile::handwriting) {
+    TightTurnLimits limits;
+    limits.min_turn_deg = settings.corner_angle_deg, limits.deviation_units = settings.tolerance_units;
+    if (TightTurns t = find_tight_turns(source, limits); !t.turns.empty()) turned = std::move(t);
+  }
+  if (turned) out = fair_curve(source, turned->contour, turned->turns, settings);
+  if (!turned || !out.faired) out = fair_curve(source, source, {}, settings);
   if (out.faired) fillet_kinks(out, source, settings);
   // The last word on direction: a faired contour that winds the other way would fill (or
   // cut) the opposite of what the source does.

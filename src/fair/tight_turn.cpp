@@ -52,7 +52,8 @@ double sharpest_t(const Cubic& c, double t) {
   const double g = 0.5 * (std::sqrt(5.0) - 1.0);
   for (int k = 0; k < 40; ++k) {
     const double a = hi - g * (hi - lo), b = lo + g * (hi - lo);
-    (sharpness(a) < sharpness(b) ? lo : hi) = sharpness(a) < sharpness(b) ? a : b;
+    if (sharpness(a) < sharpness(b)) lo = a;
+    else hi = b;
   }
   return 0.5 * (lo + hi);
 }

@@ -85,12 +85,14 @@ TEST(TightTurn, AWideBendAStrokeEndAndAGentleTurnStayCurves) {
 }
 
 TEST(TightTurn, ACornerIsNotATightTurn) {
-  // The bend drawn as a corner already: nothing to find.
+  // The bend drawn as a corner already: the sides' ends (and their handles with them) moved
+  // to the origin, the bend gone. Nothing to find.
   Contour c = reversal(3.0, 120.0 * deg);
-  const Vec2 a = std::get<Cubic>(c.segments[0]).p[3];
-  std::get<Cubic>(c.segments[0]).p[3] = {0.0, 0.0}, std::get<Cubic>(c.segments[0]).p[2] += Vec2{0.0, 0.0} - a;
+  Cubic& side_a = std::get<Cubic>(c.segments[0]);
+  Cubic& side_b = std::get<Cubic>(c.segments[2]);
+  side_a.p[2] -= side_a.p[3], side_a.p[3] = {0.0, 0.0};
+  side_b.p[1] -= side_b.p[0], side_b.p[0] = {0.0, 0.0};
   c.segments.erase(c.segments.begin() + 1), c.nodes.pop_back();
-  std::get<Cubic>(c.segments[1]).p[1] -= std::get<Cubic>(c.segments[1]).p[0], std::get<Cubic>(c.segments[1]).p[0] = {0.0, 0.0};
   EXPECT_TRUE(find_tight_turns(c, limits).turns.empty());
 }
 
