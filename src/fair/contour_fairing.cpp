@@ -171,31 +171,40 @@ Attempt fair_with_budgets(const ContourPlan& plan, const FairSettings& settings,
   bool previous_ends_smooth = false;  // how the last piece ended: the join to the next piece
   std::vector<bool> smooth_before(count, false);  // the join in front of each piece
   std::vector<Vec2> starts(count);                // where each piece starts once faired
+  const auto append_line = [&](std::size_t i, Vec2 from, Vec2 to, bool smooth_start) {
+    OutlineNode start, end;
+    start.point = from, end.point = to;
+    start.smooth = smooth_before[i] = smooth_start;
+    starts[i] = from;
+    a.pieces.push_back(line_piece(from, to, smooth_start));
+    assembler.append({start, end}, smooth_start);
+    previous_ends_smooth = false;
+  };
   for (std::size_t i = 0; i < count; ++i) {
     if (const Line* line = std::get_if<Line>(&plan.pieces[i])) {
-      OutlineNode start, end;
-      start.point = line->start(), end.point = line->end();
+      Vec2 start = line->start(), end = line->end();
       const bool wraps = plan.closed && count > 1;
       if (i > 0 || wraps)
-        if (const FairedRun* before = g3_run_at((i + count - 1) % count)) start.point = faired_end(*before).point;
+        if (const FairedRun* before = g3_run_at((i + count - 1) % count)) start = faired_end(*before).point;
       if (i + 1 < count || wraps)
-        if (const FairedRun* after = g3_run_at((i + 1) % count)) end.point = faired_start(*after).point;
-      start.smooth = smooth_before[i] = previous_ends_smooth;
-      starts[i] = start.point;
-      a.pieces.push_back(line_piece(start.point, end.point, previous_ends_smooth));
-      assembler.append({start, end}, previous_ends_smooth);
-      previous_ends_smooth = false;
+        if (const FairedRun* after = g3_run_at((i + 1) % count)) end = faired_start(*after).point;
+      append_line(i, start, end, previous_ends_smooth);
       continue;
     }
     const SmoothRun& run = std::get<SmoothRun>(plan.pieces[i]);
     const FairedRun& faired = *runs[i];
+    if (faired.chains.empty()) {
+      // Too short for a chain (a few units between two turns): its chord, a corner at each end.
+      append_line(i, run.cubics.front().p[0], run.cubics.back().p[3], false);
+      continue;
+    }
     a.guide_stretches += faired.guide_stretches;
     if (faired.g3()) ++a.g3_runs, a.g2_line_joins += faired.g2_line_joins;
     else if (!faired.g3_shortfall.empty()) a.g3_shortfalls.push_back(faired.g3_shortfall);
     // A closed run's chains meet at inflections, G1 there like every join inside a run.
     const bool start_smooth = run.closed || run.start.kind == RunEndKind::line;
     smooth_before[i] = start_smooth || previous_ends_smooth;
-    starts[i] = faired.chains.empty() ? run.cubics.front().p[0] : faired_start(faired).point;
+    starts[i] = faired_start(faired).point;
     for (std::size_t k = 0; k < faired.chains.size(); ++k) {
       const FairedChain& chain = faired.chains[k];
       a.mismatch = std::max(a.mismatch, chain.max_mismatch_relative);

@@ -279,6 +279,30 @@ TEST(ContourFairing, CurvesMeetTheirLinesWithZeroCurvatureBeforeRounding) {
   }
 }
 
+// A handwriting run shorter than a quarter of the feature window (here 5 units between two
+// corners, as a pen's zigzag between two tight turns leaves) has no chain to fair. It becomes
+// its chord, a corner at each end: the curve after it once kept the smooth flag of a join
+// that turned by 55° (dkg's u; 50° here), and rounding, keeping that node's handles
+// collinear, folded the cubic into a loop.
+TEST(ContourFairing, ARunTooShortToFairIsItsChordBetweenCorners) {
+  Contour c;
+  c.segments = {Line{{{0, 0}, {100, 0}}}, Cubic{{{100, 0}, {100.5, 2}, {102, 4}, {105, 5}}},
+                Cubic{{{105, 5}, {105, 60}, {60, 100}, {0, 100}}}, Line{{{0, 100}, {0, 0}}}};
+  c.nodes.assign(4, NodeFlags{});
+  FairOptions fo;
+  fo.profile = FairProfile::handwriting;
+  fo.rounding = Rounding::none;
+  const ContourFairing r = fair_contour(c, resolve_settings(fo, 1000.0));
+  ASSERT_TRUE(r.faired) << r.reason;
+  bool chord = false;
+  for (const Segment& s : r.contour.segments)
+    chord = chord || (is_line(s) && start_point(s) == Vec2{100, 0} && end_point(s) == Vec2{105, 5});
+  EXPECT_TRUE(chord);
+  for (const Join& j : joins_of(r.contour))
+    if (r.contour.nodes[j.node].smooth.value_or(false))
+      EXPECT_EQ(j.kind, JoinKind::smooth) << "node " << j.node << " turns " << j.angle_deg << "°";
+}
+
 // Inconsolata is drawn in fixed point (1/1024 unit): by default its glyphs keep fractions,
 // and the small terminals the integer grid cannot make G2 (3- to 8-unit cubics on a 1,000-unit
 // em) stay G2. DejaVu Sans, drawn on whole units, is still rounded.
