@@ -208,7 +208,9 @@ Attempt fair_with_budgets(const ContourPlan& plan, const FairSettings& settings,
     for (std::size_t k = 0; k < faired.chains.size(); ++k) {
       const FairedChain& chain = faired.chains[k];
       a.mismatch = std::max(a.mismatch, chain.max_mismatch_relative);
-      ChainCubics cubics = write_chain_as_cubics(chain, budgets.cubic, settings.flat_curvature);
+      const ChainEnds ends{k == 0 && !run.closed && run.start.kind == RunEndKind::corner,
+                           k + 1 == faired.chains.size() && !run.closed && run.end.kind == RunEndKind::corner};
+      ChainCubics cubics = write_chain_as_cubics(chain, budgets.cubic, settings.flat_curvature, ends);
       a.g1_nodes += cubics.g1_fallbacks;
       const bool join_smooth = k > 0 || start_smooth || previous_ends_smooth;
       record_chain(chain, chain.closed || join_smooth, a.pieces);

@@ -1,12 +1,14 @@
 #include "fair/cubic_writeback.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <limits>
 #include <numbers>
 #include <span>
 
+#include "fair/cubic_change.hpp"
 #include "geom/curvature.hpp"
 #include "geom/g2_hermite.hpp"
 #include "geom/polyline_distance.hpp"
@@ -25,6 +27,7 @@ constexpr double no_cubic = 1e300;    // the deviation of a span no G2 Hermite c
 constexpr double far_off = 4.0;       // a cubic this many budgets off: a longer one from its start is no nearer
 constexpr double fold_margin = 0.5 * std::numbers::pi;  // a cubic may turn beyond its span; a cusp turns π more
 constexpr double edge_margin = 0.05;  // no grid node within this share of a span's turning or length of its ends
+constexpr double snap_turn = 10.0 * std::numbers::pi / 180.0;  // a corner's tangent may turn onto a nearby extremum's axis
 
 // Short primitive integer directions, |d|² ≤ `longest`: where a span must be cut, the cut goes
 // where the tangent runs along one of them, so rounding keeps the node's handles exactly
@@ -118,19 +121,17 @@ class ChainPath {
   const PathPiece& piece(std::size_t i) const { return pieces_[i]; }
 
   /// At a junction both sides agree: point and tangent (G1), curvature by with_mean_curvature.
+  /// An open chain's end whose tangent was turned (turn_end) has that tangent.
   LacPoint at(double sigma) const {
-    if (sigma > total_) sigma -= total_;  // a closed chain, past its seam
-    std::size_t i = static_cast<std::size_t>(std::upper_bound(starts_.begin(), starts_.end(), sigma) - starts_.begin());
-    i = i == 0 ? 0 : i - 1;
-    const PathPiece& piece = pieces_[i];
-    const double local = sigma - starts_[i];
-    // Within rounding of a piece's end is its end: σ sums the lengths before it, and near an
-    // inflection end κ falls to 0 so steeply that 1e-13 short of it left κ·UPM at 0.19
-    // (Cantarell's U, where its bowl meets the stem).
-    if (local >= piece.length * (1.0 - 1e-12))
-      return with_mean_curvature(piece.at(piece.length), i + 1 < n_ ? i + 1 : (closed_ ? 0 : n_), true);
-    if (local <= 0.0) return with_mean_curvature(piece.at(0.0), i == 0 ? (closed_ ? n_ - 1 : n_) : i - 1, false);
-    return piece.at(local);
+    LacPoint p = along(sigma);
+    const std::optional<Vec2>& turned = sigma <= 0.0 ? start_tangent_ : end_tangent_;
+    if (!closed_ && (sigma <= 0.0 || sigma >= total_) && turned) p.tangent = *turned;
+    return p;
+  }
+
+  /// Turns an open chain's tangent at its start or end (none: back to its own).
+  void turn_end(SegmentEnd end, std::optional<Vec2> tangent) {
+    (end == SegmentEnd::start ? start_tangent_ : end_tangent_) = tangent;
   }
 
   // At a junction whose solve fell short of G2, both sides get the mean curvature, so the
@@ -167,12 +168,28 @@ class ChainPath {
   }
 
  private:
+  LacPoint along(double sigma) const {
+    if (sigma > total_) sigma -= total_;  // a closed chain, past its seam
+    std::size_t i = static_cast<std::size_t>(std::upper_bound(starts_.begin(), starts_.end(), sigma) - starts_.begin());
+    i = i == 0 ? 0 : i - 1;
+    const PathPiece& piece = pieces_[i];
+    const double local = sigma - starts_[i];
+    // Within rounding of a piece's end is its end: σ sums the lengths before it, and near an
+    // inflection end κ falls to 0 so steeply that 1e-13 short of it left κ·UPM at 0.19
+    // (Cantarell's U, where its bowl meets the stem).
+    if (local >= piece.length * (1.0 - 1e-12))
+      return with_mean_curvature(piece.at(piece.length), i + 1 < n_ ? i + 1 : (closed_ ? 0 : n_), true);
+    if (local <= 0.0) return with_mean_curvature(piece.at(0.0), i == 0 ? (closed_ ? n_ - 1 : n_) : i - 1, false);
+    return piece.at(local);
+  }
+
   bool closed_;
   std::vector<PathPiece> pieces_;
   std::size_t n_ = 0;
   std::vector<double> starts_;
   std::vector<std::pair<double, Vec2>> table_;
   double total_ = 0.0;
+  std::optional<Vec2> start_tangent_, end_tangent_;
 };
 
 struct RequiredNode {
@@ -418,11 +435,52 @@ class SpanWriter {
   std::vector<Vec2> fine_ = grid_directions(5), all_ = grid_directions(13);
 };
 
+// An open chain's extremum next to its end at a corner, when turning the corner's tangent onto
+// the extremum's axis (by at most snap_turn) writes the two spans on either side of the
+// extremum as no more cubics, none with the extremum inside: the corner becomes the extremum
+// (its handle along the axis) and the extremum's node goes. Corner and extremum a few units apart left a cubic so short that
+// whole grid steps could only make it straight, against the curvature beyond it.
+void snap_extremum_to_corner(ChainPath& path, double budget, double flat_curvature, std::vector<RequiredNode>& nodes,
+                             SegmentEnd end, bool corner) {
+  const std::size_t n = nodes.size();
+  if (!corner || n < 3) return;
+  ChainCubics trials;  // what the trial fits count is not the chain's
+  SpanWriter writer(path, budget, flat_curvature, trials);
+  const bool start = end == SegmentEnd::start;
+  const std::size_t e = start ? 1 : n - 2, far = start ? 2 : n - 3;
+  const std::size_t at = start ? 0 : n - 1;
+  if (!nodes[e].grid_step) return;
+  const Vec2 axis = *nodes[e].grid_step;
+  if (std::abs(turning_angle(path.at(nodes[at].sigma).tangent, axis)) > snap_turn) return;
+  const auto cubics = [&](std::span<const RequiredNode> span) {
+    std::vector<Piece> pieces;
+    for (std::size_t k = 0; k + 1 < span.size(); ++k)
+      writer.fit(span[k].sigma, span[k + 1].sigma, span[k].grid_step, span[k + 1].grid_step, 0, pieces);
+    return pieces;
+  };
+  const std::array<RequiredNode, 3> kept = start ? std::array{nodes[at], nodes[e], nodes[far]}
+                                                 : std::array{nodes[far], nodes[e], nodes[at]};
+  const std::size_t before = cubics(kept).size();
+  path.turn_end(end, axis / norm(axis));
+  RequiredNode corner_node = nodes[at];
+  corner_node.grid_step = axis;
+  const std::array<RequiredNode, 2> snapped = start ? std::array{corner_node, nodes[far]} : std::array{nodes[far], corner_node};
+  const std::vector<Piece> after = cubics(snapped);
+  // Not where the extremum comes back inside a cubic (the path between turns away and back).
+  const bool inside = std::any_of(after.begin(), after.end(), [](const Piece& p) { return inner_axis_extrema(p.cubic) > 0; });
+  if (after.size() > before || inside) {
+    path.turn_end(end, std::nullopt);
+    return;
+  }
+  nodes[at] = corner_node;
+  nodes.erase(nodes.begin() + static_cast<std::ptrdiff_t>(e));
+}
+
 }  // namespace
 
-ChainCubics write_chain_as_cubics(const FairedChain& chain, double budget, double flat_curvature) {
+ChainCubics write_chain_as_cubics(const FairedChain& chain, double budget, double flat_curvature, ChainEnds ends) {
   ChainCubics out;
-  const ChainPath path(chain);
+  ChainPath path(chain);
   const double total = path.total();
   std::vector<RequiredNode> nodes;
   if (!chain.closed) nodes.push_back({0.0, std::nullopt});
@@ -441,6 +499,10 @@ ChainCubics write_chain_as_cubics(const FairedChain& chain, double budget, doubl
   if (chain.closed && distinct.size() > 1 && distinct.front().sigma + total - distinct.back().sigma < 0.5) distinct.pop_back();
   if (chain.closed && distinct.empty()) distinct.push_back({0.0, std::nullopt});
 
+  if (!chain.closed) {
+    snap_extremum_to_corner(path, budget, flat_curvature, distinct, SegmentEnd::start, ends.start_corner);
+    snap_extremum_to_corner(path, budget, flat_curvature, distinct, SegmentEnd::end, ends.end_corner);
+  }
   SpanWriter writer(path, budget, flat_curvature, out);
   std::vector<Piece> pieces;
   const std::size_t n = distinct.size(), spans = chain.closed ? n : n - 1;

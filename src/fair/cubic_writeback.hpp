@@ -19,8 +19,17 @@ struct ChainCubics {
   int g1_fallbacks = 0;            ///< spans where no G2 Hermite cubic existed within the depth limit
 };
 
+/// Which ends of an open chain are corners, whose tangent the writeback may turn a little: an
+/// extremum a few units from a corner (a stroke's end a degree off the vertical) would leave
+/// a cubic too short for the grid to set its curvature, so the corner's tangent is turned onto
+/// the axis instead and the extremum is the corner (where that takes no more cubics).
+struct ChainEnds {
+  bool start_corner = false, end_corner = false;
+};
+
 /// `flat_curvature`: below it a node's curvature counts as zero (a line join), not as a
 /// curvature the grid must set finely.
-ChainCubics write_chain_as_cubics(const FairedChain& chain, double budget_units, double flat_curvature);
+ChainCubics write_chain_as_cubics(const FairedChain& chain, double budget_units, double flat_curvature,
+                                  ChainEnds ends = {});
 
 }  // namespace gf

@@ -1,0 +1,52 @@
+// The cubic writeback of a faired chain: an extremum a few units from a corner.
+#include "fair/cubic_writeback.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "aesthetic/segment_fit.hpp"
+
+namespace gf {
+namespace {
+
+// A chain leaving a corner 2° right of the vertical and turning left by 60°: its vertical
+// extremum lies about 10 units from the corner.
+FairedChain stroke_leaving_a_corner() {
+  const double lean = 2.0 * std::numbers::pi / 180.0, turn = 60.0 * std::numbers::pi / 180.0;
+  const Vec2 p0{100, 0}, p1 = p0 + Vec2{std::sin(lean), std::cos(lean)} * 100.0;
+  const Vec2 p2 = p1 + Vec2{std::sin(lean - turn), std::cos(lean - turn)} * 100.0;
+  const SegmentFit fit = fit_three_point(p0, p1, p2, 1.0);
+  FairedChain chain;
+  if (fit.ok()) chain.segments.push_back(*fit.segment);
+  return chain;
+}
+
+TEST(CubicWriteback, AnExtremumNextToACornerIsTheCorner) {
+  const FairedChain chain = stroke_leaving_a_corner();
+  ASSERT_EQ(chain.segments.size(), 1u);
+  const double budget = 2.0, flat = 5e-4;
+  // As a smooth end (or a corner left alone): a node at the extremum, a few units up.
+  const ChainCubics kept = write_chain_as_cubics(chain, budget, flat);
+  ASSERT_GE(kept.nodes.size(), 3u);
+  EXPECT_LT(distance(kept.nodes[1].point, kept.nodes[0].point), 20.0);
+  ASSERT_TRUE(kept.nodes[1].grid_step);
+  EXPECT_EQ(*kept.nodes[1].grid_step, (Vec2{0, 1}));
+  // At a corner: the corner's tangent turns onto the vertical and the extremum's node goes.
+  const ChainCubics snapped = write_chain_as_cubics(chain, budget, flat, {.start_corner = true});
+  ASSERT_GE(snapped.nodes.size(), 2u);
+  EXPECT_LT(snapped.nodes.size(), kept.nodes.size());
+  const OutlineNode& corner = snapped.nodes.front();
+  EXPECT_EQ(corner.point, kept.nodes.front().point);
+  ASSERT_TRUE(corner.out_handle && corner.grid_step);
+  EXPECT_NEAR(corner.out_handle->x, corner.point.x, 1e-9);
+  EXPECT_GT(corner.out_handle->y, corner.point.y);
+  EXPECT_EQ(*corner.grid_step, (Vec2{0, 1}));
+  for (std::size_t k = 1; k < snapped.nodes.size(); ++k) EXPECT_GT(distance(snapped.nodes[k].point, corner.point), 20.0);
+  // The end of the chain is no corner: its node stays where the chain ends.
+  EXPECT_EQ(snapped.nodes.back().point, kept.nodes.back().point);
+}
+
+}  // namespace
+}  // namespace gf
