@@ -28,6 +28,7 @@ constexpr double far_off = 4.0;       // a cubic this many budgets off: a longer
 constexpr double fold_margin = 0.5 * std::numbers::pi;  // a cubic may turn beyond its span; a cusp turns π more
 constexpr double edge_margin = 0.05;  // no grid node within this share of a span's turning or length of its ends
 constexpr double snap_turn = 10.0 * std::numbers::pi / 180.0;  // a corner's tangent may turn onto a nearby extremum's axis
+constexpr double snap_reach = 64.0;   // units along the chain: farther, the cubic between is long enough for the grid
 
 // Short primitive integer directions, |d|² ≤ `longest`: where a span must be cut, the cut goes
 // where the tangent runs along one of them, so rounding keeps the node's handles exactly
@@ -449,7 +450,7 @@ void snap_extremum_to_corner(ChainPath& path, double budget, double flat_curvatu
   const bool start = end == SegmentEnd::start;
   const std::size_t e = start ? 1 : n - 2, far = start ? 2 : n - 3;
   const std::size_t at = start ? 0 : n - 1;
-  if (!nodes[e].grid_step) return;
+  if (!nodes[e].grid_step || std::abs(nodes[e].sigma - nodes[at].sigma) > snap_reach) return;
   const Vec2 axis = *nodes[e].grid_step;
   if (std::abs(turning_angle(path.at(nodes[at].sigma).tangent, axis)) > snap_turn) return;
   const auto cubics = [&](std::span<const RequiredNode> span) {
