@@ -439,8 +439,9 @@ class SpanWriter {
 // An open chain's extremum next to its end at a corner, when turning the corner's tangent onto
 // the extremum's axis (by at most snap_turn) writes the two spans on either side of the
 // extremum as no more cubics, none with the extremum inside: the corner becomes the extremum
-// (its handle along the axis) and the extremum's node goes. Corner and extremum a few units apart left a cubic so short that
-// whole grid steps could only make it straight, against the curvature beyond it.
+// (its handle along the axis) and the extremum's node goes. Corner and extremum a few units
+// apart left a cubic so short that whole grid steps could only make it straight, against the
+// curvature beyond it.
 void snap_extremum_to_corner(ChainPath& path, double budget, double flat_curvature, std::vector<RequiredNode>& nodes,
                              SegmentEnd end, bool corner) {
   const std::size_t n = nodes.size();
