@@ -92,6 +92,8 @@ class NodeAssembler {
       joint.smooth = smooth_join;
       if (piece.front().grid_step) joint.grid_step = piece.front().grid_step;
       piece.erase(piece.begin());
+    } else {
+      piece.front().smooth = false;  // after a gap (or first): a corner until a join says otherwise
     }
     for (OutlineNode& n : piece) nodes_.push_back(std::move(n));
   }
