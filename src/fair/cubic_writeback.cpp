@@ -436,6 +436,19 @@ class SpanWriter {
   std::vector<Vec2> fine_ = grid_directions(5), all_ = grid_directions(13);
 };
 
+// The cubics of the spans between consecutive required nodes, in order (a closed chain's last
+// span runs on past its seam, `total`, to the first node).
+std::vector<Piece> write_spans(SpanWriter& writer, std::span<const RequiredNode> nodes, bool closed, double total) {
+  std::vector<Piece> pieces;
+  const std::size_t n = nodes.size(), spans = closed ? n : n - 1;
+  for (std::size_t i = 0; i < spans; ++i) {
+    const RequiredNode& next = nodes[(i + 1) % n];
+    const double b = i + 1 < n ? next.sigma : next.sigma + total;
+    writer.fit(nodes[i].sigma, b, nodes[i].grid_step, next.grid_step, 0, pieces);
+  }
+  return pieces;
+}
+
 // An open chain's extremum next to its end at a corner, when turning the corner's tangent onto
 // the extremum's axis (by at most snap_turn) writes the two spans on either side of the
 // extremum as no more cubics, none with the extremum inside: the corner becomes the extremum
@@ -447,27 +460,21 @@ void snap_extremum_to_corner(ChainPath& path, double budget, double flat_curvatu
   const std::size_t n = nodes.size();
   if (!corner || n < 3) return;
   ChainCubics trials;  // what the trial fits count is not the chain's
-  SpanWriter writer(path, budget, flat_curvature, trials);
+  SpanWriter writer(path, budget, flat_curvature, trials);  // it reads the path as turned below
   const bool start = end == SegmentEnd::start;
   const std::size_t e = start ? 1 : n - 2, far = start ? 2 : n - 3;
   const std::size_t at = start ? 0 : n - 1;
   if (!nodes[e].grid_step || std::abs(nodes[e].sigma - nodes[at].sigma) > snap_reach) return;
   const Vec2 axis = *nodes[e].grid_step;
   if (std::abs(turning_angle(path.at(nodes[at].sigma).tangent, axis)) > snap_turn) return;
-  const auto cubics = [&](std::span<const RequiredNode> span) {
-    std::vector<Piece> pieces;
-    for (std::size_t k = 0; k + 1 < span.size(); ++k)
-      writer.fit(span[k].sigma, span[k + 1].sigma, span[k].grid_step, span[k + 1].grid_step, 0, pieces);
-    return pieces;
-  };
   const std::array<RequiredNode, 3> kept = start ? std::array{nodes[at], nodes[e], nodes[far]}
                                                  : std::array{nodes[far], nodes[e], nodes[at]};
-  const std::size_t before = cubics(kept).size();
+  const std::size_t before = write_spans(writer, kept, false, path.total()).size();
   path.turn_end(end, axis / norm(axis));
   RequiredNode corner_node = nodes[at];
   corner_node.grid_step = axis;
   const std::array<RequiredNode, 2> snapped = start ? std::array{corner_node, nodes[far]} : std::array{nodes[far], corner_node};
-  const std::vector<Piece> after = cubics(snapped);
+  const std::vector<Piece> after = write_spans(writer, snapped, false, path.total());
   // Not where the extremum comes back inside a cubic (the path between turns away and back).
   const bool inside = std::any_of(after.begin(), after.end(), [](const Piece& p) { return inner_axis_extrema(p.cubic) > 0; });
   if (after.size() > before || inside) {
@@ -506,13 +513,7 @@ ChainCubics write_chain_as_cubics(const FairedChain& chain, double budget, doubl
     snap_extremum_to_corner(path, budget, flat_curvature, distinct, SegmentEnd::end, ends.end_corner);
   }
   SpanWriter writer(path, budget, flat_curvature, out);
-  std::vector<Piece> pieces;
-  const std::size_t n = distinct.size(), spans = chain.closed ? n : n - 1;
-  for (std::size_t i = 0; i < spans; ++i) {
-    const RequiredNode& next = distinct[(i + 1) % n];
-    const double b = i + 1 < n ? next.sigma : next.sigma + total;
-    writer.fit(distinct[i].sigma, b, distinct[i].grid_step, next.grid_step, 0, pieces);
-  }
+  const std::vector<Piece> pieces = write_spans(writer, distinct, chain.closed, total);
   // Nodes: the start of every cubic (and an open chain's last end); a node's grid step is the
   // end step of the cubic before it.
   const std::size_t m = pieces.size();
