@@ -5,7 +5,7 @@ fontTools (no code shared with glyphfair).
 
 The rule puts an on-curve node at every horizontal and vertical extremum, at every corner and
 at every inflection; a line needs a node at each end. This counts, per glyph, the distinct
-places (merged within one unit) the source has of the first, second and fourth kind:
+places (merged within one unit) of every kind but the inflections:
 
   extremum   a horizontal or vertical tangent inside a segment (where the coordinate's
              derivative changes sign), or at a node where a curve's tangent is exactly
@@ -43,6 +43,7 @@ def axis_parallel_at_node(seg, at_start):
 
 
 def required_places(contours):
+    """How many distinct places of the contours (closed, as glyph_contours gives them) need a node."""
     places = []
     for segs in contours:
         for i, seg in enumerate(segs):
