@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 
 #include "geom/arc_length.hpp"
 #include "geom/critical_points.hpp"
@@ -133,7 +132,7 @@ struct GlyphChecker {
     }
     if (is_line(s)) {
       const Vec2 d = b - a;
-      const double from_h = std::atan2(std::abs(d.y), std::abs(d.x)) * 180.0 / std::numbers::pi;
+      const double from_h = degrees(std::atan2(std::abs(d.y), std::abs(d.x)));
       const double from_v = 90.0 - from_h;
       if (from_h > 0.0 && from_h <= profile.semi_hv_max_deg) {
         Finding& f = add("semi-horizontal", ci, i, a);

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <deque>
 #include <limits>
-#include <numbers>
 #include <optional>
 #include <span>
 
@@ -272,7 +271,7 @@ std::vector<std::size_t> kinked_corners(const Contour& faired, std::span<const C
   std::vector<std::size_t> out;
   const std::size_t n = faired.segments.size();
   if (n < 2) return out;
-  const double kink = kink_limit_deg * std::numbers::pi / 180.0;
+  const double kink = radians(kink_limit_deg);
   for (const CornerJoin& c : corners) {
     std::size_t k = 0;
     for (std::size_t i = 1; i < n; ++i)

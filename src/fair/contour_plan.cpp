@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "geom/curvature.hpp"
 
@@ -77,8 +76,8 @@ ContourPlan plan_contour(const Contour& source, double corner_angle_deg, std::sp
   plan.closed = contour.closed;
   const std::size_t n = pieces.size();
   if (n == 0) return plan;
-  const double corner = corner_angle_deg * std::numbers::pi / 180.0;
-  const double tangential_line = kink_limit_deg * std::numbers::pi / 180.0;
+  const double corner = radians(corner_angle_deg);
+  const double tangential_line = radians(kink_limit_deg);
 
   // The kind of the join in front of piece i (between piece i−1 and i); nullopt when smooth
   // between two curves.

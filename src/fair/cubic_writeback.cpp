@@ -27,7 +27,7 @@ constexpr double no_cubic = 1e300;    // the deviation of a span no G2 Hermite c
 constexpr double far_off = 4.0;       // a cubic this many budgets off: a longer one from its start is no nearer
 constexpr double fold_margin = 0.5 * std::numbers::pi;  // a cubic may turn beyond its span; a cusp turns π more
 constexpr double edge_margin = 0.05;  // no grid node within this share of a span's turning or length of its ends
-constexpr double snap_turn = 10.0 * std::numbers::pi / 180.0;  // a corner's tangent may turn onto a nearby extremum's axis
+constexpr double snap_turn = radians(10.0);  // a corner's tangent may turn onto a nearby extremum's axis
 constexpr double snap_reach = 64.0;   // units along the chain: farther, the cubic between is long enough for the grid
 
 // Short primitive integer directions, |d|² ≤ `longest`: where a span must be cut, the cut goes

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "fair/contour_plan.hpp"
 #include "fair/line_rounding.hpp"
@@ -67,7 +66,7 @@ Choice collinear_choice(Vec2 point, std::optional<Vec2> in, std::optional<Vec2> 
   const int reach = std::clamp(static_cast<int>(shortest), 1, 64);
   const bool steep = std::abs(dir.y) > std::abs(dir.x);
   const Vec2 base = nearest_grid_point(point);
-  const double most_turn = kink_limit_deg * std::numbers::pi / 180.0;
+  const double most_turn = radians(kink_limit_deg);
   Choice best;
   bool best_keeps = false;
   for (int major = 1; major <= reach; ++major) {

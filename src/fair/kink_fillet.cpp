@@ -5,6 +5,7 @@
 #include <optional>
 #include <vector>
 
+#include "fair/contour_plan.hpp"
 #include "fair/outline_nodes.hpp"
 #include "geom/curvature.hpp"
 #include "geom/join.hpp"
@@ -69,7 +70,7 @@ int way(const Join& j) { return (j.angle_deg > 0.0) - (j.angle_deg < 0.0); }
 
 // Whether a join is a kink a fillet may take: under the kink limit (a join the source flags
 // smooth is a kink at any angle, but a fillet cannot pass for it past the limit).
-bool small_kink(const Join& j) { return j.kind == JoinKind::kink && std::abs(j.angle_deg) < JoinThresholds{}.kink_max_deg; }
+bool small_kink(const Join& j) { return j.kind == JoinKind::kink && std::abs(j.angle_deg) < kink_limit_deg; }
 
 // The way (+1 left, −1 right, 0 none) a contour bends next to node k, going back (step −1)
 // or on (+1) from it along joins under the kink limit: the kinks' turns and the curves'
@@ -88,7 +89,7 @@ int neighbour_bend(const Contour& contour, const std::vector<std::optional<Join>
     }
     const std::size_t node = step > 0 ? (k + walked) % n : seg;
     const std::optional<Join>& j = node < join_at.size() ? join_at[node] : std::nullopt;
-    if (!j || j->kind == JoinKind::degenerate || std::abs(j->angle_deg) >= JoinThresholds{}.kink_max_deg) return 0;
+    if (!j || j->kind == JoinKind::degenerate || std::abs(j->angle_deg) >= kink_limit_deg) return 0;
     if (j->kind != JoinKind::smooth) return way(*j);
   }
   return 0;

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <numbers>
 #include <optional>
 
 #include "geom/curvature.hpp"
@@ -64,15 +63,12 @@ struct Found {
   Vec2 tangent_in, tangent_out;
 };
 
-}  // namespace
-
-TightTurns find_tight_turns(const Contour& source, const TightTurnLimits& limits) {
-  TightTurns out{source, {}};
-  const Contour c = with_cubics(source);
+// The tight turns of `c` (all cubics and lines), sharpest first.
+std::vector<Found> turns_of(const Contour& c, const TightTurnLimits& limits) {
   const std::vector<Sample> s = samples_of(c);
   const std::size_t n = s.size();
-  if (n < 3 || limits.deviation_units <= 0.0) return out;
-  const double deg = std::numbers::pi / 180.0;
+  std::vector<Found> found;
+  if (n < 3 || limits.deviation_units <= 0.0) return found;
   const auto next = [&](std::size_t j) { return (j + 1) % n; };
   const auto prev = [&](std::size_t j) { return (j + n - 1) % n; };
   // The turn from sample j to the next; a join already turning past a corner's worth (or the
@@ -81,7 +77,7 @@ TightTurns find_tight_turns(const Contour& source, const TightTurnLimits& limits
   std::vector<bool> barrier(n);
   for (std::size_t j = 0; j < n; ++j) {
     turn[j] = turning_angle(s[j].tangent, s[next(j)].tangent);
-    barrier[j] = (!c.closed && next(j) == 0) || (s[next(j)].t == 0.0 && std::abs(turn[j]) > limits.min_turn_deg * deg);
+    barrier[j] = (!c.closed && next(j) == 0) || (s[next(j)].t == 0.0 && std::abs(turn[j]) > radians(limits.min_turn_deg));
   }
   // A turn into a corner (or an open end) ends there: no room for a corner of its own.
   const auto room = [&](std::size_t j, bool forward) {
@@ -98,7 +94,6 @@ TightTurns find_tight_turns(const Contour& source, const TightTurnLimits& limits
     if (std::abs(s[j].curvature) * limits.deviation_units >= 1.0) peaks.push_back(j);
   std::sort(peaks.begin(), peaks.end(), [&](auto a, auto b) { return std::abs(s[a].curvature) > std::abs(s[b].curvature); });
   std::vector<bool> used(n, false);
-  std::vector<Found> found;
   for (const std::size_t p : peaks) {
     if (used[p]) continue;
     const double k = s[p].curvature;
@@ -112,7 +107,7 @@ TightTurns find_tight_turns(const Contour& source, const TightTurnLimits& limits
     for (std::size_t j = lo; j != hi; j = next(j)) turned += turn[j], used[j] = true;
     used[hi] = true;
     if (!room(lo, false) || !room(hi, true)) continue;
-    if (turned * k <= 0.0 || std::abs(turned) < limits.min_turn_deg * deg || std::abs(turned) > limits.max_turn_deg * deg)
+    if (turned * k <= 0.0 || std::abs(turned) < radians(limits.min_turn_deg) || std::abs(turned) > radians(limits.max_turn_deg))
       continue;
     const Cubic& cubic = std::get<Cubic>(c.segments[s[p].segment]);
     const double t = sharpest_t(cubic, s[p].t);  // a peak is on a curve: lines have κ = 0
@@ -123,9 +118,13 @@ TightTurns find_tight_turns(const Contour& source, const TightTurnLimits& limits
     for (std::size_t j = p; j != next(hi); j = next(j)) off = std::max(off, std::abs(cross(out_dir, s[j].point - apex)));
     if (off <= limits.deviation_units) found.push_back({s[p].segment, t, in, out_dir});
   }
-  if (found.empty()) return out;
+  return found;
+}
 
-  // Each turn at a node of the source (when its apex is that close to one) or at a cut.
+// `c` split at its turns `found`: each at a node of `c` (when its apex is that close to one,
+// the node made a corner) or at a cut of its cubic, a new corner node.
+TightTurns split_at_turns(const Contour& c, std::span<const Found> found) {
+  TightTurns out;
   const std::size_t segments = c.segments.size();
   std::map<std::size_t, const Found*> at_source_node;
   std::map<std::size_t, std::vector<std::pair<double, const Found*>>> cuts;
@@ -165,6 +164,15 @@ TightTurns find_tight_turns(const Contour& source, const TightTurnLimits& limits
   }
   out.contour = std::move(split);
   return out;
+}
+
+}  // namespace
+
+TightTurns find_tight_turns(const Contour& source, const TightTurnLimits& limits) {
+  const Contour c = with_cubics(source);
+  const std::vector<Found> found = turns_of(c, limits);
+  if (found.empty()) return {source, {}};
+  return split_at_turns(c, found);
 }
 
 void aim_runs_at_tight_turns(ContourPlan& plan, std::span<const TightTurn> turns) {

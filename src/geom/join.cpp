@@ -1,7 +1,6 @@
 #include "geom/join.hpp"
 
 #include <cmath>
-#include <numbers>
 
 #include "geom/curvature.hpp"
 
@@ -26,7 +25,7 @@ Join join_between(const Segment& in, const Segment& out, std::size_t node, const
     j.kind = JoinKind::degenerate;
     return j;
   }
-  j.angle_deg = turning_angle(*tin, *tout) * 180.0 / std::numbers::pi;
+  j.angle_deg = degrees(turning_angle(*tin, *tout));
   const double a = std::abs(j.angle_deg);
   if (a <= thresholds.smooth_max_deg) j.kind = JoinKind::smooth;
   else if (a < thresholds.kink_max_deg || flags.smooth.value_or(false)) j.kind = JoinKind::kink;

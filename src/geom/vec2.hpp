@@ -38,6 +38,10 @@ inline double wrapped_angle(double a) {
   const double r = std::remainder(a, 2.0 * std::numbers::pi);
   return r <= -std::numbers::pi ? r + 2.0 * std::numbers::pi : r;
 }
+/// An angle given in degrees, in radians.
+constexpr double radians(double deg) { return deg * std::numbers::pi / 180.0; }
+/// An angle given in radians, in degrees.
+constexpr double degrees(double rad) { return rad * 180.0 / std::numbers::pi; }
 /// Signed angle in (-pi, pi] that turns direction a into direction b (left positive).
 inline double turning_angle(Vec2 a, Vec2 b) { return std::atan2(cross(a, b), dot(a, b)); }
 

@@ -121,7 +121,7 @@ class PathParser {
     ry = std::abs(ry);
     if (p0 == p) return;
     if (rx == 0.0 || ry == 0.0) return line_to(p);
-    const double phi = rotation_deg * std::numbers::pi / 180.0;
+    const double phi = radians(rotation_deg);
     const double cp = std::cos(phi), sp = std::sin(phi);
     const Vec2 h = (p0 - p) * 0.5;
     const Vec2 q{cp * h.x + sp * h.y, -sp * h.x + cp * h.y};

@@ -5,7 +5,6 @@
 #include <charconv>
 #include <cmath>
 #include <limits>
-#include <numbers>
 
 #include <pugixml.hpp>
 
@@ -53,7 +52,7 @@ Affine parse_transform(std::string_view s, const std::string& where) {
     ++i;
     const auto arg = [&](std::size_t k, double fallback) { return k < args.size() ? args[k] : fallback; };
     Affine t;
-    const double rad = arg(0, 0) * std::numbers::pi / 180.0;
+    const double rad = radians(arg(0, 0));
     if (name == "matrix" && args.size() == 6) t = {args[0], args[1], args[2], args[3], args[4], args[5]};
     else if (name == "translate" && !args.empty()) t = {1, 0, 0, 1, args[0], arg(1, 0)};
     else if (name == "scale" && !args.empty()) t = {args[0], 0, 0, arg(1, args[0]), 0, 0};

@@ -298,9 +298,11 @@ TEST(ContourFairing, ARunTooShortToFairIsItsChordBetweenCorners) {
   for (const Segment& s : r.contour.segments)
     chord = chord || (is_line(s) && start_point(s) == Vec2{100, 0} && end_point(s) == Vec2{105, 5});
   EXPECT_TRUE(chord);
-  for (const Join& j : joins_of(r.contour))
-    if (r.contour.nodes[j.node].smooth.value_or(false))
+  for (const Join& j : joins_of(r.contour)) {
+    if (r.contour.nodes[j.node].smooth.value_or(false)) {
       EXPECT_EQ(j.kind, JoinKind::smooth) << "node " << j.node << " turns " << j.angle_deg << "°";
+    }
+  }
 }
 
 // Inconsolata is drawn in fixed point (1/1024 unit): by default its glyphs keep fractions,
