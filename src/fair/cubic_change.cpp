@@ -31,6 +31,11 @@ int inner_axis_extrema(const Cubic& c) {
   return static_cast<int>(std::count_if(all.begin(), all.end(), [](const AxisExtremum& e) { return e.t > 0.01 && e.t < 0.99; }));
 }
 
+double overreach_length(const Cubic& c) {
+  const double reach = 2.0 * distance(c.p[0], c.p[3]) + 2.0;
+  return std::max({0.0, distance(c.p[0], c.p[1]) - reach, distance(c.p[3], c.p[2]) - reach});
+}
+
 CurvatureShape curvature_shape(const Cubic& c) {
   CurvatureShape shape;
   double previous = 0.0, last_signed = 0.0;

@@ -17,6 +17,11 @@ double moved_distance(const Cubic& a, const Cubic& b, double within);
 /// Horizontal and vertical extrema away from the ends (those within 1 % of t sit on the node).
 int inner_axis_extrema(const Cubic& c);
 
+/// How far (units) the longer handle reaches beyond twice the chord and two units, 0 when
+/// neither does: a short cubic bent back on itself by a long grid step (a fair cubic's handles
+/// stay within its chord unless it turns through more than 180°).
+double overreach_length(const Cubic& c);
+
 /// How κ runs along a cubic, at sixteenths of its parameter: how often its sign changes (κ = 0
 /// has no sign), its total variation, and its largest magnitude.
 struct CurvatureShape {

@@ -99,6 +99,7 @@ struct CubicTraits {
   double moved = 0.0;  ///< from its unrounded self, as moved_distance measures it within the allowance
   CurvatureShape shape;
   int extrema = 0;  ///< horizontal or vertical turns inside
+  double overreach = 0.0;  ///< how far a handle reaches past the chord (overreach_length)
 };
 
 // Every cubic of the outline against its unrounded self. How far each may move to gain G2 is
@@ -132,7 +133,8 @@ class CubicJudge {
  private:
   CubicTraits measure(std::size_t i, const Cubic& c) const {
     return {node_curvature(c, SegmentEnd::start), node_curvature(c, SegmentEnd::end),
-            moved_distance(c, unrounded_[i], allowed_[i]), curvature_shape(c), inner_axis_extrema(c)};
+            moved_distance(c, unrounded_[i], allowed_[i]), curvature_shape(c), inner_axis_extrema(c),
+            overreach_length(c)};
   }
 
   std::vector<Cubic> unrounded_;
@@ -183,6 +185,8 @@ CubicChoices cubic_choices(const std::vector<OutlineNode>& nodes, std::span<cons
       if (t.shape.sign_changes > ideal.shape.sign_changes) cost += wrong_way;
       // Nor turn horizontal or vertical inside: an extremum without a node.
       if (t.extrema > ideal.extrema) cost += wrong_way;
+      // Nor fold back on itself past its chord.
+      if (t.overreach > ideal.overreach) cost += wrong_way * (1.0 + t.overreach);
       // Nor gain curvature variation inside (a spike a comb would show), beyond a little.
       const double excess = (t.shape.variation - ideal.shape.variation) / std::max(ideal.shape.largest, flat);
       if (excess > free_variation) cost += variation_weight * (excess - free_variation);
@@ -258,8 +262,8 @@ std::vector<Vec2> node_places(Vec2 at, Vec2 unrounded) {
 
 // A change at node i of an outline: it changes both cubics at i, so the curvature jumps at i
 // and at its two neighbours. It is allowed when neither cubic moves farther from its
-// unrounded self than its allowance, nor gains an inflection or an H/V extremum that neither
-// its unrounded self nor the cubic before the change has.
+// unrounded self than its allowance, nor gains an inflection, an H/V extremum or a handle's
+// reach past its chord that neither its unrounded self nor the cubic before the change has.
 class NodeChange {
  public:
   NodeChange(const std::vector<OutlineNode>& nodes, const OutlineJoins& joins, CubicJudge& judge, double flat,
@@ -268,7 +272,8 @@ class NodeChange {
         j_((i + 1) % nodes.size()) {
     for (const std::size_t k : {h_, i_}) {
       const CubicTraits &a = judge.unrounded(k), &b = judge.traits(k, outline_cubic(nodes, k));
-      most_.push_back({std::max(a.shape.sign_changes, b.shape.sign_changes), std::max(a.extrema, b.extrema)});
+      most_.push_back({std::max(a.shape.sign_changes, b.shape.sign_changes), std::max(a.extrema, b.extrema),
+                       std::max(a.overreach, b.overreach)});
     }
     // The cubics beyond the neighbours stay as they are: their curvature there, once.
     const std::size_t n = nodes.size();
@@ -311,7 +316,9 @@ class NodeChange {
     for (std::size_t side = 0; side < 2; ++side) {
       const std::size_t k = side == 0 ? h_ : i_;
       const CubicTraits& t = judge_.traits(k, outline_cubic(nodes_, k));
-      if (t.moved > judge_.allowed(k) || t.shape.sign_changes > most_[side].first || t.extrema > most_[side].second)
+      const Most& most = most_[side];
+      if (t.moved > judge_.allowed(k) || t.shape.sign_changes > most.sign_changes || t.extrema > most.extrema ||
+          t.overreach > most.overreach)
         return false;
     }
     return true;
@@ -344,7 +351,12 @@ class NodeChange {
   double flat_;
   std::size_t i_, h_, j_;
   std::optional<double> beyond_h_, beyond_j_;
-  std::vector<std::pair<int, int>> most_;
+  // Per cubic at i, the most of each fault its unrounded self or its state before the change has.
+  struct Most {
+    int sign_changes, extrema;
+    double overreach;
+  };
+  std::vector<Most> most_;
 };
 
 // The primitive grid directions within `most` radians of `tangent`, no component over `longest`.

@@ -46,7 +46,8 @@ std::vector<Vec2> handles_near_line(Vec2 node, Vec2 step, double sign, Vec2 line
 /// node still jumping where κ = 0 holds exactly on both sides; and chooses the steps again around
 /// what moved, at most sixteen passes. `ideal` is the outline before rounding; no cubic moves
 /// farther from it than the limits allow (as a curve: a handle slid along its tangent moves
-/// the curve little), none gains an inflection or an H/V extremum, and curvature variation
+/// the curve little), none gains an inflection, an H/V extremum or a handle reaching far past
+/// its chord (overreach_length: of several, the least reach), and curvature variation
 /// inside a cubic beyond its unrounded self's costs (a third of the weight of a matching jump
 /// at a node).
 void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal,

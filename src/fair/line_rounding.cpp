@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "fair/cubic_change.hpp"
 #include "geom/polyline_distance.hpp"
 
 namespace gf {
@@ -16,11 +17,14 @@ constexpr double slide_weight = 0.02;    // a unit of slide costs this much of a
 constexpr double step_weight = 0.1;      // a unit of primitive step costs this much
 constexpr double tie_weight = 0.01;      // of a unit moved, at the ends of a line no curve meets
 constexpr double far_handle_unit = 1.0;  // the cost of a join the curve cannot leave with κ = 0
+constexpr double fold_unit = 4.0;        // the cost of a curve the line's step bends into an extremum
 constexpr int curve_samples = 32;
 constexpr int slid_samples = 12;
 constexpr double max_slide = 16.0;       // units, and at most half the curve's handle
+constexpr double max_back_slide = 96.0;  // units back along the line, and at most half the line
 constexpr double short_step = 3.0;       // units: no slide gives a shorter step than (2, 1)
 constexpr double stray_share = 0.25;     // of its length, a handle on the line may change by
+constexpr double fold_share = 0.75;      // of its curve's chord, a handle on the line may reach
 
 struct EndPlace {
   Vec2 point;
@@ -41,20 +45,29 @@ class Slide {
     const Vec2 tangent = curve.p[1] - curve.p[0];
     into_ = tangent / norm(tangent);
     reach_ = std::min(max_slide, 0.5 * norm(tangent));
+    back_reach_ = std::max(reach_, std::min(max_back_slide, 0.5 * distance(line_end, curve.p[0])));
     path_.push_back(line_end);
     for (int k = 0; k <= curve_samples; ++k) path_.push_back(curve.point_at(static_cast<double>(k) / curve_samples));
   }
 
   double reach() const { return reach_; }
+  /// How far back along the line, away from the curve, the end may slide.
+  double back_reach() const { return back_reach_; }
+  Vec2 into() const { return into_; }
 
   /// How far the end at `p` moves from `exact`, or nothing where it may not go.
   std::optional<double> moved(Vec2 exact, Vec2 p) const {
-    const double along = std::abs(dot(into_, p - exact));
-    if (along > reach_ || std::abs(cross(into_, p - exact)) > off_limit_) return std::nullopt;
+    const double signed_along = dot(into_, p - exact), along = std::abs(signed_along);
+    if (along > (signed_along < 0.0 ? back_reach_ : reach_) || std::abs(cross(into_, p - exact)) > off_limit_)
+      return std::nullopt;
     const Cubic slid{p, curve_.p[1], curve_.p[2], curve_.p[3]};
     std::array<Vec2, slid_samples + 1> samples;
     for (int k = 0; k <= slid_samples; ++k) samples[k] = slid.point_at(static_cast<double>(k) / slid_samples);
-    const double strays = directed_hausdorff(samples, path_, off_limit_);
+    double strays = directed_hausdorff(samples, path_, off_limit_);
+    // Slid back beyond its handle, the curve takes over a stretch of the line: it must also
+    // pass near every point of the curve it replaces.
+    if (strays <= off_limit_ && signed_along < -distance(curve_.p[0], curve_.p[1]))
+      strays = std::max(strays, directed_hausdorff(std::span(path_).subspan(1), samples, off_limit_));
     if (strays > off_limit_) return std::nullopt;
     return strays + slide_weight * along;
   }
@@ -63,7 +76,7 @@ class Slide {
   Cubic curve_;
   double off_limit_;
   Vec2 into_;
-  double reach_;
+  double reach_, back_reach_;
   std::vector<Vec2> path_;  ///< the line's far end, then the curve
 };
 
@@ -73,14 +86,29 @@ std::vector<EndPlace> end_places(Vec2 exact, const std::optional<Slide>& slide) 
   std::vector<EndPlace> out;
   const Vec2 base = nearest_grid_point(exact);
   const int reach = slide ? static_cast<int>(std::ceil(slide->reach() + off_line)) : 1;
+  const auto consider = [&](Vec2 p, bool neighbour) {
+    const std::optional<double> slid = slide ? slide->moved(exact, p) : std::nullopt;
+    if (slid) out.push_back({p, *slid, true});
+    else if (neighbour) out.push_back({p, distance(p, exact)});
+  };
   for (int dx = -reach; dx <= reach; ++dx)
-    for (int dy = -reach; dy <= reach; ++dy) {
-      const Vec2 p = base + Vec2{double(dx), double(dy)};
-      const bool neighbour = std::abs(dx) <= 1 && std::abs(dy) <= 1;
-      const std::optional<double> slid = slide ? slide->moved(exact, p) : std::nullopt;
-      if (slid) out.push_back({p, *slid, true});
-      else if (neighbour) out.push_back({p, distance(p, exact)});
+    for (int dy = -reach; dy <= reach; ++dy)
+      consider(base + Vec2{double(dx), double(dy)}, std::abs(dx) <= 1 && std::abs(dy) <= 1);
+  // Back along the line beyond the square: the grid points beside it, unit by unit.
+  if (slide && slide->back_reach() > reach) {
+    std::vector<Vec2> seen;
+    for (int t = reach; t <= static_cast<int>(slide->back_reach()) + 1; ++t) {
+      const Vec2 c = nearest_grid_point(exact - static_cast<double>(t) * slide->into());
+      for (int dx = -1; dx <= 1; ++dx)
+        for (int dy = -1; dy <= 1; ++dy) {
+          const Vec2 p = c + Vec2{double(dx), double(dy)};
+          if (std::max(std::abs(p.x - base.x), std::abs(p.y - base.y)) <= reach) continue;  // in the square
+          if (std::find(seen.begin(), seen.end(), p) != seen.end()) continue;
+          seen.push_back(p);
+          consider(p, false);
+        }
     }
+  }
   return out;
 }
 
@@ -148,16 +176,29 @@ class LinePlacer {
 
   // The curve meeting the line at `end` with its near handle `near` on the line: its far handle
   // (node k's out-handle when the curve arrives, its in-handle when it leaves) at the whole
-  // step nearest the line. Its cost: how far that handle moves (three tenths), or a unit when
-  // even there the curvature at the join stays visible.
+  // step nearest the line, or where rounding put it. Its cost: how far that handle moves
+  // (three tenths), or a unit when even there the curvature at the join stays visible; and four
+  // more where the curve is shorter than two of the line's steps and every such handle gives it
+  // an H/V extremum its exact self lacks (a short curve bent back on itself by a handle of the
+  // line's long step: Because We Build's M, a 2-unit curve from the bowl's foot to a (14, 1) line).
   double far_handle_cost(std::size_t k, bool out, Vec2 end, Vec2 near, Vec2 d) const {
     const std::optional<Vec2> wanted = out ? exact_[k].out_handle : exact_[k].in_handle;
-    if (!steps_[k] || !wanted) return 0.0;
-    double best = far_handle_unit;
-    for (const Vec2 h : handles_near_line(rounded_[k].point, *steps_[k], out ? 1.0 : -1.0, end, d)) {
-      const Cubic c = out ? Cubic{rounded_[k].point, h, near, end} : Cubic{end, near, h, rounded_[k].point};
+    const std::optional<Vec2> placed = out ? rounded_[k].out_handle : rounded_[k].in_handle;
+    if (!steps_[k] || !wanted || !placed) return 0.0;
+    const auto curve = [&](Vec2 h) {
+      return out ? Cubic{rounded_[k].point, h, near, end} : Cubic{end, near, h, rounded_[k].point};
+    };
+    const int extrema = inner_axis_extrema(outline_cubic(exact_, out ? k : previous(k)));
+    const bool short_curve = distance(rounded_[k].point, end) < 2.0 * norm(d);
+    double best = far_handle_unit + fold_unit;
+    std::vector<Vec2> candidates = handles_near_line(rounded_[k].point, *steps_[k], out ? 1.0 : -1.0, end, d);
+    candidates.push_back(*placed);
+    for (const Vec2 h : candidates) {
+      const Cubic c = curve(h);
       const double kappa = node_curvature(c, out ? SegmentEnd::end : SegmentEnd::start);
-      if (std::abs(kappa) <= 0.05 * flat_) best = std::min(best, 0.3 * distance(h, *wanted));
+      const double cost = (std::abs(kappa) <= 0.05 * flat_ ? 0.3 * distance(h, *wanted) : far_handle_unit) +
+                          (short_curve && inner_axis_extrema(c) > extrema ? fold_unit : 0.0);
+      best = std::min(best, cost);
     }
     return best;
   }
@@ -240,20 +281,25 @@ class RunPlacement {
     return true;
   }
 
-  /// Whether a curve's handle on a line of long step grows or shrinks by more than a quarter
-  /// (and more than its curve's allowance): a handle slid along its own tangent moves the curve
-  /// little, and only a long step can be made shorter by sliding.
+  /// Whether a curve's handle on a line grows or shrinks by more than a quarter, and by more
+  /// than its curve's allowance (on a line of long step: a handle slid along its own tangent
+  /// moves the curve little, and only a long step can be made shorter by sliding) or to more
+  /// than three quarters of its curve's chord (where a short curve folds, whatever the step).
   bool strays() const {
     const std::size_t n = exact_.size();
-    const auto strays_at = [&](std::size_t node, bool in, double moved, std::size_t cubic) {
+    const auto strays_at = [&](std::size_t node, bool in, double moved, std::size_t cubic, Vec2 at, Vec2 handle,
+                               Vec2 step) {
       const Vec2 h = in ? *exact_[node].in_handle : *exact_[node].out_handle;
-      return moved > std::max(limits_.allowance_at(cubic), stray_share * distance(h, exact_[node].point));
+      if (moved <= stray_share * distance(h, exact_[node].point)) return false;
+      const Cubic c = outline_cubic(exact_, cubic);
+      return (norm(step) > short_step && moved > limits_.allowance_at(cubic)) ||
+             distance(handle, at) > fold_share * distance(c.p[0], c.p[3]);
     };
     for (std::size_t t = 0; t < run_.size(); ++t) {
       const LineOnGrid& l = run_[t];
       const LinePlacement& p = placed_[t];
-      if (norm(p.step) > short_step && ((p.in_handle && strays_at(l.i, true, p.in_moved, (l.i + n - 1) % n)) ||
-                                        (p.out_handle && strays_at(l.j, false, p.out_moved, l.j))))
+      if ((p.in_handle && strays_at(l.i, true, p.in_moved, (l.i + n - 1) % n, place(t).point, *p.in_handle, p.step)) ||
+          (p.out_handle && strays_at(l.j, false, p.out_moved, l.j, place(t + 1).point, *p.out_handle, p.step)))
         return true;
     }
     return false;

@@ -7,7 +7,10 @@
 // a curve's handle would then grow or shrink by more than a quarter, the curve's end may also
 // slide along its line (a curve leaves a G2 line join straight, κ = 0, so starting it a few
 // units earlier or later along the line, its handle's tip kept, barely moves it) to where the
-// line's step is short.
+// line's step is short. A curve too short for even one step of its line (Because We Build's v:
+// 2.4 units from a 2° line to the bowl's foot, where every grid direction near 2° steps 17 units
+// or more) slides back along the line, up to half of it, and takes over that stretch: the curve
+// then has room for the step instead of folding back on itself.
 #pragma once
 
 #include <optional>
@@ -24,8 +27,11 @@ namespace gf {
 /// and the curves' handles; a slid end by how far its curve then strays from `exact`, plus a
 /// fiftieth of the slide) and a tenth of a unit per unit of step, and more where the curve's
 /// far handle cannot give it κ = 0 at the join (|κ| within a twentieth of
-/// `limits.flat_curvature`); the run's least total wins. A slid end stays within what the
-/// line has left of the tolerance (`limits.allowance_at`) of it.
+/// `limits.flat_curvature`) or where a curve shorter than two steps would gain an H/V extremum;
+/// the run's least total wins. A slid end stays within what the line has left of the tolerance
+/// (`limits.allowance_at`) of it, both ways where it slid back past its handle. Ends slide
+/// where a handle on a line of long step strays (moves by more than a quarter of its length
+/// and its curve's allowance) or reaches past three quarters of its curve's chord.
 void place_lines_on_grid(const std::vector<OutlineNode>& exact, std::vector<OutlineNode>& rounded,
                          std::vector<std::optional<Vec2>>& steps, bool closed, const HandleStepLimits& limits);
 

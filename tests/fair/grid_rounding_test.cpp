@@ -7,6 +7,8 @@
 #include <cmath>
 #include <random>
 
+#include "fair/cubic_change.hpp"
+
 namespace gf {
 namespace {
 
@@ -71,6 +73,84 @@ TEST(GridRounding, CornersRoundFreelyAndLinesKeepTheirHandleOnTheLine) {
   const OutlineNode& join = r[1];
   EXPECT_EQ(cross(join.point - r[0].point, *join.out_handle - join.point), 0.0);
   for (const OutlineNode& n : r) EXPECT_TRUE(on_grid(n.point));
+}
+
+// Because We Build's v, unrounded: a line falling 2° to the bowl's foot, a 2.4-unit cubic to
+// the horizontal extremum, the bowl rising to a corner. The line's grid directions near 2° have
+// primitive steps of 17 units and more, and a handle of whole steps on the line folded the
+// short cubic back on itself (a spike with an extremum off its nodes). Its join slides back
+// along the line instead, so the curve leaving the line has room for a step.
+TEST(GridRounding, AShortCurveBesideALineOfLongStepDoesNotFold) {
+  std::vector<OutlineNode> nodes(4);
+  nodes[0].point = {133.0, 0.0};
+  nodes[0].smooth = false;
+  nodes[1].point = {216.0, -3.0};
+  nodes[1].out_handle = Vec2{216.42, -3.02};
+  nodes[2].point = {218.43, -3.05};
+  nodes[2].in_handle = Vec2{217.32, -3.05};
+  nodes[2].out_handle = Vec2{239.83, -3.05};
+  nodes[2].grid_step = Vec2{1.0, 0.0};
+  nodes[3].point = {252.56, 22.58};
+  nodes[3].in_handle = Vec2{252.56, 9.07};
+  nodes[3].smooth = false;
+  HandleStepLimits limits;
+  limits.allowance = 2.0;  // what the unrounded outline leaves of a handwriting tolerance
+  const std::vector<OutlineNode> r = round_to_grid(nodes, false, limits);
+
+  ASSERT_EQ(r.size(), nodes.size());
+  ASSERT_TRUE(r[1].out_handle && !r[1].in_handle);
+  // G1 exact where the curve leaves the line; the extremum keeps horizontal handles.
+  EXPECT_EQ(cross(r[1].point - r[0].point, *r[1].out_handle - r[1].point), 0.0);
+  EXPECT_GT(dot(r[1].point - r[0].point, *r[1].out_handle - r[1].point), 0.0);
+  EXPECT_EQ(r[2].in_handle->y, r[2].point.y);
+  EXPECT_EQ(r[2].out_handle->y, r[2].point.y);
+  for (std::size_t i = 1; i < 3; ++i) {
+    const Cubic c = outline_cubic(r, i);
+    for (const Vec2 p : c.p) EXPECT_TRUE(on_grid(p));
+    // No fold: no H/V extremum off the nodes, no handle reaching past the chord.
+    EXPECT_EQ(inner_axis_extrema(c), 0) << "cubic " << i;
+    EXPECT_LE(std::max(distance(c.p[0], c.p[1]), distance(c.p[3], c.p[2])), distance(c.p[0], c.p[3])) << "cubic " << i;
+  }
+  // The line keeps its far end and most of its length; the extremum stays where it was.
+  EXPECT_LE(distance(r[0].point, nodes[0].point), std::sqrt(2.0));
+  EXPECT_GE(distance(r[0].point, r[1].point), 40.0);
+  EXPECT_LE(distance(r[2].point, nodes[2].point), std::sqrt(2.0));
+}
+
+// Because We Build's k, unrounded: where the leg leaves the stem the pen turned back within
+// three units, and the last cubic of that hook meets a line of step (−1, 2) a unit from its
+// start. Choosing whole steps for κ = 0 at the line join, pass after pass, grew the handle on
+// the line to eleven steps: a 25-unit spike. A handle reaching far past its cubic's chord now
+// costs as an added extremum does, more the farther it reaches.
+TEST(GridRounding, AHandleOnALineDoesNotGrowIntoASpike) {
+  std::vector<OutlineNode> nodes(6);
+  nodes[0].point = {240.61, 145.00};
+  nodes[0].out_handle = Vec2{239.89, 146.30};
+  nodes[0].smooth = false;
+  nodes[1].point = {238.97, 147.91};
+  nodes[1].in_handle = Vec2{239.36, 147.23};
+  nodes[1].out_handle = Vec2{238.42, 148.87};
+  nodes[2].point = {237.25, 150.75};
+  nodes[2].in_handle = Vec2{238.36, 150.75};
+  nodes[2].out_handle = Vec2{236.56, 150.75};
+  nodes[2].grid_step = Vec2{-1.0, 0.0};
+  nodes[3].point = {238.08, 148.86};
+  nodes[3].in_handle = Vec2{237.78, 149.48};
+  nodes[3].out_handle = Vec2{238.38, 148.24};
+  nodes[4].point = {239.0, 147.0};
+  nodes[4].in_handle = Vec2{239.31, 146.38};
+  nodes[5].point = {221.0, 183.0};
+  nodes[5].smooth = false;
+  HandleStepLimits limits;
+  limits.allowance = 6.0;  // a handwriting tolerance, most of it left
+  const std::vector<OutlineNode> r = round_to_grid(nodes, false, limits);
+
+  ASSERT_EQ(r.size(), nodes.size());
+  for (std::size_t i = 0; i < 4; ++i) {
+    const Cubic c = outline_cubic(r, i);
+    EXPECT_LE(overreach_length(c), 0.0) << "cubic " << i;
+    for (const Vec2 p : c.p) EXPECT_LE(distance(p, nodes[i].point), 6.0) << "cubic " << i;
+  }
 }
 
 }  // namespace
