@@ -141,6 +141,45 @@ void resolve_handle_lengths(std::vector<OutlineNode>& nodes, const std::vector<O
   nodes = std::move(updated);
 }
 
+// Nodes that rounding put on one grid point, with nothing between them but a line of no length
+// or a cubic whose handles stay within `collapse_reach` (dkg Bold's C: a curve over an extremum
+// and the line after it, two units apart, became a loop of a unit with its ends together): one
+// node, arriving as the first did and leaving as the second does, smooth only where both were
+// and those directions stay exactly collinear.
+constexpr double collapse_reach = 2.0;
+
+void merge_coincident_nodes(std::vector<OutlineNode>& nodes, bool closed) {
+  const auto arriving = [&](std::size_t k) {
+    const std::size_t n = nodes.size();
+    return nodes[k].in_handle ? nodes[k].point - *nodes[k].in_handle : nodes[k].point - nodes[(k + n - 1) % n].point;
+  };
+  const auto leaving = [&](std::size_t k) {
+    const std::size_t n = nodes.size();
+    return nodes[k].out_handle ? *nodes[k].out_handle - nodes[k].point : nodes[(k + 1) % n].point - nodes[k].point;
+  };
+  for (std::size_t i = 0; nodes.size() > (closed ? 3u : 2u) && i < nodes.size();) {
+    const std::size_t n = nodes.size(), j = (i + 1) % n;
+    if (!closed && j == 0) break;
+    const OutlineNode &a = nodes[i], &b = nodes[j];
+    const auto within = [&](const std::optional<Vec2>& h, Vec2 p) { return !h || distance(*h, p) <= collapse_reach; };
+    if (a.point != b.point || bool(a.out_handle) != bool(b.in_handle) || !within(a.out_handle, a.point) ||
+        !within(b.in_handle, b.point)) {
+      ++i;
+      continue;
+    }
+    // The node that stays keeps its index where the other is the contour's first.
+    const std::size_t keep = j == 0 ? j : i, drop = j == 0 ? i : j;
+    OutlineNode merged = nodes[keep];
+    merged.in_handle = a.in_handle, merged.out_handle = b.out_handle;
+    const bool was_smooth = a.smooth && b.smooth;
+    nodes[keep] = merged;
+    nodes.erase(nodes.begin() + static_cast<std::ptrdiff_t>(drop));
+    const std::size_t k = keep < drop ? keep : keep - 1;
+    const Vec2 in = arriving(k), out = leaving(k);
+    nodes[k].smooth = was_smooth && cross(in, out) == 0.0 && dot(in, out) > 0.0;
+  }
+}
+
 }  // namespace
 
 std::vector<OutlineNode> round_to_grid(const std::vector<OutlineNode>& nodes, bool closed,
@@ -185,6 +224,7 @@ std::vector<OutlineNode> round_to_grid(const std::vector<OutlineNode>& nodes, bo
   place_lines_on_grid(nodes, r, steps, closed, limits);
   resolve_handle_lengths(r, nodes, steps, closed);
   choose_handle_steps(r, nodes, steps, closed, limits);
+  merge_coincident_nodes(r, closed);
   return r;
 }
 

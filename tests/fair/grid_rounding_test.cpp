@@ -153,5 +153,42 @@ TEST(GridRounding, AHandleOnALineDoesNotGrowIntoASpike) {
   }
 }
 
+// dkg Bold's C, unrounded: where the top stroke ends the pen turns in two units, corner, a
+// curve over a horizontal extremum, corner, a line leaving at 37°. Rounding put the extremum and
+// the line's start on one grid point, and the cubic between them became a loop of a unit with
+// its ends together (an extremum off any node). The two nodes become one corner: the curve
+// arrives as it did, the line leaves as it did.
+TEST(GridRounding, NodesRoundedOntoOnePointBecomeOne) {
+  std::vector<OutlineNode> nodes(5);
+  nodes[0].point = {69.50, 601.18};
+  nodes[0].out_handle = Vec2{100.57, 663.34};
+  nodes[0].smooth = false;
+  nodes[1].point = {210.25, 775.75};
+  nodes[1].in_handle = Vec2{122.69, 689.79};
+  nodes[1].out_handle = Vec2{210.32, 776.74};
+  nodes[1].smooth = false;
+  nodes[2].point = {211.50, 777.33};
+  nodes[2].in_handle = Vec2{210.95, 777.33};
+  nodes[2].out_handle = Vec2{211.79, 777.33};
+  nodes[2].grid_step = Vec2{1.0, 0.0};
+  nodes[3].point = {212.0, 777.0};
+  nodes[3].in_handle = Vec2{211.98, 777.16};
+  nodes[3].smooth = false;
+  nodes[4].point = {251.0, 807.0};
+  nodes[4].smooth = false;
+  HandleStepLimits limits;
+  limits.allowance = 2.0;
+  const std::vector<OutlineNode> r = round_to_grid(nodes, false, limits);
+
+  for (std::size_t i = 0; i + 1 < r.size(); ++i) {
+    EXPECT_NE(r[i].point, r[i + 1].point) << "nodes " << i << " and " << i + 1;
+    EXPECT_TRUE(on_grid(r[i].point));
+  }
+  EXPECT_LE(distance(r.front().point, nodes.front().point), std::sqrt(2.0));
+  EXPECT_LE(distance(r.back().point, nodes.back().point), std::sqrt(2.0));
+  for (std::size_t i = 0; i + 1 < r.size(); ++i)
+    if (r[i].out_handle && r[i + 1].in_handle) EXPECT_EQ(inner_axis_extrema(outline_cubic(r, i)), 0) << "cubic " << i;
+}
+
 }  // namespace
 }  // namespace gf
