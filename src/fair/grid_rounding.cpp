@@ -167,16 +167,15 @@ void merge_coincident_nodes(std::vector<OutlineNode>& nodes, bool closed) {
       ++i;
       continue;
     }
-    // The node that stays keeps its index where the other is the contour's first.
+    // The earlier node stays, but for the contour's first node, which stays where it is.
     const std::size_t keep = j == 0 ? j : i, drop = j == 0 ? i : j;
     OutlineNode merged = nodes[keep];
     merged.in_handle = a.in_handle, merged.out_handle = b.out_handle;
     const bool was_smooth = a.smooth && b.smooth;
     nodes[keep] = merged;
-    nodes.erase(nodes.begin() + static_cast<std::ptrdiff_t>(drop));
-    const std::size_t k = keep < drop ? keep : keep - 1;
-    const Vec2 in = arriving(k), out = leaving(k);
-    nodes[k].smooth = was_smooth && cross(in, out) == 0.0 && dot(in, out) > 0.0;
+    nodes.erase(nodes.begin() + static_cast<std::ptrdiff_t>(drop));  // after keep: keep's index stands
+    const Vec2 in = arriving(keep), out = leaving(keep);
+    nodes[keep].smooth = was_smooth && cross(in, out) == 0.0 && dot(in, out) > 0.0;
   }
 }
 
