@@ -459,14 +459,14 @@ void snap_extremum_to_corner(ChainPath& path, double budget, double flat_curvatu
                              SegmentEnd end, bool corner) {
   const std::size_t n = nodes.size();
   if (!corner || n < 3) return;
-  ChainCubics trials;  // what the trial fits count is not the chain's
-  SpanWriter writer(path, budget, flat_curvature, trials);  // it reads the path as turned below
   const bool start = end == SegmentEnd::start;
   const std::size_t e = start ? 1 : n - 2, far = start ? 2 : n - 3;
   const std::size_t at = start ? 0 : n - 1;
   if (!nodes[e].grid_step || std::abs(nodes[e].sigma - nodes[at].sigma) > snap_reach) return;
   const Vec2 axis = *nodes[e].grid_step;
   if (std::abs(turning_angle(path.at(nodes[at].sigma).tangent, axis)) > snap_turn) return;
+  ChainCubics trials;  // what the trial fits count is not the chain's
+  SpanWriter writer(path, budget, flat_curvature, trials);  // it reads the path as turned below
   const std::array<RequiredNode, 3> kept = start ? std::array{nodes[at], nodes[e], nodes[far]}
                                                  : std::array{nodes[far], nodes[e], nodes[at]};
   const std::size_t before = write_spans(writer, kept, false, path.total()).size();

@@ -157,11 +157,11 @@ void merge_coincident_nodes(std::vector<OutlineNode>& nodes, bool closed) {
     const std::size_t n = nodes.size();
     return nodes[k].out_handle ? *nodes[k].out_handle - nodes[k].point : nodes[(k + 1) % n].point - nodes[k].point;
   };
+  const auto within = [](const std::optional<Vec2>& h, Vec2 p) { return !h || distance(*h, p) <= collapse_reach; };
   for (std::size_t i = 0; nodes.size() > (closed ? 3u : 2u) && i < nodes.size();) {
     const std::size_t n = nodes.size(), j = (i + 1) % n;
     if (!closed && j == 0) break;
     const OutlineNode &a = nodes[i], &b = nodes[j];
-    const auto within = [&](const std::optional<Vec2>& h, Vec2 p) { return !h || distance(*h, p) <= collapse_reach; };
     if (a.point != b.point || bool(a.out_handle) != bool(b.in_handle) || !within(a.out_handle, a.point) ||
         !within(b.in_handle, b.point)) {
       ++i;

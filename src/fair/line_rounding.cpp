@@ -131,7 +131,12 @@ class LinePlacer {
  public:
   LinePlacer(const std::vector<OutlineNode>& exact, const std::vector<OutlineNode>& rounded,
              const std::vector<std::optional<Vec2>>& steps, double flat_curvature)
-      : exact_(exact), rounded_(rounded), steps_(steps), flat_(flat_curvature) {}
+      : exact_(exact), rounded_(rounded), steps_(steps), flat_(flat_curvature), exact_extrema_(exact.size(), 0) {
+    // Each exact cubic's H/V extrema, once: every placement of its line weighs its far handle.
+    for (std::size_t i = 0; i < exact.size(); ++i)
+      if (exact[i].out_handle && exact[(i + 1) % exact.size()].in_handle)
+        exact_extrema_[i] = inner_axis_extrema(outline_cubic(exact, i));
+  }
 
   /// Past `bound`, only that it is past (the cost then is at least the bound).
   LinePlacement place(const LineOnGrid& line, const EndPlace& a, const EndPlace& b,
@@ -188,7 +193,7 @@ class LinePlacer {
     const auto curve = [&](Vec2 h) {
       return out ? Cubic{rounded_[k].point, h, near, end} : Cubic{end, near, h, rounded_[k].point};
     };
-    const int extrema = inner_axis_extrema(outline_cubic(exact_, out ? k : previous(k)));
+    const int extrema = exact_extrema_[out ? k : previous(k)];
     const bool short_curve = distance(rounded_[k].point, end) < 2.0 * norm(d);
     double best = far_handle_unit + fold_unit;
     std::vector<Vec2> candidates = handles_near_line(rounded_[k].point, *steps_[k], out ? 1.0 : -1.0, end, d);
@@ -207,6 +212,7 @@ class LinePlacer {
   const std::vector<OutlineNode>& rounded_;
   const std::vector<std::optional<Vec2>>& steps_;
   double flat_;
+  std::vector<int> exact_extrema_;  ///< of the exact cubic from each node
 };
 
 // The runs of consecutive lines (each run's lines in order), split where a curve comes between.

@@ -4,7 +4,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 
 #include "aesthetic/segment_fit.hpp"
 
@@ -14,7 +13,7 @@ namespace {
 // A chain leaving a corner 2° right of the vertical and turning left by 60°: its vertical
 // extremum lies about 10 units from the corner.
 FairedChain stroke_leaving_a_corner() {
-  const double lean = 2.0 * std::numbers::pi / 180.0, turn = 60.0 * std::numbers::pi / 180.0;
+  const double lean = radians(2.0), turn = radians(60.0);
   const Vec2 p0{100, 0}, p1 = p0 + Vec2{std::sin(lean), std::cos(lean)} * 100.0;
   const Vec2 p2 = p1 + Vec2{std::sin(lean - turn), std::cos(lean - turn)} * 100.0;
   const SegmentFit fit = fit_three_point(p0, p1, p2, 1.0);

@@ -14,6 +14,12 @@ namespace {
 
 bool on_grid(Vec2 p) { return p.x == std::round(p.x) && p.y == std::round(p.y); }
 
+// A node of an unrounded outline: its handles where it has them, a corner unless smooth.
+OutlineNode node(Vec2 point, std::optional<Vec2> in, std::optional<Vec2> out, bool smooth = true,
+                 std::optional<Vec2> grid_step = std::nullopt) {
+  return OutlineNode{point, in, out, smooth, grid_step};
+}
+
 TEST(GridRounding, PrimitiveStepsDivideByTheCommonDivisor) {
   // DejaVu's s spine: (63, −14) = 7·(9, −2).
   EXPECT_EQ(primitive_step({63, -14}), (Vec2{9, -2}));
@@ -81,18 +87,12 @@ TEST(GridRounding, CornersRoundFreelyAndLinesKeepTheirHandleOnTheLine) {
 // short cubic back on itself (a spike with an extremum off its nodes). Its join slides back
 // along the line instead, so the curve leaving the line has room for a step.
 TEST(GridRounding, AShortCurveBesideALineOfLongStepDoesNotFold) {
-  std::vector<OutlineNode> nodes(4);
-  nodes[0].point = {133.0, 0.0};
-  nodes[0].smooth = false;
-  nodes[1].point = {216.0, -3.0};
-  nodes[1].out_handle = Vec2{216.42, -3.02};
-  nodes[2].point = {218.43, -3.05};
-  nodes[2].in_handle = Vec2{217.32, -3.05};
-  nodes[2].out_handle = Vec2{239.83, -3.05};
-  nodes[2].grid_step = Vec2{1.0, 0.0};
-  nodes[3].point = {252.56, 22.58};
-  nodes[3].in_handle = Vec2{252.56, 9.07};
-  nodes[3].smooth = false;
+  const std::vector<OutlineNode> nodes{
+      node(Vec2{133.0, 0.0}, std::nullopt, std::nullopt, false),
+      node(Vec2{216.0, -3.0}, std::nullopt, Vec2{216.42, -3.02}),
+      node(Vec2{218.43, -3.05}, Vec2{217.32, -3.05}, Vec2{239.83, -3.05}, true, Vec2{1.0, 0.0}),
+      node(Vec2{252.56, 22.58}, Vec2{252.56, 9.07}, std::nullopt, false),
+  };
   HandleStepLimits limits;
   limits.allowance = 2.0;  // what the unrounded outline leaves of a handwriting tolerance
   const std::vector<OutlineNode> r = round_to_grid(nodes, false, limits);
@@ -123,24 +123,14 @@ TEST(GridRounding, AShortCurveBesideALineOfLongStepDoesNotFold) {
 // the line to eleven steps: a 25-unit spike. A handle reaching far past its cubic's chord now
 // costs as an added extremum does, more the farther it reaches.
 TEST(GridRounding, AHandleOnALineDoesNotGrowIntoASpike) {
-  std::vector<OutlineNode> nodes(6);
-  nodes[0].point = {240.61, 145.00};
-  nodes[0].out_handle = Vec2{239.89, 146.30};
-  nodes[0].smooth = false;
-  nodes[1].point = {238.97, 147.91};
-  nodes[1].in_handle = Vec2{239.36, 147.23};
-  nodes[1].out_handle = Vec2{238.42, 148.87};
-  nodes[2].point = {237.25, 150.75};
-  nodes[2].in_handle = Vec2{238.36, 150.75};
-  nodes[2].out_handle = Vec2{236.56, 150.75};
-  nodes[2].grid_step = Vec2{-1.0, 0.0};
-  nodes[3].point = {238.08, 148.86};
-  nodes[3].in_handle = Vec2{237.78, 149.48};
-  nodes[3].out_handle = Vec2{238.38, 148.24};
-  nodes[4].point = {239.0, 147.0};
-  nodes[4].in_handle = Vec2{239.31, 146.38};
-  nodes[5].point = {221.0, 183.0};
-  nodes[5].smooth = false;
+  const std::vector<OutlineNode> nodes{
+      node(Vec2{240.61, 145.00}, std::nullopt, Vec2{239.89, 146.30}, false),
+      node(Vec2{238.97, 147.91}, Vec2{239.36, 147.23}, Vec2{238.42, 148.87}),
+      node(Vec2{237.25, 150.75}, Vec2{238.36, 150.75}, Vec2{236.56, 150.75}, true, Vec2{-1.0, 0.0}),
+      node(Vec2{238.08, 148.86}, Vec2{237.78, 149.48}, Vec2{238.38, 148.24}),
+      node(Vec2{239.0, 147.0}, Vec2{239.31, 146.38}, std::nullopt),
+      node(Vec2{221.0, 183.0}, std::nullopt, std::nullopt, false),
+  };
   HandleStepLimits limits;
   limits.allowance = 6.0;  // a handwriting tolerance, most of it left
   const std::vector<OutlineNode> r = round_to_grid(nodes, false, limits);
@@ -159,23 +149,13 @@ TEST(GridRounding, AHandleOnALineDoesNotGrowIntoASpike) {
 // its ends together (an extremum off any node). The two nodes become one corner: the curve
 // arrives as it did, the line leaves as it did.
 TEST(GridRounding, NodesRoundedOntoOnePointBecomeOne) {
-  std::vector<OutlineNode> nodes(5);
-  nodes[0].point = {69.50, 601.18};
-  nodes[0].out_handle = Vec2{100.57, 663.34};
-  nodes[0].smooth = false;
-  nodes[1].point = {210.25, 775.75};
-  nodes[1].in_handle = Vec2{122.69, 689.79};
-  nodes[1].out_handle = Vec2{210.32, 776.74};
-  nodes[1].smooth = false;
-  nodes[2].point = {211.50, 777.33};
-  nodes[2].in_handle = Vec2{210.95, 777.33};
-  nodes[2].out_handle = Vec2{211.79, 777.33};
-  nodes[2].grid_step = Vec2{1.0, 0.0};
-  nodes[3].point = {212.0, 777.0};
-  nodes[3].in_handle = Vec2{211.98, 777.16};
-  nodes[3].smooth = false;
-  nodes[4].point = {251.0, 807.0};
-  nodes[4].smooth = false;
+  const std::vector<OutlineNode> nodes{
+      node(Vec2{69.50, 601.18}, std::nullopt, Vec2{100.57, 663.34}, false),
+      node(Vec2{210.25, 775.75}, Vec2{122.69, 689.79}, Vec2{210.32, 776.74}, false),
+      node(Vec2{211.50, 777.33}, Vec2{210.95, 777.33}, Vec2{211.79, 777.33}, true, Vec2{1.0, 0.0}),
+      node(Vec2{212.0, 777.0}, Vec2{211.98, 777.16}, std::nullopt, false),
+      node(Vec2{251.0, 807.0}, std::nullopt, std::nullopt, false),
+  };
   HandleStepLimits limits;
   limits.allowance = 2.0;
   const std::vector<OutlineNode> r = round_to_grid(nodes, false, limits);
@@ -186,8 +166,10 @@ TEST(GridRounding, NodesRoundedOntoOnePointBecomeOne) {
   }
   EXPECT_LE(distance(r.front().point, nodes.front().point), std::sqrt(2.0));
   EXPECT_LE(distance(r.back().point, nodes.back().point), std::sqrt(2.0));
-  for (std::size_t i = 0; i + 1 < r.size(); ++i)
-    if (r[i].out_handle && r[i + 1].in_handle) EXPECT_EQ(inner_axis_extrema(outline_cubic(r, i)), 0) << "cubic " << i;
+  for (std::size_t i = 0; i + 1 < r.size(); ++i) {
+    if (!r[i].out_handle || !r[i + 1].in_handle) continue;  // a line
+    EXPECT_EQ(inner_axis_extrema(outline_cubic(r, i)), 0) << "cubic " << i;
+  }
 }
 
 }  // namespace
