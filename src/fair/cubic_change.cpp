@@ -36,11 +36,22 @@ double overreach_length(const Cubic& c) {
   return std::max({0.0, distance(c.p[0], c.p[1]) - reach, distance(c.p[3], c.p[2]) - reach});
 }
 
-CurvatureShape curvature_shape(const Cubic& c) {
+CurvatureShape curvature_shape(const Cubic& c, double hysteresis) {
   CurvatureShape shape;
-  double previous = 0.0, last_signed = 0.0;
-  for (int k = 0; k <= 16; ++k) {
-    const double kappa = curvature(derivatives_at(c, k / 16.0)).value_or(0.0);
+  double previous = 0.0, last_signed = 0.0, anchor = 0.0;
+  int direction = 0;
+  for (int k = 0; k <= 32; ++k) {
+    const double kappa = curvature(derivatives_at(c, k / 32.0)).value_or(0.0);
+    if (k == 0) {
+      anchor = kappa;
+    } else if (direction >= 0 && kappa < anchor - hysteresis) {
+      shape.turns += direction > 0, direction = -1, anchor = kappa;
+    } else if (direction <= 0 && kappa > anchor + hysteresis) {
+      shape.turns += direction < 0, direction = 1, anchor = kappa;
+    } else if (direction * (kappa - anchor) > 0.0) {
+      anchor = kappa;
+    }
+    if (k % 2 != 0) continue;
     if (k > 0) shape.variation += std::abs(kappa - previous);
     shape.largest = std::max(shape.largest, std::abs(kappa));
     previous = kappa;

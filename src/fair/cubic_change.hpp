@@ -22,12 +22,15 @@ int inner_axis_extrema(const Cubic& c);
 /// stay within its chord unless it turns through more than 180°).
 double overreach_length(const Cubic& c);
 
-/// How κ runs along a cubic, at sixteenths of its parameter: how often its sign changes (κ = 0
-/// has no sign), its total variation, and its largest magnitude.
+/// How κ runs along a cubic: at sixteenths of its parameter, how often its sign changes (κ = 0
+/// has no sign), its total variation and its largest magnitude; at thirty-seconds, how often it
+/// turns (an extremum), each rise or fall counted once it exceeds `hysteresis`, so sampling
+/// noise on a flat stretch is not a turn.
 struct CurvatureShape {
   int sign_changes = 0;
   double variation = 0.0, largest = 0.0;
+  int turns = 0;
 };
-CurvatureShape curvature_shape(const Cubic& c);
+CurvatureShape curvature_shape(const Cubic& c, double hysteresis);
 
 }  // namespace gf
