@@ -178,32 +178,54 @@ CubicChoices cubic_choices(const std::vector<OutlineNode>& nodes, std::span<cons
   const Vec2 p0 = nodes[i].point, p3 = nodes[j].point;
   const double allowed = judge.allowed(i);
   const CubicTraits& ideal = judge.unrounded(i);
-  for (const Vec2 out : c.outs)
-    for (const Vec2 in : c.ins) {
-      const CubicTraits& t = judge.traits(i, Cubic{p0, out, in, p3});
-      c.k_start.push_back(t.k_start), c.k_end.push_back(t.k_end);
-      if (t.moved > allowed) {
-        c.cost.push_back(infeasible);
-        continue;
+  auto weigh = [&] {
+    c.k_start.clear(), c.k_end.clear(), c.cost.clear();
+    for (const Vec2 out : c.outs)
+      for (const Vec2 in : c.ins) {
+        const CubicTraits& t = judge.traits(i, Cubic{p0, out, in, p3});
+        c.k_start.push_back(t.k_start), c.k_end.push_back(t.k_end);
+        if (t.moved > allowed) {
+          c.cost.push_back(infeasible);
+          continue;
+        }
+        double cost = allowed > 0.0 ? 0.01 * (t.moved / allowed) * (t.moved / allowed) : 0.0;
+        // A curve meeting a line tangentially meets it with κ = 0.
+        if (line_before) cost += jump_cost(jump(t.k_start, 0.0, flat));
+        if (line_after) cost += jump_cost(jump(t.k_end, 0.0, flat));
+        // Where the grid allows only near zero, or a corner's handle moves, the cubic must not
+        // bend the other way near its end: an inflection the unrounded cubic does not have.
+        if (t.shape.sign_changes > ideal.shape.sign_changes) cost += wrong_way;
+        // Nor turn horizontal or vertical inside: an extremum without a node.
+        if (t.extrema > ideal.extrema) cost += wrong_way;
+        // Nor fold back on itself past its chord.
+        if (t.overreach > ideal.overreach) cost += wrong_way * (1.0 + t.overreach);
+        // Nor gain a curvature extremum (a wobble of the comb).
+        cost += turn_cost(t.shape.turns - ideal.shape.turns);
+        // Nor gain curvature variation inside (a spike a comb would show), beyond a little.
+        const double excess = (t.shape.variation - ideal.shape.variation) / std::max(ideal.shape.largest, flat);
+        if (excess > free_variation) cost += variation_weight * (excess - free_variation);
+        c.cost.push_back(cost);
       }
-      double cost = allowed > 0.0 ? 0.01 * (t.moved / allowed) * (t.moved / allowed) : 0.0;
-      // A curve meeting a line tangentially meets it with κ = 0.
-      if (line_before) cost += jump_cost(jump(t.k_start, 0.0, flat));
-      if (line_after) cost += jump_cost(jump(t.k_end, 0.0, flat));
-      // Where the grid allows only near zero, or a corner's handle moves, the cubic must not
-      // bend the other way near its end: an inflection the unrounded cubic does not have.
-      if (t.shape.sign_changes > ideal.shape.sign_changes) cost += wrong_way;
-      // Nor turn horizontal or vertical inside: an extremum without a node.
-      if (t.extrema > ideal.extrema) cost += wrong_way;
-      // Nor fold back on itself past its chord.
-      if (t.overreach > ideal.overreach) cost += wrong_way * (1.0 + t.overreach);
-      // Nor gain a curvature extremum (a wobble of the comb).
-      cost += turn_cost(t.shape.turns - ideal.shape.turns);
-      // Nor gain curvature variation inside (a spike a comb would show), beyond a little.
-      const double excess = (t.shape.variation - ideal.shape.variation) / std::max(ideal.shape.largest, flat);
-      if (excess > free_variation) cost += variation_weight * (excess - free_variation);
-      c.cost.push_back(cost);
-    }
+  };
+  weigh();
+  // Where no choice gives an end at a smooth node within the target of its unrounded curvature,
+  // the handle lengths aimed at it (handles_for_curvature), against every place of the far
+  // handle: only there, as they multiply the choices.
+  const bool aim_start = nodes[i].smooth && steps[i] && !line_before;
+  const bool aim_end = nodes[j].smooth && steps[j] && !line_after;
+  bool start_met = !aim_start, end_met = !aim_end;
+  for (std::size_t s = 0; s < c.states(); ++s) {
+    if (c.cost[s] == infeasible) continue;
+    start_met = start_met || jump(c.k_start[s], ideal.k_start, flat) <= target_jump;
+    end_met = end_met || jump(c.k_end[s], ideal.k_end, flat) <= target_jump;
+  }
+  if (start_met && end_met) return c;
+  const std::vector<Vec2> outs = c.outs, ins = c.ins;
+  if (!start_met)
+    for (const Vec2 far : ins) add(c.outs, handles_for_curvature(p0, *steps[i], true, far, p3, ideal.k_start));
+  if (!end_met)
+    for (const Vec2 far : outs) add(c.ins, handles_for_curvature(p3, *steps[j], false, far, p0, ideal.k_end));
+  if (c.outs.size() != outs.size() || c.ins.size() != ins.size()) weigh();
   return c;
 }
 
@@ -549,6 +571,19 @@ std::vector<Vec2> handles_near_line(Vec2 node, Vec2 step, double sign, Vec2 line
   for (const double whole : {std::floor(*m), std::ceil(*m)})
     if (whole >= 1.0 && (out.empty() || whole != std::floor(*m))) out.push_back(node + step * (sign * whole));
   return out;
+}
+
+std::vector<Vec2> handles_for_curvature(Vec2 node, Vec2 step, bool out, Vec2 far, Vec2 other_end, double target) {
+  const double length = norm(step);
+  const Vec2 t = step / length;
+  const double d = out ? cross(t, far - node) : cross(node - far, t);
+  if (d * target <= 0.0) return {};
+  const double m = std::sqrt(2.0 * d / (3.0 * target)) / length;
+  if (m * length > 2.0 * distance(node, other_end)) return {};
+  std::vector<Vec2> handles;
+  for (const double whole : {std::floor(m), std::ceil(m)})
+    if (whole >= 1.0 && (handles.empty() || whole != std::floor(m))) handles.push_back(node + step * ((out ? 1.0 : -1.0) * whole));
+  return handles;
 }
 
 void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal,

@@ -38,6 +38,15 @@ struct HandleStepLimits {
 /// the join the grid allows, κ = 0 when on the line.
 std::vector<Vec2> handles_near_line(Vec2 node, Vec2 step, double sign, Vec2 line_point, Vec2 line_dir);
 
+/// The handles node + sign·m·step (m ≥ 1 whole steps; `out` false for an in-handle) on either
+/// side of the length that gives the node's end of its cubic the curvature `target`, the
+/// cubic's far handle at `far`: κ = 2d / (3h²) at a cubic's end (d how far the far handle lies
+/// across the node's tangent, signed as κ; h the handle's length), so h = √(2d / 3κ). Where the
+/// node runs along an axis the grid sets d in whole units, and a short handle gives only κ = 0
+/// or far too much: the lengths that match can lie well beyond the rounded one. None where d
+/// has the other sign, or longer than twice the chord to the cubic's `other_end`.
+std::vector<Vec2> handles_for_curvature(Vec2 node, Vec2 step, bool out, Vec2 far, Vec2 other_end, double target);
+
 /// Moves the handles of `nodes` (rounded, G1 exact along `grid_steps`) by whole steps along
 /// their grid directions, and a corner's handle by a unit, to minimise the curvature jumps at
 /// smooth nodes; then moves a node still jumping (or next to one), or one whose cubic bends

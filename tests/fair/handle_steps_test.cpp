@@ -217,6 +217,44 @@ TEST(HandleSteps, HandlesNearALineStraddleItOrLieOnIt) {
   EXPECT_TRUE(handles_near_line({5, 5}, {9, -2}, 1.0, {0, 0}, {9, -2}).empty());
 }
 
+TEST(HandleSteps, HandlesForCurvatureBracketTheTargetCurvature) {
+  // dkg's B: a 23-unit cubic reaches a vertical extremum node whose curvature is 3.46 per em
+  // (UPM 1024); its far handle a unit across the tangent, whole steps of 8 to 11 units give
+  // κ·UPM 5.6 to 10.7 and the far handle on the tangent 0. The lengths returned are the whole
+  // steps on either side of the one that matches (14.04 units): κ on either side of the target,
+  // as the cubic itself measures it.
+  const double target = 3.46 / 1024.0;
+  const Vec2 node{186, 435}, start{187, 458}, far{187, 450};
+  const std::vector<Vec2> ins = handles_for_curvature(node, {0, -1}, false, far, start, target);
+  ASSERT_EQ(ins.size(), 2u);
+  EXPECT_EQ(ins[0], (Vec2{186, 449}));
+  EXPECT_EQ(ins[1], (Vec2{186, 450}));
+  const double k14 = node_curvature(Cubic{start, far, ins[0], node}, SegmentEnd::end);
+  const double k15 = node_curvature(Cubic{start, far, ins[1], node}, SegmentEnd::end);
+  EXPECT_GT(k14, target);
+  EXPECT_LT(k15, target);
+  EXPECT_NEAR(k14, 2.0 / (3.0 * 14 * 14), 1e-15);
+  // Out-handles, at random: a node stepping along a diagonal, the far handle anywhere on the
+  // side the curvature's sign asks for.
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int trial = 0; trial < 200; ++trial) {
+    const Vec2 p0{100, 100}, step{2, 1}, p3{400 + 50 * u(rng), 250 + 50 * u(rng)};
+    const Vec2 p2{250 + 80 * u(rng), 200 + 80 * u(rng)};
+    const double k = 0.002 * (1.5 + u(rng)) * (cross(step, p2 - p0) > 0 ? 1.0 : -1.0);
+    const std::vector<Vec2> outs = handles_for_curvature(p0, step, true, p2, p3, k);
+    for (const Vec2 h : outs) EXPECT_EQ(cross(h - p0, step), 0.0);
+    if (outs.size() < 2) continue;
+    const double k_short = node_curvature(Cubic{p0, outs[0], p2, p3}, SegmentEnd::start);
+    const double k_long = node_curvature(Cubic{p0, outs[1], p2, p3}, SegmentEnd::start);
+    EXPECT_GE(std::abs(k_short), std::abs(k) * (1 - 1e-12)) << "trial " << trial;
+    EXPECT_LE(std::abs(k_long), std::abs(k) * (1 + 1e-12)) << "trial " << trial;
+    EXPECT_EQ(outs[1] - outs[0], step);
+  }
+  // The far handle across the tangent the other way: no length gives that sign.
+  EXPECT_TRUE(handles_for_curvature(node, {0, -1}, false, {185, 450}, start, target).empty());
+}
+
 TEST(HandleSteps, ACurveLeavingADiagonalLineMeetsItWithoutVisibleCurvature) {
   // As above, along a diagonal line of direction about (3, 1), into a cubic whose far node
   // turns along a diagonal grid step (1, 1): a whole step of that handle moves the cubic's
