@@ -93,6 +93,7 @@ class SmoothingProblem {
     for (std::size_t i = 1; i < points.size(); ++i) u_[i] = u_[i - 1] + distance(points[i], points[i - 1]);
     const double total = u_.back() + (closed ? distance(points.back(), points.front()) : 0.0);
     for (double& v : u_) v /= total;
+    even_reach_ = total / (3.0 * spans);
   }
 
   /// The penalty with span s weighed by weight[s].
@@ -127,12 +128,36 @@ class SmoothingProblem {
     scale_ = data_.h.trace() / std::max(penalty_.h.trace(), 1e-300);
   }
 
-  /// The controls for λ = 10^e relative to the data's own weight.
+  /// The controls for λ = 10^e relative to the data's own weight. A control held on an end's
+  /// tangent line that would come within a quarter of its reach on an evenly drawn line (a
+  /// third of a span's length) of its end point, or behind it, is set at that reach: behind, the
+  /// curve leaves its end backwards and hooks round (Because We Build's Y, where a line ends:
+  /// the hook became a loop of 0.3 units in the cubics, κ·UPM 600 000), and held at a quarter
+  /// of the reach it turned so tightly that rounding folded it (dkg's P).
   std::vector<Vec2> solve(double e) const {
     const double lambda = std::pow(10.0, e) * scale_;
     const Eigen::MatrixXd h = data_.h + lambda * penalty_.h;
     const Eigen::VectorXd g = data_.g + lambda * penalty_.g;
-    Eigen::VectorXd z = h.ldlt().solve(g);
+    const Eigen::LDLT<Eigen::MatrixXd> factors = h.ldlt();
+    Eigen::VectorXd z = factors.solve(g);
+    std::vector<Eigen::Index> held;
+    for (const Control& k : controls_)
+      if (k.unknowns == 1 && z[k.var] < 0.25 * even_reach_) held.push_back(k.var);
+    if (!held.empty()) {
+      // The same least squares with those unknowns at the even reach (Lagrange multipliers):
+      // z − H⁻¹E (EᵀH⁻¹E)⁻¹ (Eᵀz − reach), E the columns of the held unknowns.
+      const Eigen::Index k = static_cast<Eigen::Index>(held.size());
+      Eigen::MatrixXd e = Eigen::MatrixXd::Zero(h.rows(), k);
+      for (Eigen::Index i = 0; i < k; ++i) e(held[i], i) = 1.0;
+      const Eigen::MatrixXd spread = factors.solve(e);
+      Eigen::MatrixXd s(k, k);
+      Eigen::VectorXd short_by(k);
+      for (Eigen::Index i = 0; i < k; ++i) {
+        short_by[i] = z[held[i]] - even_reach_;
+        for (Eigen::Index j = 0; j < k; ++j) s(i, j) = spread(held[i], j);
+      }
+      z -= spread * s.ldlt().solve(short_by);
+    }
     std::vector<Vec2> c;
     for (const Control& k : controls_) {
       Vec2 p = k.origin;
@@ -168,6 +193,7 @@ class SmoothingProblem {
   std::vector<SpanTerm> terms_;
   int unknowns_ = 0;
   std::vector<double> u_;
+  double even_reach_ = 0.0;  ///< of a control held on an end's tangent line, on an evenly drawn line
   Normal data_{0}, penalty_{0};
   double scale_ = 1.0;
 };

@@ -21,7 +21,11 @@ enum class SmoothingPenalty {
 };
 
 struct SmoothingEnds {
-  std::optional<Vec2> start_tangent, end_tangent;  ///< held when given (open sequences only)
+  /// Held when given (open sequences only), and left forwards: a control on the tangent line
+  /// that would lie behind the end point or within a twelfth of a span's length of it is put
+  /// a third of a span's length ahead, so the curve cannot follow points that double back
+  /// there and hook round.
+  std::optional<Vec2> start_tangent, end_tangent;
 };
 
 /// `span_count` uniform spans (reduced when there are too few points). Open: clamped knots,

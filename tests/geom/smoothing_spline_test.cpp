@@ -154,6 +154,31 @@ CurvatureWalk walk_curvature(const BSplineFit& fit) {
 // 8/r) and is 0 on the sides. Wobbles of 2 units under a tolerance of 3 leave a squared penalty
 // little room: it spreads the change of curvature, so the sides bend (κ·r about −0.075) and the
 // variation grows by a quarter; the sparse penalty keeps the change at the corners.
+// A run that leaves a line's end heading back along it for two units before it turns away (a
+// scan's noise where the stroke leaves the line; Because We Build's Y): the spline held to the
+// line's direction must leave the end forwards, not follow the points backwards and hook
+// round, and its tangent must never turn back against the held one.
+TEST(SmoothingSpline, AHeldEndTangentIsNeverLeftBackwards) {
+  std::vector<Vec2> pts;
+  for (int i = 0; i <= 160; ++i) {
+    const double s = 0.25 * i;  // a quarter unit apart: back 2 units, then round a turn of radius 10
+    pts.push_back(s <= 2.0 ? Vec2{-s, 0.0} : Vec2{-2.0 + 10.0 * std::sin((s - 2.0) / 10.0), 10.0 - 10.0 * std::cos((s - 2.0) / 10.0)});
+  }
+  SmoothingEnds ends;
+  ends.start_tangent = Vec2{1.0, 0.0};
+  for (const SmoothingPenalty penalty : {SmoothingPenalty::squared, SmoothingPenalty::sparse}) {
+    const BSplineFit fit = fit_smoothing_spline(pts, 1.0, 32, false, ends, penalty);
+    ASSERT_FALSE(fit.spans.empty());
+    EXPECT_LE(fit.max_residual, 1.001);
+    const Vec2 t0 = fit.spans.front().p[1] - fit.spans.front().p[0];
+    EXPECT_NEAR(t0.y, 0.0, 1e-9);
+    EXPECT_GT(t0.x, 0.0);
+    // Near its start the curve heads forwards: no cusp or loop at the end (held behind, the
+    // control pulled the curve back at once).
+    for (int k = 1; k <= 8; ++k) EXPECT_GT(derivatives_at(fit.spans.front(), k / 64.0).d1.x, 0.0) << "t " << k / 64.0;
+  }
+}
+
 TEST(SmoothingSpline, TheSparsePenaltyKeepsTheChangeOfCurvatureWhereItIs) {
   const double r = 60.0, tolerance = 3.0;
   const std::vector<Vec2> pts = noisy_rounded_rectangle(400.0, 300.0, r, 2.0, 7);
