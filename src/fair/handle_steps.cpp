@@ -368,7 +368,8 @@ class NodeChange {
   // The curvature extrema both cubics at i add, weighed as the cubic choice weighs them.
   double turns_cost() const {
     double cost = 0.0;
-    for (const std::size_t k : {h_, i_}) cost += turn_cost(judge_.traits(k, outline_cubic(nodes_, k)).shape.turns - judge_.unrounded(k).shape.turns);
+    for (const std::size_t k : {h_, i_})
+      cost += turn_cost(judge_.traits(k, outline_cubic(nodes_, k)).shape.turns - judge_.unrounded(k).shape.turns);
     return cost;
   }
 
@@ -582,7 +583,8 @@ std::vector<Vec2> handles_for_curvature(Vec2 node, Vec2 step, bool out, Vec2 far
   if (m * length > 2.0 * distance(node, other_end)) return {};
   std::vector<Vec2> handles;
   for (const double whole : {std::floor(m), std::ceil(m)})
-    if (whole >= 1.0 && (handles.empty() || whole != std::floor(m))) handles.push_back(node + step * ((out ? 1.0 : -1.0) * whole));
+    if (whole >= 1.0 && (handles.empty() || whole != std::floor(m)))
+      handles.push_back(node + step * ((out ? 1.0 : -1.0) * whole));
   return handles;
 }
 

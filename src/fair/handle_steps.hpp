@@ -58,7 +58,9 @@ std::vector<Vec2> handles_for_curvature(Vec2 node, Vec2 step, bool out, Vec2 far
 /// the curve little), none gains an inflection, an H/V extremum or a handle reaching far past
 /// its chord (overreach_length: of several, the least reach), and curvature variation
 /// inside a cubic beyond its unrounded self's costs (a third of the weight of a matching jump
-/// at a node).
+/// at a node), as does a curvature extremum it adds (less than a jump over the target, so G2
+/// comes first). Where no whole step near the rounded length gives an end at a smooth node its
+/// unrounded curvature, the lengths aimed at it (handles_for_curvature) are tried too.
 void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal,
                          std::span<const std::optional<Vec2>> grid_steps, bool closed, const HandleStepLimits& limits);
 

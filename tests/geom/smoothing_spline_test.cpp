@@ -162,7 +162,8 @@ TEST(SmoothingSpline, AHeldEndTangentIsNeverLeftBackwards) {
   std::vector<Vec2> pts;
   for (int i = 0; i <= 160; ++i) {
     const double s = 0.25 * i;  // a quarter unit apart: back 2 units, then round a turn of radius 10
-    pts.push_back(s <= 2.0 ? Vec2{-s, 0.0} : Vec2{-2.0 + 10.0 * std::sin((s - 2.0) / 10.0), 10.0 - 10.0 * std::cos((s - 2.0) / 10.0)});
+    const double a = (s - 2.0) / 10.0;
+    pts.push_back(s <= 2.0 ? Vec2{-s, 0.0} : Vec2{-2.0 + 10.0 * std::sin(a), 10.0 - 10.0 * std::cos(a)});
   }
   SmoothingEnds ends;
   ends.start_tangent = Vec2{1.0, 0.0};
