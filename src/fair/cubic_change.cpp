@@ -9,6 +9,7 @@
 #include "geom/critical_points.hpp"
 #include "geom/curvature.hpp"
 #include "geom/polyline_distance.hpp"
+#include "geom/turning.hpp"
 
 namespace gf {
 
@@ -34,6 +35,14 @@ int inner_axis_extrema(const Cubic& c) {
 double overreach_length(const Cubic& c) {
   const double reach = 2.0 * distance(c.p[0], c.p[3]) + 2.0;
   return std::max({0.0, distance(c.p[0], c.p[1]) - reach, distance(c.p[3], c.p[2]) - reach});
+}
+
+double cubic_turning(const Cubic& c) {
+  const std::optional<Vec2> start = end_tangent(c, SegmentEnd::start), end = end_tangent(c, SegmentEnd::end);
+  if (!start || !end) return 0.0;
+  std::array<Vec2, 25> pts;
+  for (std::size_t k = 0; k < pts.size(); ++k) pts[k] = c.point_at(static_cast<double>(k) / 24.0);
+  return absolute_turning(*start, pts, *end);
 }
 
 CurvatureShape curvature_shape(const Cubic& c, double hysteresis) {

@@ -22,6 +22,11 @@ int inner_axis_extrema(const Cubic& c);
 /// stay within its chord unless it turns through more than 180°).
 double overreach_length(const Cubic& c);
 
+/// How far a cubic turns, every bend counted by its size (geom/turning, at 24ths of its
+/// parameter between its end tangents): a loop or a cusp turns a half turn or more beyond its
+/// end tangents' angle.
+double cubic_turning(const Cubic& c);
+
 /// How κ runs along a cubic: at sixteenths of its parameter, how often its sign changes (κ = 0
 /// has no sign), its total variation and its largest magnitude; at thirty-seconds, how often it
 /// turns (an extremum), each rise or fall counted once it exceeds `hysteresis`, so sampling

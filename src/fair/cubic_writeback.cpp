@@ -12,6 +12,7 @@
 #include "geom/curvature.hpp"
 #include "geom/g2_hermite.hpp"
 #include "geom/polyline_distance.hpp"
+#include "geom/turning.hpp"
 
 namespace gf {
 
@@ -232,20 +233,6 @@ std::vector<Vec2> cubic_points(const Cubic& c) {
 double cubic_deviation(std::span<const Vec2> pts, const std::vector<Vec2>& lac, double stop_above) {
   const double there = directed_hausdorff(pts, lac, stop_above);
   return there > stop_above ? there : std::max(there, directed_hausdorff(lac, pts, stop_above));
-}
-
-// How far a curve sampled as `points` turns from tangent `start` to tangent `end`, every bend
-// of its polyline counted by its size.
-double absolute_turning(Vec2 start, std::span<const Vec2> points, Vec2 end) {
-  double total = 0.0;
-  Vec2 last = start;
-  for (std::size_t i = 1; i < points.size(); ++i) {
-    const Vec2 v = points[i] - points[i - 1];
-    if (norm(v) == 0.0) continue;
-    total += std::abs(turning_angle(last, v));
-    last = v;
-  }
-  return total + std::abs(turning_angle(last, end));
 }
 
 struct Piece {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <numbers>
 
 #include "fair/cubic_change.hpp"
 #include "geom/curvature.hpp"
@@ -30,6 +31,11 @@ constexpr double variation_weight = 3.0;
 // jump over the target (at least 4) and G2 stays first. Measured, a-z A-Z: dkg extrema 0.77 ->
 // 0.70x, Because We Learn 0.79 -> 0.72x; uncapped, Inter's g kept a jump.
 constexpr double turn_weight = 3.0, most_turn_cost = 1.9;
+// A cubic shorter than this (units) is checked for folding into a loop or cusp within its chord
+// (cubic_turning); a longer one that folds reaches past its chord (overreach_length). Because
+// We Create's brush ends: 3-unit cubics rounded into loops, 14 of its 54 missing extrema.
+constexpr double fold_chord = 16.0;
+constexpr double fold_turn = 0.5 * std::numbers::pi;  // turning beyond the unrounded cubic's
 double turn_cost(int added) { return std::min(most_turn_cost, turn_weight * std::max(0, added)); }
 
 // The jump between two curvatures, relative to the larger unless both are flat.
@@ -106,6 +112,7 @@ struct CubicTraits {
   CurvatureShape shape;
   int extrema = 0;  ///< horizontal or vertical turns inside
   double overreach = 0.0;  ///< how far a handle reaches past the chord (overreach_length)
+  double turning = 0.0;  ///< of a cubic shorter than fold_chord (cubic_turning), else 0
 };
 
 // Every cubic of the outline against its unrounded self. How far each may move to gain G2 is
@@ -143,7 +150,7 @@ class CubicJudge {
   CubicTraits measure(std::size_t i, const Cubic& c) const {
     return {node_curvature(c, SegmentEnd::start), node_curvature(c, SegmentEnd::end),
             moved_distance(c, unrounded_[i], allowed_[i]), curvature_shape(c, hysteresis_), inner_axis_extrema(c),
-            overreach_length(c)};
+            overreach_length(c), distance(c.p[0], c.p[3]) < fold_chord ? cubic_turning(c) : 0.0};
   }
 
   std::vector<Cubic> unrounded_;
@@ -199,6 +206,8 @@ CubicChoices cubic_choices(const std::vector<OutlineNode>& nodes, std::span<cons
         if (t.extrema > ideal.extrema) cost += wrong_way;
         // Nor fold back on itself past its chord.
         if (t.overreach > ideal.overreach) cost += wrong_way * (1.0 + t.overreach);
+        // Nor, short, loop or cusp within it.
+        if (t.turning > ideal.turning + fold_turn) cost += wrong_way;
         // Nor gain a curvature extremum (a wobble of the comb).
         cost += turn_cost(t.shape.turns - ideal.shape.turns);
         // Nor gain curvature variation inside (a spike a comb would show), beyond a little.
@@ -307,7 +316,7 @@ class NodeChange {
     for (const std::size_t k : {h_, i_}) {
       const CubicTraits &a = judge.unrounded(k), &b = judge.traits(k, outline_cubic(nodes, k));
       most_.push_back({std::max(a.shape.sign_changes, b.shape.sign_changes), std::max(a.extrema, b.extrema),
-                       std::max(a.overreach, b.overreach)});
+                       std::max(a.overreach, b.overreach), std::max(a.turning, b.turning)});
     }
     // The cubics beyond the neighbours stay as they are: their curvature there, once.
     const std::size_t n = nodes.size();
@@ -352,7 +361,7 @@ class NodeChange {
       const CubicTraits& t = judge_.traits(k, outline_cubic(nodes_, k));
       const Most& most = most_[side];
       if (t.moved > judge_.allowed(k) || t.shape.sign_changes > most.sign_changes || t.extrema > most.extrema ||
-          t.overreach > most.overreach)
+          t.overreach > most.overreach || t.turning > most.turning + fold_turn)
         return false;
     }
     return true;
@@ -396,7 +405,7 @@ class NodeChange {
   // Per cubic at i, the most of each fault its unrounded self or its state before the change has.
   struct Most {
     int sign_changes, extrema;
-    double overreach;
+    double overreach, turning;
   };
   std::vector<Most> most_;
 };

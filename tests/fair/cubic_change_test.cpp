@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <numbers>
+
 namespace gf {
 namespace {
 
@@ -28,6 +31,19 @@ TEST(CurvatureShape, AQuarterCircleApproximantOnlyWobbles) {
 TEST(CurvatureShape, MonotoneCurvatureAndStraightLinesDoNotTurn) {
   EXPECT_EQ(turns(Cubic{{0, 0}, {1, 0}, {2, 0.5}, {3, 1.5}}, 1e-9), 0);
   EXPECT_EQ(turns(Cubic{{0, 0}, {1, 1}, {2, 2}, {3, 3}}, 1e-9), 0);
+}
+
+TEST(CubicTurning, ArcsTurnTheirAngleAndLoopsTurnTheLongWayRound) {
+  // A quarter-circle approximant turns π/2 (its polyline at 24ths within 1e-3 of it); a
+  // straight cubic not at all; a cubic whose handles cross over turns the long way round, a
+  // whole turn less the angle between its end tangents, where an arc would turn that angle:
+  // what the rounding's fold test (a quarter turn more than the unrounded cubic) catches.
+  EXPECT_NEAR(cubic_turning(Cubic{{0, 0}, {0, 0.5523}, {0.4477, 1}, {1, 1}}), std::numbers::pi / 2, 1e-3);
+  EXPECT_NEAR(cubic_turning(Cubic{{0, 0}, {1, 1}, {2, 2}, {3, 3}}), 0.0, 1e-12);
+  const Cubic loop{{0, 0}, {3, 2}, {-1, 2}, {2, 0}};
+  const double ends = std::abs(turning_angle(loop.p[1] - loop.p[0], loop.p[3] - loop.p[2]));
+  EXPECT_NEAR(cubic_turning(loop), 2.0 * std::numbers::pi - ends, 1e-2);
+  EXPECT_GT(cubic_turning(loop), ends + std::numbers::pi / 2);
 }
 
 }  // namespace
