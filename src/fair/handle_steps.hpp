@@ -55,8 +55,9 @@ std::vector<Vec2> handles_for_curvature(Vec2 node, Vec2 step, bool out, Vec2 far
 /// node still jumping where κ = 0 holds exactly on both sides; and chooses the steps again around
 /// what moved, at most sixteen passes. `ideal` is the outline before rounding; no cubic moves
 /// farther from it than the limits allow (as a curve: a handle slid along its tangent moves
-/// the curve little), none gains an inflection, an H/V extremum or a handle reaching far past
-/// its chord (overreach_length: of several, the least reach), and curvature variation
+/// the curve little), none gains an inflection, an H/V extremum, a handle reaching far past
+/// its chord (overreach_length: of several, the least reach) or, shorter than 16 units, a loop
+/// or cusp (cubic_turning), and curvature variation
 /// inside a cubic beyond its unrounded self's costs (a third of the weight of a matching jump
 /// at a node), as does a curvature extremum it adds (less than a jump over the target, so G2
 /// comes first). Where no whole step near the rounded length gives an end at a smooth node its
