@@ -55,6 +55,15 @@ std::optional<double> steps_to_line(Vec2 node, Vec2 step, double sign, Vec2 line
   return -cross(line_dir, node - line_point) / across;
 }
 
+// The handles node + sign·m·step at the whole counts m either side of `steps` (one where it is
+// whole), none under one step.
+std::vector<Vec2> whole_steps_around(Vec2 node, Vec2 step, double sign, double steps) {
+  std::vector<Vec2> handles;
+  for (const double whole : {std::floor(steps), std::ceil(steps)})
+    if (whole >= 1.0 && (handles.empty() || whole != std::floor(steps))) handles.push_back(node + step * (sign * whole));
+  return handles;
+}
+
 // Where one handle of a node may go: whole steps along the node's grid direction, a unit
 // either way for a corner's handle, else where it is. The rounded position comes first.
 std::vector<Vec2> handle_candidates(const OutlineNode& node, std::optional<Vec2> step, bool out) {
@@ -229,12 +238,12 @@ CubicChoices cubic_choices(const std::vector<OutlineNode>& nodes, std::span<cons
     end_met = end_met || jump(c.k_end[s], ideal.k_end, flat) <= target_jump;
   }
   if (start_met && end_met) return c;
-  const std::vector<Vec2> outs = c.outs, ins = c.ins;
+  const std::size_t outs = c.outs.size(), ins = c.ins.size();
   if (!start_met)
-    for (const Vec2 far : ins) add(c.outs, handles_for_curvature(p0, *steps[i], true, far, p3, ideal.k_start));
-  if (!end_met)
-    for (const Vec2 far : outs) add(c.ins, handles_for_curvature(p3, *steps[j], false, far, p0, ideal.k_end));
-  if (c.outs.size() != outs.size() || c.ins.size() != ins.size()) weigh();
+    for (std::size_t k = 0; k < ins; ++k) add(c.outs, handles_for_curvature(p0, *steps[i], true, c.ins[k], p3, ideal.k_start));
+  if (!end_met)  // against the far handles as they were, not those just aimed
+    for (std::size_t k = 0; k < outs; ++k) add(c.ins, handles_for_curvature(p3, *steps[j], false, c.outs[k], p0, ideal.k_end));
+  if (c.outs.size() != outs || c.ins.size() != ins) weigh();
   return c;
 }
 
@@ -576,11 +585,7 @@ bool choose_run_steps(std::vector<OutlineNode>& nodes, std::span<const std::opti
 
 std::vector<Vec2> handles_near_line(Vec2 node, Vec2 step, double sign, Vec2 line_point, Vec2 line_dir) {
   const std::optional<double> m = steps_to_line(node, step, sign, line_point, line_dir);
-  if (!m) return {};
-  std::vector<Vec2> out;
-  for (const double whole : {std::floor(*m), std::ceil(*m)})
-    if (whole >= 1.0 && (out.empty() || whole != std::floor(*m))) out.push_back(node + step * (sign * whole));
-  return out;
+  return m ? whole_steps_around(node, step, sign, *m) : std::vector<Vec2>{};
 }
 
 std::vector<Vec2> handles_for_curvature(Vec2 node, Vec2 step, bool out, Vec2 far, Vec2 other_end, double target) {
@@ -590,11 +595,7 @@ std::vector<Vec2> handles_for_curvature(Vec2 node, Vec2 step, bool out, Vec2 far
   if (d * target <= 0.0) return {};
   const double m = std::sqrt(2.0 * d / (3.0 * target)) / length;
   if (m * length > 2.0 * distance(node, other_end)) return {};
-  std::vector<Vec2> handles;
-  for (const double whole : {std::floor(m), std::ceil(m)})
-    if (whole >= 1.0 && (handles.empty() || whole != std::floor(m)))
-      handles.push_back(node + step * ((out ? 1.0 : -1.0) * whole));
-  return handles;
+  return whole_steps_around(node, step, out ? 1.0 : -1.0, m);
 }
 
 void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal,

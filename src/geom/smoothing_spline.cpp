@@ -13,6 +13,8 @@ namespace gf {
 
 namespace {
 
+constexpr double least_reach_share = 0.25;  // of a held control's even reach, below which it is set there
+
 // A control point as origin + Σ z[var] · direction: free (x and y), held to a line through an
 // end point (one unknown along the end tangent), or fixed (an interpolated end).
 struct Control {
@@ -142,7 +144,7 @@ class SmoothingProblem {
     Eigen::VectorXd z = factors.solve(g);
     std::vector<Eigen::Index> held;
     for (const Control& k : controls_)
-      if (k.unknowns == 1 && z[k.var] < 0.25 * even_reach_) held.push_back(k.var);
+      if (k.unknowns == 1 && z[k.var] < least_reach_share * even_reach_) held.push_back(k.var);
     if (!held.empty()) {
       // The same least squares with those unknowns at the even reach (Lagrange multipliers):
       // z − H⁻¹E (EᵀH⁻¹E)⁻¹ (Eᵀz − reach), E the columns of the held unknowns.

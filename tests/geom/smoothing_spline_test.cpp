@@ -150,14 +150,10 @@ CurvatureWalk walk_curvature(const BSplineFit& fit) {
   return w;
 }
 
-// The rounded rectangle's κ rises and falls once per corner (eight extrema, total variation
-// 8/r) and is 0 on the sides. Wobbles of 2 units under a tolerance of 3 leave a squared penalty
-// little room: it spreads the change of curvature, so the sides bend (κ·r about −0.075) and the
-// variation grows by a quarter; the sparse penalty keeps the change at the corners.
 // A run that leaves a line's end heading back along it for two units before it turns away (a
 // scan's noise where the stroke leaves the line; Because We Build's Y): the spline held to the
 // line's direction must leave the end forwards, not follow the points backwards and hook
-// round, and its tangent must never turn back against the held one.
+// round.
 TEST(SmoothingSpline, AHeldEndTangentIsNeverLeftBackwards) {
   std::vector<Vec2> pts;
   for (int i = 0; i <= 160; ++i) {
@@ -180,6 +176,10 @@ TEST(SmoothingSpline, AHeldEndTangentIsNeverLeftBackwards) {
   }
 }
 
+// The rounded rectangle's κ rises and falls once per corner (eight extrema, total variation
+// 8/r) and is 0 on the sides. Wobbles of 2 units under a tolerance of 3 leave a squared penalty
+// little room: it spreads the change of curvature, so the sides bend (κ·r about −0.075) and the
+// variation grows by a quarter; the sparse penalty keeps the change at the corners.
 TEST(SmoothingSpline, TheSparsePenaltyKeepsTheChangeOfCurvatureWhereItIs) {
   const double r = 60.0, tolerance = 3.0;
   const std::vector<Vec2> pts = noisy_rounded_rectangle(400.0, 300.0, r, 2.0, 7);
