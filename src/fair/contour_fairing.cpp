@@ -19,6 +19,10 @@ namespace gf {
 
 namespace {
 
+// Rounds of polishing the joins rounding leaves jumping (HandleStepLimits::polish_rounds): a
+// handwriting font's a-z A-Z changed no further after three.
+constexpr int handwriting_polish_rounds = 3;
+
 // Points along a contour, dense enough that chords stay within a small fraction of a unit of
 // the curve for glyph-sized curvature, and for each the segment whose stretch of polyline (to
 // the next point) it starts.
@@ -317,7 +321,8 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
     if (round && d <= settings.tolerance_units) {
       // What the float outline leaves of the tolerance, segment by segment, is what rounding
       // may spend on G2 there (5 % kept for sampling).
-      HandleStepLimits limits{settings.flat_curvature, 0.95 * (settings.tolerance_units - d), {}};
+      HandleStepLimits limits{settings.flat_curvature, 0.95 * (settings.tolerance_units - d), {},
+                              settings.profile == FairProfile::handwriting ? handwriting_polish_rounds : 0};
       for (const double e : by_segment) limits.allowance_by_cubic.push_back(0.95 * (settings.tolerance_units - e));
       faired = to_contour(round_to_grid(a.nodes, source.closed, limits), source.closed);
       d = distance_between(SampledContour(faired), sampled_source);

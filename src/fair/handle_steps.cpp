@@ -178,22 +178,28 @@ struct CubicChoices {
   std::size_t states() const { return outs.size() * ins.size(); }
 };
 
+// `as_is`: the one choice of the handles where they are (a cubic a choice only weighs).
 CubicChoices cubic_choices(const std::vector<OutlineNode>& nodes, std::span<const std::optional<Vec2>> steps,
                            std::size_t i, std::size_t j, CubicJudge& judge, double flat, bool line_before,
-                           bool line_after) {
+                           bool line_after, bool as_is = false) {
   CubicChoices c;
   c.start = i, c.end = j;
-  c.outs = handle_candidates(nodes[i], steps[i], true);
-  c.ins = handle_candidates(nodes[j], steps[j], false);
+  c.outs = as_is ? std::vector<Vec2>{*nodes[i].out_handle} : handle_candidates(nodes[i], steps[i], true);
+  c.ins = as_is ? std::vector<Vec2>{*nodes[j].in_handle} : handle_candidates(nodes[j], steps[j], false);
   auto add = [](std::vector<Vec2>& to, const std::vector<Vec2>& more) {
     for (const Vec2 h : more)
       if (std::find(to.begin(), to.end(), h) == to.end()) to.push_back(h);
   };
-  if (line_before && steps[i]) add(c.ins, handles_meeting_line(nodes[j], steps[j], false, nodes[i], *steps[i]));
-  if (line_after && steps[j]) add(c.outs, handles_meeting_line(nodes[i], steps[i], true, nodes[j], *steps[j]));
   const Vec2 p0 = nodes[i].point, p3 = nodes[j].point;
   const double allowed = judge.allowed(i);
   const CubicTraits& ideal = judge.unrounded(i);
+  // κ = 0 at an end that meets a line, or at a smooth node flat before rounding (an inflection):
+  // the far handles nearest that end's tangent line join the choices (seat_inflections moves
+  // the node itself for them).
+  const bool zero_start = line_before || (nodes[i].smooth && std::abs(ideal.k_start) < flat);
+  const bool zero_end = line_after || (nodes[j].smooth && std::abs(ideal.k_end) < flat);
+  if (zero_start && steps[i] && !as_is) add(c.ins, handles_meeting_line(nodes[j], steps[j], false, nodes[i], *steps[i]));
+  if (zero_end && steps[j] && !as_is) add(c.outs, handles_meeting_line(nodes[i], steps[i], true, nodes[j], *steps[j]));
   auto weigh = [&] {
     c.k_start.clear(), c.k_end.clear(), c.cost.clear();
     for (const Vec2 out : c.outs)
@@ -237,7 +243,7 @@ CubicChoices cubic_choices(const std::vector<OutlineNode>& nodes, std::span<cons
     start_met = start_met || jump(c.k_start[s], ideal.k_start, flat) <= target_jump;
     end_met = end_met || jump(c.k_end[s], ideal.k_end, flat) <= target_jump;
   }
-  if (start_met && end_met) return c;
+  if ((start_met && end_met) || as_is) return c;
   const std::size_t outs = c.outs.size(), ins = c.ins.size();
   if (!start_met)
     for (std::size_t k = 0; k < ins; ++k) add(c.outs, handles_for_curvature(p0, *steps[i], true, c.ins[k], p3, ideal.k_start));
@@ -432,6 +438,18 @@ std::vector<Vec2> directions_near(Vec2 tangent, double most, int longest) {
   return out;
 }
 
+// The directions node i may take on the grid: its own step and, where that is not horizontal or
+// vertical (an extremum's must stay so), the primitive directions within `turn` of its
+// unrounded tangent, only of at most 10 units a side: whole steps of a longer one are too coarse
+// to set curvature by (and each direction costs a search).
+std::vector<Vec2> node_directions(Vec2 step, const OutlineNode& target) {
+  std::vector<Vec2> directions{step};
+  if (step.x != 0.0 && step.y != 0.0)
+    for (const Vec2 d : directions_near(*target.out_handle - *target.in_handle, turn, 10))
+      if (d != step && d.x != 0.0 && d.y != 0.0) directions.push_back(d);
+  return directions;
+}
+
 // Where whole steps alone leave a jump, the node itself may move a unit (its handles with it,
 // G1 stays exact) and its two handles a step or three: the curvatures of both its cubics
 // change at both their ends, so the jumps at the two neighbours count too. A node whose
@@ -448,12 +466,7 @@ std::vector<std::size_t> nudge_jumping_nodes(std::vector<OutlineNode>& nodes, co
     if (!change.needs_change()) continue;
     const OutlineNode kept = nodes[i];
     const OutlineNode& target = ideal[i];
-    // Turned, only to steps of at most 10 units a side: whole steps of a longer one are too
-    // coarse to set curvature by (and each direction costs a search).
-    std::vector<Vec2> directions{*steps[i]};
-    if (steps[i]->x != 0.0 && steps[i]->y != 0.0)
-      for (const Vec2 d : directions_near(*target.out_handle - *target.in_handle, turn, 10))
-        if (d != *steps[i] && d.x != 0.0 && d.y != 0.0) directions.push_back(d);
+    const std::vector<Vec2> directions = node_directions(*steps[i], target);
     OutlineNode best = kept;
     Vec2 best_step = *steps[i];
     double best_cost = change.cost();
@@ -548,10 +561,15 @@ std::vector<std::size_t> seat_inflections(std::vector<OutlineNode>& nodes, const
 
 // The whole steps of one run of cubics joined at smooth nodes (the nodes starting them, in
 // order), chosen together (Viterbi; a run that closes on itself with each state of its first
-// cubic in turn). Returns whether any handle moved.
-bool choose_run_steps(std::vector<OutlineNode>& nodes, std::span<const std::optional<Vec2>> steps,
-                      const OutlineJoins& joins, std::span<const std::size_t> cubics, bool cycle, CubicJudge& judge,
-                      double flat) {
+// cubic in turn): the choices and the cheapest states.
+struct RunSteps {
+  std::vector<CubicChoices> run;
+  RunChoice best;
+};
+
+RunSteps best_run_steps(const std::vector<OutlineNode>& nodes, std::span<const std::optional<Vec2>> steps,
+                        const OutlineJoins& joins, std::span<const std::size_t> cubics, bool cycle, CubicJudge& judge,
+                        double flat) {
   const std::size_t n = nodes.size();
   std::vector<CubicChoices> run;
   for (const std::size_t i : cubics) {
@@ -568,6 +586,14 @@ bool choose_run_steps(std::vector<OutlineNode>& nodes, std::span<const std::opti
   } else {
     best = best_run(run, flat, std::nullopt);
   }
+  return {std::move(run), std::move(best)};
+}
+
+// The run's handles set to the cheapest states. Returns whether any handle moved.
+bool choose_run_steps(std::vector<OutlineNode>& nodes, std::span<const std::optional<Vec2>> steps,
+                      const OutlineJoins& joins, std::span<const std::size_t> cubics, bool cycle, CubicJudge& judge,
+                      double flat) {
+  const auto [run, best] = best_run_steps(nodes, steps, joins, cubics, cycle, judge, flat);
   if (best.cost == infeasible) return false;
   bool moved = false;
   for (std::size_t k = 0; k < run.size(); ++k) {
@@ -577,6 +603,123 @@ bool choose_run_steps(std::vector<OutlineNode>& nodes, std::span<const std::opti
     moved = moved || nodes[c.start].out_handle != out || nodes[c.end].in_handle != in;
     nodes[c.start].out_handle = out;
     nodes[c.end].in_handle = in;
+  }
+  return moved;
+}
+
+// The cubics of a run around one node, re-chosen while that node is tried in other places:
+// two cubics either side of it, between the fixed cubics next to them (whose curvature at the
+// window's ends still counts); the whole run where it is that short.
+struct RunWindow {
+  std::vector<std::size_t> cubics;  ///< node indices starting the cubics re-chosen
+  std::optional<std::size_t> before, after;  ///< the fixed cubics at its ends
+  bool whole_cycle = false;                  ///< the whole of a run that closes on itself
+};
+
+RunWindow window_around(std::span<const std::size_t> run, bool cycle, std::size_t position) {
+  constexpr std::size_t side = 2;
+  const std::size_t m = run.size();
+  RunWindow w;
+  if (cycle && m <= 2 * side + 2) {
+    w.cubics.assign(run.begin(), run.end());
+    w.whole_cycle = true;
+    return w;
+  }
+  const std::ptrdiff_t size = static_cast<std::ptrdiff_t>(m);
+  const auto at = [&](std::ptrdiff_t k) -> std::optional<std::size_t> {
+    if (cycle) return run[static_cast<std::size_t>((k % size + size) % size)];
+    if (k < 0 || k >= size) return std::nullopt;
+    return run[static_cast<std::size_t>(k)];
+  };
+  const std::ptrdiff_t q = static_cast<std::ptrdiff_t>(position), s = static_cast<std::ptrdiff_t>(side);
+  for (std::ptrdiff_t k = q - s; k < q + s; ++k)
+    if (const auto c = at(k)) w.cubics.push_back(*c);
+  w.before = at(q - s - 1), w.after = at(q + s);
+  return w;
+}
+
+// The cheapest handles of the window's cubics with its nodes where they are now, and their cost.
+struct WindowChoice {
+  std::vector<CubicChoices> run;  ///< the fixed end cubics first and last, as one state each
+  RunChoice best;
+};
+
+// The window's choices, those of cubics not touching node `moving` reused from `known` (the
+// same window with that node elsewhere) when given.
+WindowChoice choose_window(const std::vector<OutlineNode>& nodes, std::span<const std::optional<Vec2>> steps,
+                           const OutlineJoins& joins, const RunWindow& w, CubicJudge& judge, double flat,
+                           std::size_t moving, const WindowChoice* known = nullptr) {
+  if (w.whole_cycle) {
+    RunSteps r = best_run_steps(nodes, steps, joins, w.cubics, true, judge, flat);
+    return {std::move(r.run), std::move(r.best)};
+  }
+  const std::size_t n = nodes.size();
+  const auto choices = [&](std::size_t i, bool as_is) {
+    const std::size_t j = (i + 1) % n;
+    return cubic_choices(nodes, steps, i, j, judge, flat, joins.meets_line(i), joins.meets_line(j), as_is);
+  };
+  WindowChoice out;
+  if (w.before) out.run.push_back(choices(*w.before, true));
+  for (const std::size_t i : w.cubics) {
+    const std::size_t k = out.run.size();
+    const bool touches = i == moving || (i + 1) % n == moving;
+    out.run.push_back(known && !touches ? known->run[k] : choices(i, false));
+  }
+  if (w.after) out.run.push_back(choices(*w.after, true));
+  out.best = best_run(out.run, flat, std::nullopt);
+  return out;
+}
+
+// Where a run still jumps once the passes end: each node at a jump, or next to one, moved to
+// the grid points next to it and turned to the primitive directions near its tangent (its
+// handles as many steps long as they were), with the handles of the cubics around it chosen
+// again for each place (choose_window), so that a move which needs its neighbours' handles to
+// follow is seen at its worth. The cheapest stands. Returns whether any node moved.
+bool polish_jumping_run(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal,
+                        std::vector<std::optional<Vec2>>& steps, const OutlineJoins& joins,
+                        std::span<const std::size_t> cubics, bool cycle, CubicJudge& judge, double flat) {
+  bool moved = false;
+  const std::size_t n = nodes.size();
+  for (std::size_t q = 0; q < cubics.size(); ++q) {
+    const std::size_t i = cubics[q];
+    if (!joins.joins_cubics(i) || !steps[i]) continue;
+    if (join_jump(joins, i, flat) <= target_jump && join_jump(joins, (i + 1) % n, flat) <= target_jump &&
+        join_jump(joins, (i + n - 1) % n, flat) <= target_jump)
+      continue;
+    const RunWindow window = window_around(cubics, cycle, q);
+    const WindowChoice now = choose_window(nodes, steps, joins, window, judge, flat, i);
+    double best_cost = now.best.cost;
+    const OutlineNode kept = nodes[i];
+    const Vec2 kept_step = *steps[i];
+    OutlineNode best = kept;
+    Vec2 best_step = kept_step;
+    for (const Vec2 d : node_directions(kept_step, ideal[i])) {
+      // Turned only while its own direction leaves a jump in the window (each costs at least 1).
+      if (d != kept_step && best_cost < 1.0) break;
+      const OutlineNode& from = d == kept_step ? kept : ideal[i];
+      const double m_in = std::max(1.0, whole_steps(from.point, *from.in_handle, d, -1.0));
+      const double m_out = std::max(1.0, whole_steps(from.point, *from.out_handle, d, 1.0));
+      for (const Vec2 p : node_places(kept.point, ideal[i].point)) {
+        if (p == kept.point && d == kept_step) continue;
+        nodes[i].point = p;
+        nodes[i].in_handle = p - d * m_in;
+        nodes[i].out_handle = p + d * m_out;
+        steps[i] = d;
+        const double c = choose_window(nodes, steps, joins, window, judge, flat, i, &now).best.cost;
+        if (c < best_cost) best_cost = c, best = nodes[i], best_step = d;
+      }
+    }
+    nodes[i] = best;
+    steps[i] = best_step;
+    if (best == kept) continue;
+    moved = true;
+    const WindowChoice chosen = choose_window(nodes, steps, joins, window, judge, flat, i, &now);
+    for (std::size_t k = 0; k < chosen.run.size(); ++k) {
+      const CubicChoices& c = chosen.run[k];
+      const std::size_t state = chosen.best.states[k];
+      nodes[c.start].out_handle = c.outs[state / c.ins.size()];
+      nodes[c.end].in_handle = c.ins[state % c.ins.size()];
+    }
   }
   return moved;
 }
@@ -647,6 +790,9 @@ void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<Outl
     for (std::size_t r = 0; r < runs.size(); ++r) again[r] = again[r] && still_jumps(runs[r]);
     if (std::none_of(again.begin(), again.end(), [](bool b) { return b; })) break;
   }
+  for (std::size_t r = 0; r < runs.size(); ++r)
+    for (int k = 0; k < limits.polish_rounds && still_jumps(runs[r]); ++k)
+      if (!polish_jumping_run(nodes, ideal, steps, joins, runs[r], cycle, judge, limits.flat_curvature)) break;
 }
 
 }  // namespace gf
