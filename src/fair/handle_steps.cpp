@@ -608,8 +608,9 @@ bool choose_run_steps(std::vector<OutlineNode>& nodes, std::span<const std::opti
 }
 
 // The cubics of a run around one node, re-chosen while that node is tried in other places:
-// two cubics either side of it, between the fixed cubics next to them (whose curvature at the
-// window's ends still counts); the whole run where it is that short.
+// three cubics either side of it, between the fixed cubics next to them (whose curvature at the
+// window's ends still counts); the whole run where it is that short. Three against two: dkg's
+// a–z A–Z g2-jumps 1.97 → 1.62 % for 0.6 % more instructions; one: 2.44 %.
 struct RunWindow {
   std::vector<std::size_t> cubics;  ///< node indices starting the cubics re-chosen
   std::optional<std::size_t> before, after;  ///< the fixed cubics at its ends
@@ -617,7 +618,7 @@ struct RunWindow {
 };
 
 RunWindow window_around(std::span<const std::size_t> run, bool cycle, std::size_t position) {
-  constexpr std::size_t side = 2;
+  constexpr std::size_t side = 3;
   const std::size_t m = run.size();
   RunWindow w;
   if (cycle && m <= 2 * side + 2) {
