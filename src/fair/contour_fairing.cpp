@@ -321,8 +321,9 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
     if (round && d <= settings.tolerance_units) {
       // What the float outline leaves of the tolerance, segment by segment, is what rounding
       // may spend on G2 there (5 % kept for sampling).
+      const bool hand = settings.profile == FairProfile::handwriting;
       HandleStepLimits limits{settings.flat_curvature, 0.95 * (settings.tolerance_units - d), {},
-                              settings.profile == FairProfile::handwriting ? handwriting_polish_rounds : 0};
+                              hand ? handwriting_polish_rounds : 0, hand};
       for (const double e : by_segment) limits.allowance_by_cubic.push_back(0.95 * (settings.tolerance_units - e));
       faired = to_contour(round_to_grid(a.nodes, source.closed, limits), source.closed);
       d = distance_between(SampledContour(faired), sampled_source);

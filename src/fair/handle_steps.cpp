@@ -131,7 +131,8 @@ class CubicJudge {
  public:
   CubicJudge(const std::vector<OutlineNode>& rounded, const std::vector<OutlineNode>& ideal,
              const OutlineJoins& joins, const HandleStepLimits& limits)
-      : unrounded_(rounded.size()), allowed_(rounded.size(), 0.0), ideal_(rounded.size()), seen_(rounded.size()) {
+      : unrounded_(rounded.size()), allowed_(rounded.size(), 0.0), ideal_(rounded.size()), seen_(rounded.size()),
+        inflection_handles_(limits.inflection_handles) {
     for (std::size_t i = 0; i < rounded.size(); ++i) {
       if (!joins.is_cubic(i)) continue;
       unrounded_[i] = outline_cubic(ideal, i);
@@ -145,6 +146,8 @@ class CubicJudge {
   }
 
   double allowed(std::size_t i) const { return allowed_[i]; }
+  /// HandleStepLimits::inflection_handles.
+  bool inflection_handles() const { return inflection_handles_; }
   const CubicTraits& unrounded(std::size_t i) const { return ideal_[i]; }
 
   /// The traits of `c` in the place of cubic i.
@@ -167,6 +170,7 @@ class CubicJudge {
   double hysteresis_ = 0.0;
   std::vector<CubicTraits> ideal_;
   std::vector<std::map<std::array<double, 8>, CubicTraits>> seen_;
+  bool inflection_handles_;
 };
 
 // One cubic of the outline and every choice of its two handles (state = out·ins + in).
@@ -193,11 +197,12 @@ CubicChoices cubic_choices(const std::vector<OutlineNode>& nodes, std::span<cons
   const Vec2 p0 = nodes[i].point, p3 = nodes[j].point;
   const double allowed = judge.allowed(i);
   const CubicTraits& ideal = judge.unrounded(i);
-  // κ = 0 at an end that meets a line, or at a smooth node flat before rounding (an inflection):
-  // the far handles nearest that end's tangent line join the choices (seat_inflections moves
-  // the node itself for them).
-  const bool zero_start = line_before || (nodes[i].smooth && std::abs(ideal.k_start) < flat);
-  const bool zero_end = line_after || (nodes[j].smooth && std::abs(ideal.k_end) < flat);
+  // κ = 0 at an end that meets a line, or at a smooth node flat before rounding (an inflection,
+  // where asked): the far handles nearest that end's tangent line join the choices
+  // (seat_inflections moves the node itself for them).
+  const bool inflection = judge.inflection_handles();
+  const bool zero_start = line_before || (inflection && nodes[i].smooth && std::abs(ideal.k_start) < flat);
+  const bool zero_end = line_after || (inflection && nodes[j].smooth && std::abs(ideal.k_end) < flat);
   if (zero_start && steps[i] && !as_is) add(c.ins, handles_meeting_line(nodes[j], steps[j], false, nodes[i], *steps[i]));
   if (zero_end && steps[j] && !as_is) add(c.outs, handles_meeting_line(nodes[i], steps[i], true, nodes[j], *steps[j]));
   auto weigh = [&] {
