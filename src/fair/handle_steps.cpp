@@ -594,22 +594,27 @@ RunSteps best_run_steps(const std::vector<OutlineNode>& nodes, std::span<const s
   return {std::move(run), std::move(best)};
 }
 
-// The run's handles set to the cheapest states. Returns whether any handle moved.
-bool choose_run_steps(std::vector<OutlineNode>& nodes, std::span<const std::optional<Vec2>> steps,
-                      const OutlineJoins& joins, std::span<const std::size_t> cubics, bool cycle, CubicJudge& judge,
-                      double flat) {
-  const auto [run, best] = best_run_steps(nodes, steps, joins, cubics, cycle, judge, flat);
-  if (best.cost == infeasible) return false;
+// The handles set to the cheapest states (none where every state is infeasible). Returns
+// whether any handle moved.
+bool apply_steps(std::vector<OutlineNode>& nodes, const RunSteps& chosen) {
+  if (chosen.best.cost == infeasible) return false;
   bool moved = false;
-  for (std::size_t k = 0; k < run.size(); ++k) {
-    const CubicChoices& c = run[k];
-    const std::size_t state = best.states[k];
+  for (std::size_t k = 0; k < chosen.run.size(); ++k) {
+    const CubicChoices& c = chosen.run[k];
+    const std::size_t state = chosen.best.states[k];
     const Vec2 out = c.outs[state / c.ins.size()], in = c.ins[state % c.ins.size()];
     moved = moved || nodes[c.start].out_handle != out || nodes[c.end].in_handle != in;
     nodes[c.start].out_handle = out;
     nodes[c.end].in_handle = in;
   }
   return moved;
+}
+
+// The run's handles set to the cheapest states. Returns whether any handle moved.
+bool choose_run_steps(std::vector<OutlineNode>& nodes, std::span<const std::optional<Vec2>> steps,
+                      const OutlineJoins& joins, std::span<const std::size_t> cubics, bool cycle, CubicJudge& judge,
+                      double flat) {
+  return apply_steps(nodes, best_run_steps(nodes, steps, joins, cubics, cycle, judge, flat));
 }
 
 // The cubics of a run around one node, re-chosen while that node is tried in other places:
@@ -644,34 +649,26 @@ RunWindow window_around(std::span<const std::size_t> run, bool cycle, std::size_
   return w;
 }
 
-// The cheapest handles of the window's cubics with its nodes where they are now, and their cost.
-struct WindowChoice {
-  std::vector<CubicChoices> run;  ///< the fixed end cubics first and last, as one state each
-  RunChoice best;
-};
-
-// The window's choices, those of cubics not touching node `moving` reused from `known` (the
-// same window with that node elsewhere) when given.
-WindowChoice choose_window(const std::vector<OutlineNode>& nodes, std::span<const std::optional<Vec2>> steps,
-                           const OutlineJoins& joins, const RunWindow& w, CubicJudge& judge, double flat,
-                           std::size_t moving, const WindowChoice* known = nullptr) {
-  if (w.whole_cycle) {
-    RunSteps r = best_run_steps(nodes, steps, joins, w.cubics, true, judge, flat);
-    return {std::move(r.run), std::move(r.best)};
-  }
+// The cheapest handles of the window's cubics with its nodes where they are now (the fixed end
+// cubics first and last in `run`, one state each); the choices of cubics not touching node
+// `moving` reused from `known` (the same window with that node elsewhere) when given.
+RunSteps choose_window(const std::vector<OutlineNode>& nodes, std::span<const std::optional<Vec2>> steps,
+                       const OutlineJoins& joins, const RunWindow& w, CubicJudge& judge, double flat,
+                       std::size_t moving, const RunSteps* known = nullptr) {
+  if (w.whole_cycle) return best_run_steps(nodes, steps, joins, w.cubics, true, judge, flat);
   const std::size_t n = nodes.size();
-  const auto choices = [&](std::size_t i, bool as_is) {
+  std::vector<std::pair<std::size_t, bool>> cubics;  // each cubic, and whether it stays as it is
+  if (w.before) cubics.emplace_back(*w.before, true);
+  for (const std::size_t i : w.cubics) cubics.emplace_back(i, false);
+  if (w.after) cubics.emplace_back(*w.after, true);
+  RunSteps out;
+  for (const auto& [i, as_is] : cubics) {
     const std::size_t j = (i + 1) % n;
-    return cubic_choices(nodes, steps, i, j, judge, flat, joins.meets_line(i), joins.meets_line(j), as_is);
-  };
-  WindowChoice out;
-  if (w.before) out.run.push_back(choices(*w.before, true));
-  for (const std::size_t i : w.cubics) {
-    const std::size_t k = out.run.size();
-    const bool touches = i == moving || (i + 1) % n == moving;
-    out.run.push_back(known && !touches ? known->run[k] : choices(i, false));
+    const bool touches = i == moving || j == moving;
+    out.run.push_back(known && !touches ? known->run[out.run.size()]
+                                        : cubic_choices(nodes, steps, i, j, judge, flat, joins.meets_line(i),
+                                                        joins.meets_line(j), as_is));
   }
-  if (w.after) out.run.push_back(choices(*w.after, true));
   out.best = best_run(out.run, flat, std::nullopt);
   return out;
 }
@@ -693,12 +690,13 @@ bool polish_jumping_run(std::vector<OutlineNode>& nodes, const std::vector<Outli
         join_jump(joins, (i + n - 1) % n, flat) <= target_jump)
       continue;
     const RunWindow window = window_around(cubics, cycle, q);
-    const WindowChoice now = choose_window(nodes, steps, joins, window, judge, flat, i);
+    const RunSteps now = choose_window(nodes, steps, joins, window, judge, flat, i);
     double best_cost = now.best.cost;
     const OutlineNode kept = nodes[i];
     const Vec2 kept_step = *steps[i];
     OutlineNode best = kept;
     Vec2 best_step = kept_step;
+    std::optional<RunSteps> best_window;
     for (const Vec2 d : node_directions(kept_step, ideal[i])) {
       // Turned only while its own direction leaves a jump in the window (each costs at least 1).
       if (d != kept_step && best_cost < 1.0) break;
@@ -711,21 +709,16 @@ bool polish_jumping_run(std::vector<OutlineNode>& nodes, const std::vector<Outli
         nodes[i].in_handle = p - d * m_in;
         nodes[i].out_handle = p + d * m_out;
         steps[i] = d;
-        const double c = choose_window(nodes, steps, joins, window, judge, flat, i, &now).best.cost;
-        if (c < best_cost) best_cost = c, best = nodes[i], best_step = d;
+        RunSteps tried = choose_window(nodes, steps, joins, window, judge, flat, i, &now);
+        if (tried.best.cost < best_cost)
+          best_cost = tried.best.cost, best = nodes[i], best_step = d, best_window = std::move(tried);
       }
     }
     nodes[i] = best;
     steps[i] = best_step;
-    if (best == kept) continue;
+    if (!best_window) continue;
     moved = true;
-    const WindowChoice chosen = choose_window(nodes, steps, joins, window, judge, flat, i, &now);
-    for (std::size_t k = 0; k < chosen.run.size(); ++k) {
-      const CubicChoices& c = chosen.run[k];
-      const std::size_t state = chosen.best.states[k];
-      nodes[c.start].out_handle = c.outs[state / c.ins.size()];
-      nodes[c.end].in_handle = c.ins[state % c.ins.size()];
-    }
+    apply_steps(nodes, *best_window);
   }
   return moved;
 }

@@ -63,7 +63,9 @@ std::vector<Vec2> handles_for_curvature(Vec2 node, Vec2 step, bool out, Vec2 far
 /// more ways than before rounding (an S no choice of whole steps undoes), by a unit with its
 /// handles, or turns it to a nearby primitive direction, where that helps; seats an inflection
 /// node still jumping where κ = 0 holds exactly on both sides; and chooses the steps again around
-/// what moved, at most sixteen passes. `ideal` is the outline before rounding; no cubic moves
+/// what moved, at most sixteen passes; then, `limits.polish_rounds` times over each run that
+/// still jumps, moves each node at or beside a jump with the handles around it chosen again.
+/// `ideal` is the outline before rounding; no cubic moves
 /// farther from it than the limits allow (as a curve: a handle slid along its tangent moves
 /// the curve little), none gains an inflection, an H/V extremum, a handle reaching far past
 /// its chord (overreach_length: of several, the least reach) or, shorter than 16 units, a loop
