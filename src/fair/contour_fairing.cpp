@@ -311,6 +311,7 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
       out.reason = a.failure;
       continue;
     }
+    drop_empty_cubics(a.nodes, source.closed);
     rotate_to_start(a.nodes, source.node_point(0));
     Contour faired = to_contour(a.nodes, source.closed);
     const SampledContour sampled(faired);
@@ -323,7 +324,7 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
       // may spend on G2 there (5 % kept for sampling).
       const bool hand = settings.profile == FairProfile::handwriting;
       HandleStepLimits limits{settings.flat_curvature, 0.95 * (settings.tolerance_units - d), {},
-                              hand ? handwriting_polish_rounds : 0, hand};
+                              hand ? handwriting_polish_rounds : 0, hand, hand};
       for (const double e : by_segment) limits.allowance_by_cubic.push_back(0.95 * (settings.tolerance_units - e));
       faired = to_contour(round_to_grid(a.nodes, source.closed, limits), source.closed);
       d = distance_between(SampledContour(faired), sampled_source);

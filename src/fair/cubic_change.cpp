@@ -47,19 +47,13 @@ double cubic_turning(const Cubic& c) {
 
 CurvatureShape curvature_shape(const Cubic& c, double hysteresis) {
   CurvatureShape shape;
-  double previous = 0.0, last_signed = 0.0, anchor = 0.0;
-  int direction = 0;
+  double previous = 0.0, last_signed = 0.0;
+  TurnCounter whole;
   for (int k = 0; k <= 32; ++k) {
     const double kappa = curvature(derivatives_at(c, k / 32.0)).value_or(0.0);
-    if (k == 0) {
-      anchor = kappa;
-    } else if (direction >= 0 && kappa < anchor - hysteresis) {
-      shape.turns += direction > 0, direction = -1, anchor = kappa;
-    } else if (direction <= 0 && kappa > anchor + hysteresis) {
-      shape.turns += direction < 0, direction = 1, anchor = kappa;
-    } else if (direction * (kappa - anchor) > 0.0) {
-      anchor = kappa;
-    }
+    whole.add(kappa, hysteresis);
+    if (k <= 16) shape.head[static_cast<std::size_t>(k)] = kappa;
+    if (k >= 16) shape.tail.add(kappa, hysteresis);
     if (k % 2 != 0) continue;
     if (k > 0) shape.variation += std::abs(kappa - previous);
     shape.largest = std::max(shape.largest, std::abs(kappa));
@@ -68,6 +62,7 @@ CurvatureShape curvature_shape(const Cubic& c, double hysteresis) {
     shape.sign_changes += last_signed * kappa < 0.0;
     last_signed = kappa;
   }
+  shape.turns = whole.turns;
   return shape;
 }
 

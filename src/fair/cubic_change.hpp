@@ -3,6 +3,8 @@
 // handles without adding a wobble, an inflection or an extremum the faired outline lacks.
 #pragma once
 
+#include <array>
+
 #include "geom/bezier.hpp"
 
 namespace gf {
@@ -27,14 +29,38 @@ double overreach_length(const Cubic& c);
 /// end tangents' angle.
 double cubic_turning(const Cubic& c);
 
+/// Counts the turns (extrema) of κ along samples, as the check counts them: a rise or fall
+/// counts once it exceeds the hysteresis from the last extreme value, so sampling noise on a
+/// flat stretch is not a turn.
+struct TurnCounter {
+  int direction = 0;
+  double anchor = 0.0;
+  bool started = false;
+  int turns = 0;
+  void add(double kappa, double hysteresis) {
+    if (!started) {
+      started = true, anchor = kappa;
+    } else if (direction >= 0 && kappa < anchor - hysteresis) {
+      turns += direction > 0, direction = -1, anchor = kappa;
+    } else if (direction <= 0 && kappa > anchor + hysteresis) {
+      turns += direction < 0, direction = 1, anchor = kappa;
+    } else if (direction * (kappa - anchor) > 0.0) {
+      anchor = kappa;
+    }
+  }
+};
+
 /// How κ runs along a cubic: at sixteenths of its parameter, how often its sign changes (κ = 0
 /// has no sign), its total variation and its largest magnitude; at thirty-seconds, how often it
-/// turns (an extremum), each rise or fall counted once it exceeds `hysteresis`, so sampling
-/// noise on a flat stretch is not a turn.
+/// turns (TurnCounter with `hysteresis`).
 struct CurvatureShape {
   int sign_changes = 0;
   double variation = 0.0, largest = 0.0;
   int turns = 0;
+  /// κ over the first half (t = 0, 1/32, …, 1/2) and the counter's state after the second
+  /// half alone: what a node adds to the turns, joined with its neighbour's.
+  std::array<double, 17> head{};
+  TurnCounter tail;
 };
 CurvatureShape curvature_shape(const Cubic& c, double hysteresis);
 

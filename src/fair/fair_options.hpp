@@ -6,6 +6,7 @@
 #include <string>
 
 #include "geom/contour.hpp"
+#include "geom/smoothing_spline.hpp"
 
 namespace gf {
 
@@ -31,11 +32,13 @@ struct FairOptions {
 ///                meets a long diagonal: DejaVu's s); corners from 3° (the check's kink
 ///                limit: a professional font's smooth joins are G1 to 0.05°, so anything at
 ///                3° or more was drawn as a corner);
-///   handwriting: tolerance 1 % of the em; corners from 30° (fonts traced from scans break
+///   handwriting: tolerance 1.2 % of the em (the bar is 1.5 %; at 1 % dkg kept half its
+///                inflections and Because We Learn more); corners from 30° (fonts traced from scans break
 ///                their curves by 3–20° at many joins; a stroke end or a sharp turn of the pen
 ///                turns by far more), and wobbles up to the tolerance smoothed away: each run
 ///                is first replaced by the smoothest spline within 0.8 of the chain's budget
-///                (geom/smoothing_spline's sparse penalty: fewest changes of curvature).
+///                (geom/smoothing_spline's sparse penalty: fewest changes of curvature; its
+///                lobes turning less than 30° merged into their neighbours).
 struct FairSettings {
   FairProfile profile = FairProfile::text;
   Continuity continuity = Continuity::g2;
@@ -55,6 +58,9 @@ struct FairSettings {
   /// Handwriting: how far the smoothing guide may stray from the source, as a share of the
   /// chain's budget (0.8: as smooth as leaves the chain room to follow it).
   double guide_share = 0.8;
+  /// Handwriting: the guide's lobes of curvature merged into their neighbours
+  /// (geom/smoothing_spline): those turning less than 30°, held to bend at least 0.3 per em.
+  LobeMerging guide_lobes;
 };
 
 FairSettings resolve_settings(const FairOptions& options, double units_per_em);

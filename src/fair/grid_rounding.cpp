@@ -61,7 +61,9 @@ struct NodeSides {
 // turning the tangent by less than the kink limit, beats any that does not (a wider turn is a
 // visible change of its own: a brush font's half-unit handles would swing by 30–45°).
 Choice collinear_choice(Vec2 point, std::optional<Vec2> in, std::optional<Vec2> out, const NodeSides& sides) {
-  const Vec2 dir = out ? *out - point : point - *in;
+  // Along the out-handle, or the in-handle where that lies on the node.
+  Vec2 dir = out ? *out - point : Vec2{};
+  if (norm(dir) == 0.0 && in) dir = point - *in;
   const double shortest = std::min(in ? norm(point - *in) : 1e300, out ? norm(*out - point) : 1e300);
   const int reach = std::clamp(static_cast<int>(shortest), 1, 64);
   const bool steep = std::abs(dir.y) > std::abs(dir.x);
@@ -217,6 +219,10 @@ std::vector<OutlineNode> round_to_grid(const std::vector<OutlineNode>& nodes, bo
     if (nodes[after].in_handle)
       sides.after = node_side(outline_cubic(nodes, i), SegmentEnd::start, r[after].point, *r[after].in_handle, flat);
     const Choice c = collinear_choice(src.point, src.in_handle, src.out_handle, sides);
+    // Both handles on their node give no direction, and no choice: the node as plainly rounded
+    // (the cubics of no extent that a segment's overrun of its arc length leaves at a chain's
+    // end: dkg Bold's G had four, and such a node went to the origin).
+    if (c.cost == 1e300) continue;
     dst.point = c.point, dst.in_handle = c.in, dst.out_handle = c.out;
     steps[i] = c.step;
   }

@@ -132,7 +132,7 @@ class CubicJudge {
   CubicJudge(const std::vector<OutlineNode>& rounded, const std::vector<OutlineNode>& ideal,
              const OutlineJoins& joins, const HandleStepLimits& limits)
       : unrounded_(rounded.size()), allowed_(rounded.size(), 0.0), ideal_(rounded.size()), seen_(rounded.size()),
-        inflection_handles_(limits.inflection_handles) {
+        inflection_handles_(limits.inflection_handles), node_turns_(limits.node_turns) {
     for (std::size_t i = 0; i < rounded.size(); ++i) {
       if (!joins.is_cubic(i)) continue;
       unrounded_[i] = outline_cubic(ideal, i);
@@ -146,8 +146,12 @@ class CubicJudge {
   }
 
   double allowed(std::size_t i) const { return allowed_[i]; }
+  /// 1 % of the outline's largest unrounded |κ|: a rise or fall of κ smaller is not a turn.
+  double hysteresis() const { return hysteresis_; }
   /// HandleStepLimits::inflection_handles.
   bool inflection_handles() const { return inflection_handles_; }
+  /// HandleStepLimits::node_turns.
+  bool node_turns() const { return node_turns_; }
   const CubicTraits& unrounded(std::size_t i) const { return ideal_[i]; }
 
   /// The traits of `c` in the place of cubic i.
@@ -170,7 +174,7 @@ class CubicJudge {
   double hysteresis_ = 0.0;
   std::vector<CubicTraits> ideal_;
   std::vector<std::map<std::array<double, 8>, CubicTraits>> seen_;
-  bool inflection_handles_;
+  bool inflection_handles_, node_turns_;
 };
 
 // One cubic of the outline and every choice of its two handles (state = out·ins + in).
@@ -178,6 +182,12 @@ struct CubicChoices {
   std::size_t start = 0, end = 0;  ///< node indices
   std::vector<Vec2> outs, ins;
   std::vector<double> k_start, k_end, cost;
+  /// Where the turns at its nodes are weighed (HandleStepLimits::node_turns): each state's
+  /// traits, the unrounded cubic's, and the hysteresis they are counted with.
+  std::vector<const CubicTraits*> traits;
+  const CubicTraits* ideal = nullptr;
+  double hysteresis = 0.0;
+  bool node_turns = false;
 
   std::size_t states() const { return outs.size() * ins.size(); }
 };
@@ -197,6 +207,7 @@ CubicChoices cubic_choices(const std::vector<OutlineNode>& nodes, std::span<cons
   const Vec2 p0 = nodes[i].point, p3 = nodes[j].point;
   const double allowed = judge.allowed(i);
   const CubicTraits& ideal = judge.unrounded(i);
+  c.ideal = &ideal, c.hysteresis = judge.hysteresis(), c.node_turns = judge.node_turns();
   // κ = 0 at an end that meets a line, or at a smooth node flat before rounding (an inflection,
   // where asked): the far handles nearest that end's tangent line join the choices
   // (seat_inflections moves the node itself for them).
@@ -206,11 +217,12 @@ CubicChoices cubic_choices(const std::vector<OutlineNode>& nodes, std::span<cons
   if (zero_start && steps[i] && !as_is) add(c.ins, handles_meeting_line(nodes[j], steps[j], false, nodes[i], *steps[i]));
   if (zero_end && steps[j] && !as_is) add(c.outs, handles_meeting_line(nodes[i], steps[i], true, nodes[j], *steps[j]));
   auto weigh = [&] {
-    c.k_start.clear(), c.k_end.clear(), c.cost.clear();
+    c.k_start.clear(), c.k_end.clear(), c.cost.clear(), c.traits.clear();
     for (const Vec2 out : c.outs)
       for (const Vec2 in : c.ins) {
         const CubicTraits& t = judge.traits(i, Cubic{p0, out, in, p3});
         c.k_start.push_back(t.k_start), c.k_end.push_back(t.k_end);
+        c.traits.push_back(&t);
         if (t.moved > allowed) {
           c.cost.push_back(infeasible);
           continue;
@@ -258,6 +270,31 @@ CubicChoices cubic_choices(const std::vector<OutlineNode>& nodes, std::span<cons
   return c;
 }
 
+// The turns of κ a node adds, counted as the check counts them over the second half of the
+// cubic before it and the first half of the one after, beyond what that first half counts
+// alone (the halves' own turns are their cubics').
+int node_turns(const CubicTraits& before, const CubicTraits& after, double hysteresis) {
+  TurnCounter joined = before.shape.tail, alone;
+  joined.turns = 0;
+  for (const double k : after.shape.head) {
+    joined.add(k, hysteresis), alone.add(k, hysteresis);
+    // Once both counters stand alike, the rest of the half adds to both alike.
+    if (joined.direction == alone.direction && joined.anchor == alone.anchor) break;
+  }
+  return joined.turns - alone.turns;
+}
+
+// What a node's turns beyond the unrounded outline's there (`ideal`) cost: as an extremum
+// inside a cubic, not capped, where asked.
+double node_turn_cost(const CubicChoices& prev, std::size_t s, const CubicChoices& cur, std::size_t t, int ideal) {
+  if (!cur.node_turns) return 0.0;
+  return turn_weight * std::max(0, node_turns(*prev.traits[s], *cur.traits[t], cur.hysteresis) - ideal);
+}
+
+int ideal_node_turns(const CubicChoices& prev, const CubicChoices& cur) {
+  return cur.node_turns ? node_turns(*prev.ideal, *cur.ideal, cur.hysteresis) : 0;
+}
+
 // The cheapest states of a run of cubics joined at smooth nodes; `first`, for a run that
 // closes on itself, fixes the first cubic's state and adds the join from the last back to it.
 struct RunChoice {
@@ -275,12 +312,15 @@ RunChoice best_run(const std::vector<CubicChoices>& run, double flat, std::optio
     const CubicChoices &prev = run[k - 1], &cur = run[k];
     std::vector<double> next(cur.states(), infeasible);
     back[k].assign(cur.states(), 0);
+    const int ideal_turns = ideal_node_turns(prev, cur);
     for (std::size_t t = 0; t < cur.states(); ++t) {
       if (cur.cost[t] == infeasible) continue;
       for (std::size_t s = 0; s < prev.states(); ++s) {
         if (cost[s] == infeasible) continue;
         const double c = cost[s] + jump_cost(jump(prev.k_end[s], cur.k_start[t], flat));
-        if (c < next[t]) next[t] = c, back[k][t] = s;
+        if (c >= next[t]) continue;  // a node's turns only add to it
+        const double with_turns = c + node_turn_cost(prev, s, cur, t, ideal_turns);
+        if (with_turns < next[t]) next[t] = with_turns, back[k][t] = s;
       }
       next[t] += cur.cost[t];
     }
@@ -289,7 +329,9 @@ RunChoice best_run(const std::vector<CubicChoices>& run, double flat, std::optio
   RunChoice best;
   for (std::size_t s = 0; s < cost.size(); ++s) {
     double c = cost[s];
-    if (first && c != infeasible) c += jump_cost(jump(run[n - 1].k_end[s], run[0].k_start[*first], flat));
+    if (first && c != infeasible)
+      c += jump_cost(jump(run[n - 1].k_end[s], run[0].k_start[*first], flat)) +
+           node_turn_cost(run[n - 1], s, run[0], *first, ideal_node_turns(run[n - 1], run[0]));
     if (c < best.cost) best.cost = c, best.states.assign(n, 0), best.states[n - 1] = s;
   }
   if (best.cost == infeasible) return best;
@@ -673,7 +715,19 @@ RunSteps choose_window(const std::vector<OutlineNode>& nodes, std::span<const st
   return out;
 }
 
-// Where a run still jumps once the passes end: each node at a jump, or next to one, moved to
+// Whether κ turns at node i (joining two cubics), or inside either cubic, where the unrounded
+// outline's does not (HandleStepLimits::node_turns; never otherwise).
+bool turns_too_often(const std::vector<OutlineNode>& nodes, const OutlineJoins& joins, CubicJudge& judge, std::size_t i) {
+  if (!judge.node_turns() || !joins.joins_cubics(i)) return false;
+  const std::size_t n = nodes.size(), h = (i + n - 1) % n;
+  const CubicTraits &before = judge.traits(h, outline_cubic(nodes, h)), &after = judge.traits(i, outline_cubic(nodes, i));
+  return node_turns(before, after, judge.hysteresis()) >
+             node_turns(judge.unrounded(h), judge.unrounded(i), judge.hysteresis()) ||
+         before.shape.turns > judge.unrounded(h).shape.turns || after.shape.turns > judge.unrounded(i).shape.turns;
+}
+
+// Where a run still jumps once the passes end, or turns where it should not (turns_too_often):
+// each node at a jump, or next to one, or turning so, moved to
 // the grid points next to it and turned to the primitive directions near its tangent (its
 // handles as many steps long as they were), with the handles of the cubics around it chosen
 // again for each place (choose_window), so that a move which needs its neighbours' handles to
@@ -687,7 +741,7 @@ bool polish_jumping_run(std::vector<OutlineNode>& nodes, const std::vector<Outli
     const std::size_t i = cubics[q];
     if (!joins.joins_cubics(i) || !steps[i]) continue;
     if (join_jump(joins, i, flat) <= target_jump && join_jump(joins, (i + 1) % n, flat) <= target_jump &&
-        join_jump(joins, (i + n - 1) % n, flat) <= target_jump)
+        join_jump(joins, (i + n - 1) % n, flat) <= target_jump && !turns_too_often(nodes, joins, judge, i))
       continue;
     const RunWindow window = window_around(cubics, cycle, q);
     const RunSteps now = choose_window(nodes, steps, joins, window, judge, flat, i);
@@ -771,6 +825,9 @@ void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<Outl
     return join_jump(joins, (run.back() + 1) % n, limits.flat_curvature) > target_jump;
   };
   CubicJudge judge(nodes, ideal, joins, limits);
+  auto turns_too_often_in = [&](std::span<const std::size_t> run) {
+    return std::any_of(run.begin(), run.end(), [&](std::size_t k) { return turns_too_often(nodes, joins, judge, k); });
+  };
   std::vector<std::optional<Vec2>> steps(grid_steps.begin(), grid_steps.end());
   std::vector<bool> again(runs.size(), true);
   for (int pass = 0; pass < max_passes; ++pass) {
@@ -790,7 +847,7 @@ void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<Outl
     if (std::none_of(again.begin(), again.end(), [](bool b) { return b; })) break;
   }
   for (std::size_t r = 0; r < runs.size(); ++r)
-    for (int k = 0; k < limits.polish_rounds && still_jumps(runs[r]); ++k)
+    for (int k = 0; k < limits.polish_rounds && (still_jumps(runs[r]) || turns_too_often_in(runs[r])); ++k)
       if (!polish_jumping_run(nodes, ideal, steps, joins, runs[r], cycle, judge, limits.flat_curvature)) break;
 }
 

@@ -1,5 +1,6 @@
 #include "fair/initial_tangents.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <Eigen/Dense>
@@ -8,6 +9,7 @@ namespace gf {
 
 namespace {
 
+constexpr double wedge_margin = 0.1;     // of a junction's wedge between its chords, kept clear at either side
 constexpr double bisector_weight = 0.01;  // only decides where the balance alone does not (an even closed chain)
 
 double near(double angle, double reference) {
@@ -72,6 +74,23 @@ std::vector<double> balanced_tangents(const std::vector<Vec2>& points, bool clos
   const Eigen::VectorXd x = A.colPivHouseholderQr().solve(b);
   for (std::size_t k = 0; k < unknowns; ++k) phi[first + k] = x(static_cast<Eigen::Index>(k));
   return phi;
+}
+
+void keep_tangents_between_chords(const std::vector<Vec2>& points, bool closed, double way,
+                                  std::vector<double>& angles, bool zero_curvature_start, bool zero_curvature_end) {
+  const std::size_t n = points.size();
+  if (n < 3) return;
+  for (std::size_t j = 0; j < n; ++j) {
+    if (!closed && (j == 0 || j + 1 == n || (j == 1 && zero_curvature_start) || (j + 2 == n && zero_curvature_end)))
+      continue;
+    const Vec2 before = points[j] - points[(j + n - 1) % n], after = points[(j + 1) % n] - points[j];
+    const double chord = angle_of(before), wedge = wrapped_angle(angle_of(after) - chord);
+    if (wedge * way <= 0.0) continue;
+    const double lo = std::min(wedge_margin * wedge, (1.0 - wedge_margin) * wedge);
+    const double hi = std::max(wedge_margin * wedge, (1.0 - wedge_margin) * wedge);
+    const double off = wrapped_angle(angles[j] - chord);
+    angles[j] += std::clamp(off, lo, hi) - off;
+  }
 }
 
 }  // namespace gf

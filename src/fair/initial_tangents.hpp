@@ -20,4 +20,14 @@ std::vector<double> balanced_tangents(const std::vector<Vec2>& points, bool clos
                                       std::optional<double> end_angle, bool zero_curvature_start = false,
                                       bool zero_curvature_end = false);
 
+/// Turns each free junction's angle into the wedge between its two chords, a tenth of the
+/// wedge in from either side, where the chords turn `way` (the sign of the chain's turning)
+/// there. A segment bends one way only where its end tangents lie on opposite sides of its
+/// chord: a junction outside its wedge starts one of its segments bending both ways, which no
+/// log-aesthetic segment can (of dkg's G2 solves that failed, 867 of 958 started so). An open
+/// chain's end junctions are given, and so is the free neighbour of a κ = 0 end (aimed).
+void keep_tangents_between_chords(const std::vector<Vec2>& points, bool closed, double way,
+                                  std::vector<double>& angles, bool zero_curvature_start = false,
+                                  bool zero_curvature_end = false);
+
 }  // namespace gf

@@ -42,4 +42,27 @@ std::optional<Vec2> primitive_step(Vec2 along) {
 
 double node_curvature(const Cubic& c, SegmentEnd end) { return end_curvature(c, end).curvature.value_or(0.0); }
 
+void drop_empty_cubics(std::vector<OutlineNode>& nodes, bool closed) {
+  for (std::size_t i = 0; nodes.size() > (closed ? 2u : 1u) && i < nodes.size();) {
+    const std::size_t j = (i + 1) % nodes.size();
+    if ((!closed && j == 0) || !nodes[i].out_handle || !nodes[j].in_handle) {
+      ++i;
+      continue;
+    }
+    const Vec2 p = nodes[i].point;
+    if (nodes[j].point != p || *nodes[i].out_handle != p || *nodes[j].in_handle != p) {
+      ++i;
+      continue;
+    }
+    // Node i arrives as it did and leaves as node j does; a closed contour's first node stays.
+    const std::size_t keep = j == 0 ? j : i, drop = j == 0 ? i : j;
+    OutlineNode merged = nodes[i];
+    merged.out_handle = nodes[j].out_handle;
+    merged.smooth = nodes[i].smooth && nodes[j].smooth;
+    if (!merged.grid_step) merged.grid_step = nodes[j].grid_step;
+    nodes[keep] = merged;
+    nodes.erase(nodes.begin() + static_cast<std::ptrdiff_t>(drop));
+  }
+}
+
 }  // namespace gf

@@ -31,6 +31,13 @@ Cubic outline_cubic(const std::vector<OutlineNode>& nodes, std::size_t i);
 /// else a line. A closed contour's last segment returns to node 0.
 Contour to_contour(const std::vector<OutlineNode>& nodes, bool closed);
 
+/// Removes every cubic of no extent (its node, both handles and the next node at one point),
+/// the node before it leaving as the node after it did: a log-aesthetic segment whose arc
+/// length runs a little past what it draws leaves its last units at its end point, where the
+/// writeback can cut cubics of length 0 (dkg Bold's G had four, and rounding sent such a node
+/// to the origin).
+void drop_empty_cubics(std::vector<OutlineNode>& nodes, bool closed);
+
 /// The integer grid point nearest p.
 inline Vec2 nearest_grid_point(Vec2 p) { return {std::round(p.x), std::round(p.y)}; }
 

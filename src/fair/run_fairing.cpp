@@ -173,9 +173,10 @@ Vec2 end_tangent_of(double s, const RunReference& ref, const SmoothRun& run, dou
 }
 
 // The chain on the span's junctions, before any repair: points averaged over the window and
-// made to turn one way, balanced starting tangents, κ = 0 ends aimed, α from each piece's LCG.
+// made to turn one way, balanced starting tangents, κ = 0 ends aimed, each free junction's
+// tangent between its chords (`between_chords`), α from each piece's LCG.
 LacChain initial_chain(const ChainSpan& span, const RunReference& ref, PieceAlphas& alphas, const SmoothRun& run,
-                       double w, double budget) {
+                       double w, double budget, bool between_chords) {
   const double L = ref.length();
   const std::size_t points = span.s.size();
   LacChain chain;
@@ -218,6 +219,8 @@ LacChain initial_chain(const ChainSpan& span, const RunReference& ref, PieceAlph
       for (std::size_t i = 0; i + 1 < points; ++i)
         if (!tangents_meet_in_front(chain, i)) chain.tangent_angles = before;
     }
+  if (between_chords)
+    keep_tangents_between_chords(chain.points, chain.closed, way, chain.tangent_angles, span.zero_start, span.zero_end);
   for (std::size_t i = 0; i < chain.segment_count(); ++i)
     chain.alphas.push_back(alphas(span.s[i], segment_end_s(span, i, L)));
   return chain;
@@ -319,7 +322,9 @@ ChainOutcome fair_chain(const ChainSpan& span, const RunReference& ref, PieceAlp
   const double L = ref.length();
   out.cuts = missing_junctions(span, L);
   if (out.adjusts()) return out;
-  LacChain chain = initial_chain(span, ref, alphas, run, settings.feature_window_units, budget);
+  // Handwriting only: on text, as many g2-jumps came as went (a–z A–Z of seven fonts, 20 → 21).
+  LacChain chain = initial_chain(span, ref, alphas, run, settings.feature_window_units, budget,
+                                 settings.profile == FairProfile::handwriting);
   make_drawable(chain, span, ref, run, out);
   if (out.adjusts()) return out;
 
@@ -368,7 +373,7 @@ ChainOutcome fair_chain(const ChainSpan& span, const RunReference& ref, PieceAlp
 // None when no spline comes within the tolerance. A professional outline is its own guide
 // until no chain on it comes within the budget (fair_run).
 std::optional<SmoothRun> guide_for(const SmoothRun& run, const RunReference& source, double tolerance, double window,
-                                   SmoothingPenalty penalty) {
+                                   SmoothingPenalty penalty, const LobeMerging& merging) {
   const double L = source.length();
   const int count = std::clamp(static_cast<int>(L / 1.5), 40, 1200);
   std::vector<Vec2> points;
@@ -380,7 +385,7 @@ std::optional<SmoothRun> guide_for(const SmoothRun& run, const RunReference& sou
   if (!run.closed && run.start.kind == RunEndKind::line) ends.start_tangent = run.start.tangent;
   if (!run.closed && run.end.kind == RunEndKind::line) ends.end_tangent = run.end.tangent;
   const int spans = std::clamp(static_cast<int>(std::ceil(L / (0.5 * window))), run.closed ? 4 : 1, 80);
-  const BSplineFit fit = fit_smoothing_spline(points, tolerance, spans, run.closed, ends, penalty);
+  const BSplineFit fit = fit_smoothing_spline(points, tolerance, spans, run.closed, ends, penalty, merging);
   if (fit.spans.empty() || fit.max_residual > 1.05 * tolerance) return std::nullopt;
   SmoothRun guide = run;
   guide.cubics = fit.spans;
@@ -580,7 +585,8 @@ FairedRun fair_run_on(const SmoothRun& run, const RunReference& source, const st
 FairedRun fair_run(const SmoothRun& run, const FairSettings& settings, double budget, bool on_guide) {
   const RunReference source(run);
   const auto guide = [&](SmoothingPenalty penalty) {
-    return guide_for(run, source, budget * settings.guide_share, settings.feature_window_units, penalty);
+    return guide_for(run, source, budget * settings.guide_share, settings.feature_window_units, penalty,
+                     settings.guide_lobes);
   };
   if (settings.profile == FairProfile::handwriting)
     return fair_run_on(run, source, guide(SmoothingPenalty::sparse), settings, budget, max_rounds);

@@ -8,12 +8,22 @@
 #include <Eigen/Dense>
 
 #include "geom/bspline_basis.hpp"
+#include "geom/curvature.hpp"
 
 namespace gf {
 
 namespace {
 
 constexpr double least_reach_share = 0.25;  // of a held control's even reach, below which it is set there
+// Merging a lobe: the bends are held by a penalty this many times the data's mean weight (soft,
+// so that rows which depend on each other, as three along one span's linear r'' do, stay
+// solvable; 10³ left a third of a merged lobe's turning), λ may fall by up to 10^1.5, rows are
+// added for up to six rounds, and the spline may end 5 % past the tolerance (as guides are
+// accepted, fair/run_fairing).
+constexpr double bend_weight = 1e4;
+constexpr double merge_lambda_range = 1.5;
+constexpr int merge_rounds = 6;
+constexpr double merge_slack = 1.05;
 
 // A control point as origin + Σ z[var] · direction: free (x and y), held to a line through an
 // end point (one unknown along the end tangent), or fixed (an interpolated end).
@@ -138,8 +148,13 @@ class SmoothingProblem {
   /// of the reach it turned so tightly that rounding folded it (dkg's P).
   std::vector<Vec2> solve(double e) const {
     const double lambda = std::pow(10.0, e) * scale_;
-    const Eigen::MatrixXd h = data_.h + lambda * penalty_.h;
-    const Eigen::VectorXd g = data_.g + lambda * penalty_.g;
+    Eigen::MatrixXd h = data_.h + lambda * penalty_.h;
+    Eigen::VectorXd g = data_.g + lambda * penalty_.g;
+    if (held_bends_) {
+      const double weight = bend_weight * data_.h.trace() / std::max(unknowns_, 1);
+      h += weight * bends_.h;
+      g += weight * bends_.g;
+    }
     const Eigen::LDLT<Eigen::MatrixXd> factors = h.ldlt();
     Eigen::VectorXd z = factors.solve(g);
     std::vector<Eigen::Index> held;
@@ -184,6 +199,47 @@ class SmoothingProblem {
 
   void move_parameters(std::vector<double> feet) { u_ = std::move(feet); }
 
+  /// r''(t) on one span across `normal` (the bend, κ·|r'|²) held at `target`.
+  struct BendRow {
+    int index[4];
+    double w[4];
+    Vec2 normal;
+    double target;
+  };
+  BendRow bend_row(int span, double t, Vec2 normal, double target) const {
+    BendRow row{{}, {}, normal, target};
+    std::vector<Vec2> unit(controls_.size());
+    const SpanTerm& term = terms_[static_cast<std::size_t>(span)];
+    for (int k = 0; k < 4; ++k) {
+      row.index[k] = term.index[k];
+      unit[static_cast<std::size_t>(term.index[k])] = {1.0, 0.0};
+      const Cubic c = basis_.span_cubic(unit, span);
+      unit[static_cast<std::size_t>(term.index[k])] = {};
+      row.w[k] = 6.0 * ((1.0 - t) * (c.p[2] - 2.0 * c.p[1] + c.p[0]) + t * (c.p[3] - 2.0 * c.p[2] + c.p[1])).x;
+    }
+    return row;
+  }
+  /// Every later solve holds these bends (each row scaled to unit length in the unknowns).
+  void hold_bends(std::span<const BendRow> rows) {
+    bends_ = Normal(unknowns_);
+    for (const BendRow& row : rows) {
+      std::vector<std::pair<int, double>> a;
+      double fixed = 0.0, length = 0.0;
+      for (int k = 0; k < 4; ++k) {
+        const Control& c = controls_[static_cast<std::size_t>(row.index[k])];
+        fixed += row.w[k] * dot(c.origin, row.normal);
+        c.for_each_unknown([&](int v, Vec2 dir) { a.emplace_back(v, row.w[k] * dot(dir, row.normal)); });
+      }
+      for (const auto& [v, x] : a) length += x * x;
+      if (length <= 0.0) continue;
+      for (const auto& [v, x] : a) {
+        bends_.g[v] += x * (row.target - fixed) / length;
+        for (const auto& [u, y] : a) bends_.h(v, u) += x * y / length;
+      }
+    }
+    held_bends_ = !rows.empty();
+  }
+
  private:
   std::span<const Vec2> points_;
   BSplineBasis basis_;
@@ -196,7 +252,8 @@ class SmoothingProblem {
   int unknowns_ = 0;
   std::vector<double> u_;
   double even_reach_ = 0.0;  ///< of a control held on an end's tangent line, on an evenly drawn line
-  Normal data_{0}, penalty_{0};
+  Normal data_{0}, penalty_{0}, bends_{0};
+  bool held_bends_ = false;
   double scale_ = 1.0;
 };
 
@@ -214,63 +271,201 @@ std::vector<double> sparse_weights(std::span<const double> third) {
   return weight;
 }
 
+// The largest λ = 10^e in [lo, hi] that keeps every point within the tolerance, by bisection
+// on e; each round moves the points' parameters to their feet on the curve and narrows around
+// the last choice. Returns e (lo when none does).
+double choose_lambda(SmoothingProblem& problem, double tolerance, double lo, double hi, int rounds) {
+  std::vector<double> feet, best_feet;
+  double chosen = lo;
+  for (int round = 0; round < rounds; ++round) {
+    problem.fit_data();
+    const int steps = round == 0 ? 14 : 8;
+    bool any = false;
+    for (int k = 0; k < steps; ++k) {
+      const double e = 0.5 * (lo + hi);
+      const std::vector<Vec2> c = problem.solve(e);
+      if (problem.project(problem.spans(c), feet) <= tolerance) lo = e, any = true, best_feet = feet;
+      else hi = e;
+    }
+    chosen = lo;
+    if (!any) {
+      const std::vector<Vec2> c = problem.solve(lo);
+      problem.project(problem.spans(c), best_feet);
+    }
+    problem.move_parameters(best_feet);
+    lo = chosen - 1.5, hi = chosen + 1.5;
+  }
+  return chosen;
+}
+
+// A fit: its controls, λ = 10^e, and the largest distance of a point from it.
+struct Fitted {
+  std::vector<Vec2> controls;
+  double e = 0.0;
+  double residual = 0.0;
+};
+
+// The controls at λ = 10^e on the parameters as they are.
+Fitted solve_at(SmoothingProblem& problem, double e) {
+  problem.fit_data();
+  Fitted f{problem.solve(e), e, 0.0};
+  std::vector<double> feet;
+  f.residual = problem.project(problem.spans(f.controls), feet);
+  return f;
+}
+
+// A stretch of the spline where κ keeps one sign: [u0, u1] in its parameter (u0 < 0 where a
+// closed spline's lobe runs across the seam), how far it turns, and the sign.
+struct Lobe {
+  double u0, u1;
+  double turning;
+  int sign;
+};
+
+std::vector<Lobe> lobes_of(std::span<const Cubic> spans, bool closed) {
+  constexpr int per_span = 8;
+  const double n = static_cast<double>(spans.size());
+  std::vector<Lobe> out;
+  Vec2 last{};
+  for (std::size_t j = 0; j < spans.size(); ++j)
+    for (int i = 0; i <= per_span; ++i) {
+      if (i == per_span && (closed || j + 1 < spans.size())) break;
+      const double t = static_cast<double>(i) / per_span;
+      const Derivatives d = derivatives_at(spans[j], t);
+      const double u = (static_cast<double>(j) + t) / n, ds = out.empty() ? 0.0 : distance(d.point, last);
+      last = d.point;
+      const std::optional<double> k = curvature(d);
+      if (!k) continue;
+      const int sign = *k > 0.0 ? 1 : (*k < 0.0 ? -1 : 0);
+      if (!out.empty() && (sign == 0 || out.back().sign == sign)) {
+        out.back().u1 = u, out.back().turning += *k * ds;
+        continue;
+      }
+      if (sign != 0) out.push_back({u, u, *k * ds, sign});
+    }
+  if (closed && out.size() > 1 && out.front().sign == out.back().sign) {
+    out.front().u0 = out.back().u0 - 1.0;
+    out.front().turning += out.back().turning;
+    out.pop_back();
+  }
+  return out;
+}
+
+// Lobes turning less than `merging.least_turning`, smallest first, each merged into its
+// neighbours while that keeps the spline within the tolerance (and 5 %) and leaves it fewer
+// lobes: every half-span point is held to bend the way its lobe now does (at least
+// least_curvature), except within three quarters of a span of a sign change that stays, by an
+// active set (the points that bend the wrong way are held, the spline fitted again, for a few
+// rounds), with λ free to fall a little.
+void merge_small_lobes(SmoothingProblem& problem, Fitted& fit, double tolerance, int spans, bool closed,
+                       const LobeMerging& merging) {
+  const std::vector<Lobe> lobes = lobes_of(problem.spans(fit.controls), closed);
+  const std::size_t count = lobes.size();
+  if (count < 2) return;
+  std::vector<int> sign(count);
+  for (std::size_t i = 0; i < count; ++i) sign[i] = lobes[i].sign;
+  // u in [first lobe's u0, + 1) on a closed spline.
+  const auto unwrap = [&](double u) {
+    if (closed && u < lobes[0].u0) return u + 1.0;
+    if (closed && u >= lobes[0].u0 + 1.0) return u - 1.0;
+    return u;
+  };
+  std::size_t lobes_now = count;
+  const auto attempt = [&] {
+    std::vector<double> kept;  // the sign changes that stay
+    for (std::size_t i = 0; i + 1 < count || (closed && i < count); ++i) {
+      const std::size_t k = (i + 1) % count;
+      if (sign[i] != sign[k]) kept.push_back(0.5 * (lobes[i].u1 + lobes[k].u0 + (k == 0 ? 1.0 : 0.0)));
+    }
+    struct Point {
+      int span;
+      double t;
+      int sign;
+    };
+    std::vector<Point> points;
+    const double margin = 0.75 / spans;
+    for (int j = 0; j < spans; ++j)
+      for (const double t : {0.0, 0.5}) {
+        const double u = unwrap((j + t) / spans);
+        const bool near_kept = std::any_of(kept.begin(), kept.end(), [&](double v) {
+          const double d = std::abs(u - v);
+          return std::min(d, closed ? std::abs(1.0 - d) : d) < margin;
+        });
+        if (near_kept) continue;
+        std::size_t i = 0;
+        while (i + 1 < count && u >= lobes[i + 1].u0) ++i;
+        points.push_back({j, t, sign[i]});
+      }
+    const SmoothingProblem before = problem;
+    std::vector<SmoothingProblem::BendRow> rows;
+    std::vector<bool> held(points.size(), false);
+    Fitted f = fit;
+    for (int round = 0; round < merge_rounds; ++round) {
+      const std::vector<Cubic> now = problem.spans(f.controls);
+      const std::size_t before_rows = rows.size();
+      for (std::size_t i = 0; i < points.size(); ++i) {
+        if (held[i]) continue;
+        const Point& p = points[i];
+        const Derivatives d = derivatives_at(now[static_cast<std::size_t>(p.span)], p.t);
+        const double speed = norm(d.d1);
+        if (speed <= 0.0) continue;
+        const Vec2 normal = perpendicular(d.d1 / speed);
+        const double least = p.sign * merging.least_curvature * speed * speed;
+        if (p.sign * (dot(d.d2, normal) - least) >= 0.0) continue;
+        rows.push_back(problem.bend_row(p.span, p.t, normal, least));
+        held[i] = true;
+      }
+      if (rows.size() == before_rows) break;
+      problem.hold_bends(rows);
+      f = solve_at(problem, choose_lambda(problem, tolerance, f.e - merge_lambda_range, f.e, 2));
+      if (f.residual > merge_slack * tolerance) break;
+    }
+    const std::size_t after = lobes_of(problem.spans(f.controls), closed).size();
+    if (f.residual <= merge_slack * tolerance && after < lobes_now) {
+      fit = std::move(f), lobes_now = after;
+      return true;
+    }
+    problem = before;
+    return false;
+  };
+  std::vector<std::size_t> order;
+  for (std::size_t i = 0; i < count; ++i)
+    if (std::abs(lobes[i].turning) < merging.least_turning) order.push_back(i);
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return std::abs(lobes[a].turning) < std::abs(lobes[b].turning); });
+  for (const std::size_t i : order) {
+    sign[i] = -sign[i];
+    if (!attempt()) sign[i] = -sign[i];
+  }
+}
+
 }  // namespace
 
 BSplineFit fit_smoothing_spline(std::span<const Vec2> points, double tolerance, int span_count, bool closed,
-                                const SmoothingEnds& ends, SmoothingPenalty penalty) {
+                                const SmoothingEnds& ends, SmoothingPenalty penalty, const LobeMerging& merging) {
   BSplineFit fit;
   if (closed && points.size() > 1 && points.back() == points.front()) points = points.first(points.size() - 1);
   const int m = static_cast<int>(points.size());
   const int spans = std::min(span_count, m - 3);
   if (spans < (closed ? 4 : 1)) return fit;
   SmoothingProblem problem(points, spans, closed, ends);
-  // log10 λ (relative): low smoothing to high; each round narrows around the last choice.
-  std::vector<double> feet, best_feet;
-  const auto choose = [&](double lo, double hi, int rounds) {
-    double chosen = lo;
-    for (int round = 0; round < rounds; ++round) {
-      problem.fit_data();
-      const int steps = round == 0 ? 14 : 8;
-      bool any = false;
-      for (int k = 0; k < steps; ++k) {
-        const double e = 0.5 * (lo + hi);
-        const std::vector<Vec2> c = problem.solve(e);
-        if (problem.project(problem.spans(c), feet) <= tolerance) lo = e, any = true, best_feet = feet;
-        else hi = e;
-      }
-      chosen = lo;
-      if (!any) {
-        const std::vector<Vec2> c = problem.solve(lo);
-        problem.project(problem.spans(c), best_feet);
-      }
-      problem.move_parameters(best_feet);
-      lo = chosen - 1.5, hi = chosen + 1.5;
-    }
-    return chosen;
-  };
-  // The controls at λ = 10^e on the parameters as they are, and the largest distance.
-  const auto solve_at = [&](double e) {
-    problem.fit_data();
-    std::vector<Vec2> c = problem.solve(e);
-    const double r = problem.project(problem.spans(c), feet);
-    return std::pair{std::move(c), r};
-  };
-  double chosen = choose(-8.0, 4.0, 3);
-  auto [controls, residual] = solve_at(chosen);
-  if (penalty == SmoothingPenalty::sparse && residual <= tolerance)
+  // log10 λ (relative): low smoothing to high.
+  Fitted best = solve_at(problem, choose_lambda(problem, tolerance, -8.0, 4.0, 3));
+  if (penalty == SmoothingPenalty::sparse && best.residual <= tolerance)
     for (int round = 0; round < 2; ++round) {
       const SmoothingProblem before = problem;
-      problem.weigh_spans(sparse_weights(problem.third_derivatives(controls)));
-      const double e = choose(chosen - 8.0, chosen + 4.0, 2);
-      auto [c, r] = solve_at(e);
-      if (r > tolerance) {  // no λ within the tolerance: the round before stands
+      problem.weigh_spans(sparse_weights(problem.third_derivatives(best.controls)));
+      Fitted f = solve_at(problem, choose_lambda(problem, tolerance, best.e - 8.0, best.e + 4.0, 2));
+      if (f.residual > tolerance) {  // no λ within the tolerance: the round before stands
         problem = before;
         break;
       }
-      chosen = e, controls = std::move(c), residual = r;
+      best = std::move(f);
     }
-  fit.spans = problem.spans(controls);
-  fit.max_residual = residual;
+  if (merging.least_turning > 0.0 && best.residual <= tolerance)
+    merge_small_lobes(problem, best, tolerance, spans, closed, merging);
+  fit.spans = problem.spans(best.controls);
+  fit.max_residual = best.residual;
   return fit;
 }
 

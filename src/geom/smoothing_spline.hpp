@@ -28,13 +28,25 @@ struct SmoothingEnds {
   std::optional<Vec2> start_tangent, end_tangent;
 };
 
+/// Lobes of the curvature (stretches where it keeps one sign) that turn less than
+/// `least_turning` (radians) are merged into their neighbours, smallest first, where the spline
+/// can bend their way there (by at least `least_curvature`, 1/unit) within 5 % past the
+/// tolerance: a scanned stroke's wobble across its straight line costs two inflections
+/// wherever the least smoothing within the tolerance still follows it. 0: none merged.
+struct LobeMerging {
+  double least_turning = 0.0;
+  double least_curvature = 0.0;
+};
+
 /// `span_count` uniform spans (reduced when there are too few points). Open: clamped knots,
 /// the end points interpolated. Closed (the first point not repeated at the end): periodic
 /// knots, C2 everywhere, no seam. λ is found by bisection on log λ with the points'
 /// parameters corrected to their feet on the curve; max_residual is the largest distance of a
-/// point from the curve, above `tolerance` only when even the least smoothing exceeds it.
+/// point from the curve, above `tolerance` only when even the least smoothing exceeds it (or,
+/// by up to 5 %, where lobes were merged).
 BSplineFit fit_smoothing_spline(std::span<const Vec2> points, double tolerance, int span_count, bool closed,
                                 const SmoothingEnds& ends = {},
-                                SmoothingPenalty penalty = SmoothingPenalty::squared);
+                                SmoothingPenalty penalty = SmoothingPenalty::squared,
+                                const LobeMerging& merging = {});
 
 }  // namespace gf

@@ -33,6 +33,32 @@ TEST(CurvatureShape, MonotoneCurvatureAndStraightLinesDoNotTurn) {
   EXPECT_EQ(turns(Cubic{{0, 0}, {1, 1}, {2, 2}, {3, 3}}, 1e-9), 0);
 }
 
+TEST(TurnCounter, ARiseOrFallCountsOnceItPassesTheHysteresis) {
+  // Up to 3 with a dip of 0.5 on the way, then down to 0: one turn at 3 when the dip is under
+  // the hysteresis, three (1, 0.5, 3) when over it.
+  const double samples[] = {0.0, 1.0, 0.5, 2.0, 1.9, 3.0, 0.0};
+  TurnCounter coarse, fine;
+  for (const double k : samples) coarse.add(k, 0.6), fine.add(k, 0.4);
+  EXPECT_EQ(coarse.turns, 1);
+  EXPECT_EQ(fine.turns, 3);
+}
+
+TEST(CurvatureShape, AnArchSplitAtItsMiddleTurnsAtTheNode) {
+  // The symmetric arch halved at t = ½ (de Casteljau): neither half turns, and the second half
+  // of the first joined to the first half of the second turns once, at the node.
+  const Cubic arch{{0, 0}, {1, 2}, {2, 2}, {3, 0}};
+  const Vec2 a = (arch.p[0] + arch.p[1]) * 0.5, b = (arch.p[1] + arch.p[2]) * 0.5, c = (arch.p[2] + arch.p[3]) * 0.5;
+  const Vec2 ab = (a + b) * 0.5, bc = (b + c) * 0.5, mid = (ab + bc) * 0.5;
+  const CurvatureShape first = curvature_shape(Cubic{arch.p[0], a, ab, mid}, 0.01);
+  const CurvatureShape second = curvature_shape(Cubic{mid, bc, c, arch.p[3]}, 0.01);
+  EXPECT_EQ(first.turns, 0);
+  EXPECT_EQ(second.turns, 0);
+  TurnCounter joined = first.tail;
+  joined.turns = 0;
+  for (const double k : second.head) joined.add(k, 0.01);
+  EXPECT_EQ(joined.turns, 1);
+}
+
 TEST(CubicTurning, ArcsTurnTheirAngleAndLoopsTurnTheLongWayRound) {
   // A quarter-circle approximant turns π/2 (its polyline at 24ths within 1e-3 of it); a
   // straight cubic not at all; a cubic whose handles cross over turns the long way round, a

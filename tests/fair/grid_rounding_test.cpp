@@ -1,5 +1,6 @@
 // Rounding to the grid: integer coordinates everywhere, and G1 exact — a smooth node's two
-// handles exactly collinear with it (integer cross product zero), axis nodes axis-parallel.
+// handles exactly collinear with it (integer cross product zero), axis nodes axis-parallel; and
+// the cubics of no extent a writeback can leave dropped before rounding.
 #include "fair/grid_rounding.hpp"
 
 #include <gtest/gtest.h>
@@ -170,6 +171,42 @@ TEST(GridRounding, NodesRoundedOntoOnePointBecomeOne) {
     if (!r[i].out_handle || !r[i + 1].in_handle) continue;  // a line
     EXPECT_EQ(inner_axis_extrema(outline_cubic(r, i)), 0) << "cubic " << i;
   }
+}
+
+TEST(OutlineNodes, CubicsOfNoExtentAreDropped) {
+  // An open chain ending with two cubics of length 0 at its end point (all their points on
+  // it), and a closed square with one at its first node: the outlines without them.
+  const Vec2 end{620.0, 33.0};
+  const std::vector<OutlineNode> open{
+      node(Vec2{500.0, 500.0}, std::nullopt, Vec2{600.0, 400.0}, false),
+      node(end, Vec2{620.0, 100.0}, end, true, Vec2{0.0, -1.0}),
+      node(end, end, end, true),
+      node(end, end, std::nullopt, false),
+  };
+  std::vector<OutlineNode> dropped = open;
+  drop_empty_cubics(dropped, false);
+  ASSERT_EQ(dropped.size(), 2u);
+  EXPECT_EQ(dropped[0], open[0]);
+  EXPECT_EQ(dropped[1].point, end);
+  EXPECT_EQ(dropped[1].in_handle, open[1].in_handle);  // arrives as it did
+  EXPECT_EQ(dropped[1].out_handle, std::nullopt);      // and leaves as the last node did
+  EXPECT_FALSE(dropped[1].smooth);
+  EXPECT_EQ(dropped[1].grid_step, open[1].grid_step);
+
+  const Vec2 a{0, 0}, b{100, 0}, c{100, 100}, d{0, 100};
+  const std::vector<OutlineNode> square{node(a, Vec2{0, 30}, Vec2{30, 0}, false), node(b, Vec2{70, 0}, Vec2{100, 30}, false),
+                                        node(c, Vec2{100, 70}, Vec2{70, 100}, false), node(d, Vec2{30, 100}, Vec2{0, 70}, false)};
+  // The square closing through a second node at a, joined to the first by a cubic of no extent.
+  const std::vector<OutlineNode> with_empty{node(a, a, Vec2{30, 0}, false), square[1], square[2], square[3],
+                                            node(a, Vec2{0, 30}, a, false)};
+  std::vector<OutlineNode> closed = with_empty;
+  drop_empty_cubics(closed, true);
+  EXPECT_EQ(closed, square);
+
+  // Nothing to drop: unchanged.
+  std::vector<OutlineNode> same = square;
+  drop_empty_cubics(same, true);
+  EXPECT_EQ(same, square);
 }
 
 }  // namespace

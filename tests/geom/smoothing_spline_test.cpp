@@ -2,7 +2,8 @@
 // derivative), so a tight fit smooths as hard as it can and still keeps its curvature; a circle with
 // noise inside the tolerance comes back within the tolerance with its curvature of one sign
 // and near 1/R; held end tangents and interpolated ends are exact; a noisy rounded rectangle keeps
-// its curvature's eight extrema, its variation and its straight sides under the sparse penalty.
+// its curvature's eight extrema, its variation and its straight sides under the sparse penalty,
+// and, its sides waving, loses most of its inflections where small lobes are merged.
 #include "geom/smoothing_spline.hpp"
 
 #include <gtest/gtest.h>
@@ -10,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <limits>
 #include <random>
 
 #include "geom/curvature.hpp"
@@ -94,7 +96,8 @@ namespace {
 
 // A rounded rectangle: κ is 0 on the sides and 1/r on the corners, so its curvature has eight
 // extrema (each corner's rise and fall end on a plateau) and no inflection.
-std::vector<Vec2> noisy_rounded_rectangle(double w, double h, double r, double amplitude, unsigned seed) {
+std::vector<Vec2> noisy_rounded_rectangle(double w, double h, double r, double amplitude, unsigned seed,
+                                          double wave = 0.0, double wavelength = 1.0) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> noise(-amplitude, amplitude);
   const double quarter = std::numbers::pi / 2 * r, perimeter = 2 * (w - 2 * r) + 2 * (h - 2 * r) + 4 * quarter;
@@ -119,7 +122,7 @@ std::vector<Vec2> noisy_rounded_rectangle(double w, double h, double r, double a
       }
       rest -= quarter;
     }
-    pts.push_back(p + n * noise(rng));
+    pts.push_back(p + n * (noise(rng) + wave * std::sin(2.0 * std::numbers::pi * s / wavelength)));
   }
   return pts;
 }
@@ -190,6 +193,63 @@ TEST(SmoothingSpline, TheSparsePenaltyKeepsTheChangeOfCurvatureWhereItIs) {
   EXPECT_EQ(w.extrema, 8);
   EXPECT_LT(w.variation * r, 8.0 * 1.25);
   EXPECT_GT(w.least * r, -0.05);
+}
+
+// Sign changes of κ along a closed fit, at sixteenths of each span.
+int inflections(const BSplineFit& fit) {
+  int changes = 0;
+  double last = 0.0, first = 0.0;
+  for (const Cubic& c : fit.spans)
+    for (int i = 0; i < 16; ++i) {
+      const double k = *curvature(derivatives_at(c, i / 16.0));
+      if (last != 0.0 && k * last < 0.0) ++changes;
+      if (k != 0.0) last = k, first = first == 0.0 ? k : first;
+    }
+  return changes + (first * last < 0.0 ? 1 : 0);
+}
+
+// The largest distance of a point from the fit, by brute force over dense samples.
+double farthest(std::span<const Vec2> pts, const BSplineFit& fit) {
+  std::vector<Vec2> dense;
+  for (const Cubic& c : fit.spans)
+    for (int i = 0; i < 400; ++i) dense.push_back(c.point_at(i / 400.0));
+  double worst = 0.0;
+  for (const Vec2 p : pts) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const Vec2 q : dense) nearest = std::min(nearest, distance(p, q));
+    worst = std::max(worst, nearest);
+  }
+  return worst;
+}
+
+// A convex outline whose sides wave by a unit (a scanned stroke's slow wobble) has no
+// inflection to keep: with its small lobes merged, at most 60 % of the sign changes the
+// sparse fit left survive, every point stays within 5 % past the tolerance, and a fit that
+// merged nothing is the same fit.
+TEST(SmoothingSpline, SmallLobesMergeIntoTheirNeighboursWithinTheTolerance) {
+  const LobeMerging merging{std::numbers::pi / 6, 3e-4};
+  struct Case {
+    double wave, wavelength, tolerance;
+  };
+  for (const Case c : {Case{1.0, 240.0, 2.5}, Case{1.0, 120.0, 2.5}, Case{1.5, 240.0, 1.5}}) {
+    const std::vector<Vec2> pts = noisy_rounded_rectangle(400.0, 300.0, 60.0, 1.0, 7, c.wave, c.wavelength);
+    const BSplineFit plain = fit_smoothing_spline(pts, c.tolerance, 80, true, {}, SmoothingPenalty::sparse);
+    const BSplineFit merged = fit_smoothing_spline(pts, c.tolerance, 80, true, {}, SmoothingPenalty::sparse, merging);
+    ASSERT_EQ(merged.spans.size(), 80u);
+    EXPECT_GT(inflections(plain), 0) << c.wavelength;
+    EXPECT_LE(inflections(merged), 0.6 * inflections(plain)) << c.wavelength;
+    EXPECT_LE(farthest(pts, merged), 1.05 * c.tolerance + 0.01) << c.wavelength;
+  }
+  // The circle has one lobe: nothing to merge, the fit unchanged.
+  std::vector<Vec2> circle;
+  for (int i = 0; i < 300; ++i) {
+    const double t = 2.0 * std::numbers::pi * i / 300;
+    circle.push_back({100.0 * std::cos(t), 100.0 * std::sin(t)});
+  }
+  const BSplineFit a = fit_smoothing_spline(circle, 1.0, 24, true, {}, SmoothingPenalty::sparse);
+  const BSplineFit b = fit_smoothing_spline(circle, 1.0, 24, true, {}, SmoothingPenalty::sparse, merging);
+  for (std::size_t i = 0; i < a.spans.size(); ++i)
+    for (int k = 0; k < 4; ++k) EXPECT_EQ(a.spans[i].p[k], b.spans[i].p[k]);
 }
 
 }  // namespace
