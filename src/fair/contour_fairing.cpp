@@ -323,8 +323,11 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
       // What the float outline leaves of the tolerance, segment by segment, is what rounding
       // may spend on G2 there (5 % kept for sampling).
       const bool hand = settings.profile == FairProfile::handwriting;
-      HandleStepLimits limits{settings.flat_curvature, 0.95 * (settings.tolerance_units - d), {},
-                              hand ? handwriting_polish_rounds : 0, hand, hand};
+      HandleStepLimits limits;
+      limits.flat_curvature = settings.flat_curvature;
+      limits.allowance = 0.95 * (settings.tolerance_units - d);
+      limits.polish_rounds = hand ? handwriting_polish_rounds : 0;
+      limits.inflection_handles = limits.node_turns = hand;
       for (const double e : by_segment) limits.allowance_by_cubic.push_back(0.95 * (settings.tolerance_units - e));
       faired = to_contour(round_to_grid(a.nodes, source.closed, limits), source.closed);
       d = distance_between(SampledContour(faired), sampled_source);

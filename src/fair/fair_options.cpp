@@ -17,6 +17,7 @@ FairSettings resolve_settings(const FairOptions& options, double units_per_em) {
   s.chain_share = hand ? 0.7 : 0.4;
   s.feature_window_units = hand ? 0.03 * units_per_em : 0.004 * units_per_em;
   if (hand) s.guide_lobes = {std::numbers::pi / 6.0, 0.3 / units_per_em};
+  s.tangents_between_chords = hand;
   return s;
 }
 

@@ -61,6 +61,9 @@ struct FairSettings {
   /// Handwriting: the guide's lobes of curvature merged into their neighbours
   /// (geom/smoothing_spline): those turning less than 30°, held to bend at least 0.3 per em.
   LobeMerging guide_lobes;
+  /// Handwriting: each chain's free junction tangents start inside the wedge between their
+  /// chords (fair/initial_tangents); on text, g2-jumps moved both ways (seven fonts 20 → 21).
+  bool tangents_between_chords = false;
 };
 
 FairSettings resolve_settings(const FairOptions& options, double units_per_em);

@@ -17,7 +17,7 @@ struct Choice {
   Vec2 point;
   std::optional<Vec2> in, out;
   Vec2 step;  ///< the primitive direction both handles are multiples of
-  double cost = 1e300;
+  double cost = 0.0;
 };
 
 // A cubic at a node, as far as the choice of the node's grid direction needs it: the
@@ -59,17 +59,21 @@ struct NodeSides {
 // near the handles' direction, no longer than the shorter handle; the node itself may move by
 // one unit from its nearest grid point. A choice that keeps both cubics bent as they were,
 // turning the tangent by less than the kink limit, beats any that does not (a wider turn is a
-// visible change of its own: a brush font's half-unit handles would swing by 30–45°).
-Choice collinear_choice(Vec2 point, std::optional<Vec2> in, std::optional<Vec2> out, const NodeSides& sides) {
-  // Along the out-handle, or the in-handle where that lies on the node.
+// visible change of its own: a brush font's half-unit handles would swing by 30–45°). The
+// direction is the out-handle's, or the in-handle's where that lies on the node; none where
+// both do (the cubics of no extent a segment's overrun of its arc length leaves at a chain's
+// end: dkg Bold's G had four, and such a node went to the origin).
+std::optional<Choice> collinear_choice(Vec2 point, std::optional<Vec2> in, std::optional<Vec2> out,
+                                       const NodeSides& sides) {
   Vec2 dir = out ? *out - point : Vec2{};
   if (norm(dir) == 0.0 && in) dir = point - *in;
+  if (norm(dir) == 0.0) return std::nullopt;
   const double shortest = std::min(in ? norm(point - *in) : 1e300, out ? norm(*out - point) : 1e300);
   const int reach = std::clamp(static_cast<int>(shortest), 1, 64);
   const bool steep = std::abs(dir.y) > std::abs(dir.x);
   const Vec2 base = nearest_grid_point(point);
   const double most_turn = radians(kink_limit_deg);
-  Choice best;
+  std::optional<Choice> best;
   bool best_keeps = false;
   for (int major = 1; major <= reach; ++major) {
     const double minor_exact = major * (steep ? dir.x / std::abs(dir.y) : dir.y / std::abs(dir.x));
@@ -96,7 +100,7 @@ Choice collinear_choice(Vec2 point, std::optional<Vec2> in, std::optional<Vec2> 
             c.cost = std::max(c.cost, distance(*c.out, *out));
           }
           const bool keeps = near && sides.kept_by(c);
-          if (keeps > best_keeps || (keeps == best_keeps && c.cost < best.cost)) best = c, best_keeps = keeps;
+          if (!best || keeps > best_keeps || (keeps == best_keeps && c.cost < best->cost)) best = c, best_keeps = keeps;
         }
     }
   }
@@ -218,13 +222,10 @@ std::vector<OutlineNode> round_to_grid(const std::vector<OutlineNode>& nodes, bo
       sides.before = node_side(outline_cubic(nodes, before), SegmentEnd::end, r[before].point, *r[before].out_handle, flat);
     if (nodes[after].in_handle)
       sides.after = node_side(outline_cubic(nodes, i), SegmentEnd::start, r[after].point, *r[after].in_handle, flat);
-    const Choice c = collinear_choice(src.point, src.in_handle, src.out_handle, sides);
-    // Both handles on their node give no direction, and no choice: the node as plainly rounded
-    // (the cubics of no extent that a segment's overrun of its arc length leaves at a chain's
-    // end: dkg Bold's G had four, and such a node went to the origin).
-    if (c.cost == 1e300) continue;
-    dst.point = c.point, dst.in_handle = c.in, dst.out_handle = c.out;
-    steps[i] = c.step;
+    const std::optional<Choice> c = collinear_choice(src.point, src.in_handle, src.out_handle, sides);
+    if (!c) continue;  // as plainly rounded
+    dst.point = c->point, dst.in_handle = c->in, dst.out_handle = c->out;
+    steps[i] = c->step;
   }
   place_lines_on_grid(nodes, r, steps, closed, limits);
   resolve_handle_lengths(r, nodes, steps, closed);

@@ -124,6 +124,20 @@ struct CubicTraits {
   double turning = 0.0;  ///< of a cubic shorter than fold_chord (cubic_turning), else 0
 };
 
+// The turns of κ a node adds, counted as the check counts them over the second half of the
+// cubic before it and the first half of the one after, beyond what that first half counts
+// alone (the halves' own turns are their cubics').
+int turns_at_node(const CubicTraits& before, const CubicTraits& after, double hysteresis) {
+  TurnCounter joined = before.shape.tail, alone;
+  joined.turns = 0;
+  for (const double k : after.shape.head) {
+    joined.add(k, hysteresis), alone.add(k, hysteresis);
+    // Once both counters stand alike, the rest of the half adds to both alike.
+    if (joined.direction == alone.direction && joined.anchor == alone.anchor) break;
+  }
+  return joined.turns - alone.turns;
+}
+
 // Every cubic of the outline against its unrounded self. How far each may move to gain G2 is
 // set once: its allowance, or as far as rounding alone already put it. Each candidate is
 // measured once, however many passes weigh it.
@@ -146,12 +160,26 @@ class CubicJudge {
   }
 
   double allowed(std::size_t i) const { return allowed_[i]; }
-  /// 1 % of the outline's largest unrounded |κ|: a rise or fall of κ smaller is not a turn.
-  double hysteresis() const { return hysteresis_; }
-  /// HandleStepLimits::inflection_handles.
-  bool inflection_handles() const { return inflection_handles_; }
   /// HandleStepLimits::node_turns.
   bool node_turns() const { return node_turns_; }
+  /// HandleStepLimits::inflection_handles.
+  bool inflection_handles() const { return inflection_handles_; }
+  /// The turns of κ at the node between cubics h and i beyond the unrounded outline's there
+  /// (`unrounded_turns`, unrounded_node_turns(h, i)), as an extremum inside a cubic costs;
+  /// none unless HandleStepLimits::node_turns.
+  double node_turn_cost(const CubicTraits& before, const CubicTraits& after, int unrounded_turns) const {
+    if (!node_turns_) return 0.0;
+    return turn_weight * std::max(0, turns_at_node(before, after, hysteresis_) - unrounded_turns);
+  }
+  int unrounded_node_turns(std::size_t h, std::size_t i) const {
+    return node_turns_ ? turns_at_node(ideal_[h], ideal_[i], hysteresis_) : 0;
+  }
+  /// Whether κ turns at node i (joining cubics h and i) or inside either cubic where the
+  /// unrounded outline does not; never unless HandleStepLimits::node_turns.
+  bool turns_too_often(std::size_t h, const CubicTraits& before, std::size_t i, const CubicTraits& after) const {
+    return node_turns_ && (node_turn_cost(before, after, unrounded_node_turns(h, i)) > 0.0 ||
+                           before.shape.turns > ideal_[h].shape.turns || after.shape.turns > ideal_[i].shape.turns);
+  }
   const CubicTraits& unrounded(std::size_t i) const { return ideal_[i]; }
 
   /// The traits of `c` in the place of cubic i.
@@ -182,12 +210,7 @@ struct CubicChoices {
   std::size_t start = 0, end = 0;  ///< node indices
   std::vector<Vec2> outs, ins;
   std::vector<double> k_start, k_end, cost;
-  /// Where the turns at its nodes are weighed (HandleStepLimits::node_turns): each state's
-  /// traits, the unrounded cubic's, and the hysteresis they are counted with.
-  std::vector<const CubicTraits*> traits;
-  const CubicTraits* ideal = nullptr;
-  double hysteresis = 0.0;
-  bool node_turns = false;
+  std::vector<const CubicTraits*> traits;  ///< each state's, for the turns at its nodes
 
   std::size_t states() const { return outs.size() * ins.size(); }
 };
@@ -207,7 +230,6 @@ CubicChoices cubic_choices(const std::vector<OutlineNode>& nodes, std::span<cons
   const Vec2 p0 = nodes[i].point, p3 = nodes[j].point;
   const double allowed = judge.allowed(i);
   const CubicTraits& ideal = judge.unrounded(i);
-  c.ideal = &ideal, c.hysteresis = judge.hysteresis(), c.node_turns = judge.node_turns();
   // κ = 0 at an end that meets a line, or at a smooth node flat before rounding (an inflection,
   // where asked): the far handles nearest that end's tangent line join the choices
   // (seat_inflections moves the node itself for them).
@@ -270,31 +292,6 @@ CubicChoices cubic_choices(const std::vector<OutlineNode>& nodes, std::span<cons
   return c;
 }
 
-// The turns of κ a node adds, counted as the check counts them over the second half of the
-// cubic before it and the first half of the one after, beyond what that first half counts
-// alone (the halves' own turns are their cubics').
-int node_turns(const CubicTraits& before, const CubicTraits& after, double hysteresis) {
-  TurnCounter joined = before.shape.tail, alone;
-  joined.turns = 0;
-  for (const double k : after.shape.head) {
-    joined.add(k, hysteresis), alone.add(k, hysteresis);
-    // Once both counters stand alike, the rest of the half adds to both alike.
-    if (joined.direction == alone.direction && joined.anchor == alone.anchor) break;
-  }
-  return joined.turns - alone.turns;
-}
-
-// What a node's turns beyond the unrounded outline's there (`ideal`) cost: as an extremum
-// inside a cubic, not capped, where asked.
-double node_turn_cost(const CubicChoices& prev, std::size_t s, const CubicChoices& cur, std::size_t t, int ideal) {
-  if (!cur.node_turns) return 0.0;
-  return turn_weight * std::max(0, node_turns(*prev.traits[s], *cur.traits[t], cur.hysteresis) - ideal);
-}
-
-int ideal_node_turns(const CubicChoices& prev, const CubicChoices& cur) {
-  return cur.node_turns ? node_turns(*prev.ideal, *cur.ideal, cur.hysteresis) : 0;
-}
-
 // The cheapest states of a run of cubics joined at smooth nodes; `first`, for a run that
 // closes on itself, fixes the first cubic's state and adds the join from the last back to it.
 struct RunChoice {
@@ -302,7 +299,8 @@ struct RunChoice {
   double cost = infeasible;
 };
 
-RunChoice best_run(const std::vector<CubicChoices>& run, double flat, std::optional<std::size_t> first) {
+RunChoice best_run(const std::vector<CubicChoices>& run, const CubicJudge& judge, double flat,
+                   std::optional<std::size_t> first) {
   const std::size_t n = run.size();
   std::vector<std::vector<std::size_t>> back(n);
   std::vector<double> cost(run[0].states(), infeasible);
@@ -312,14 +310,14 @@ RunChoice best_run(const std::vector<CubicChoices>& run, double flat, std::optio
     const CubicChoices &prev = run[k - 1], &cur = run[k];
     std::vector<double> next(cur.states(), infeasible);
     back[k].assign(cur.states(), 0);
-    const int ideal_turns = ideal_node_turns(prev, cur);
+    const int unrounded_turns = judge.unrounded_node_turns(prev.start, cur.start);
     for (std::size_t t = 0; t < cur.states(); ++t) {
       if (cur.cost[t] == infeasible) continue;
       for (std::size_t s = 0; s < prev.states(); ++s) {
         if (cost[s] == infeasible) continue;
         const double c = cost[s] + jump_cost(jump(prev.k_end[s], cur.k_start[t], flat));
         if (c >= next[t]) continue;  // a node's turns only add to it
-        const double with_turns = c + node_turn_cost(prev, s, cur, t, ideal_turns);
+        const double with_turns = c + judge.node_turn_cost(*prev.traits[s], *cur.traits[t], unrounded_turns);
         if (with_turns < next[t]) next[t] = with_turns, back[k][t] = s;
       }
       next[t] += cur.cost[t];
@@ -331,7 +329,8 @@ RunChoice best_run(const std::vector<CubicChoices>& run, double flat, std::optio
     double c = cost[s];
     if (first && c != infeasible)
       c += jump_cost(jump(run[n - 1].k_end[s], run[0].k_start[*first], flat)) +
-           node_turn_cost(run[n - 1], s, run[0], *first, ideal_node_turns(run[n - 1], run[0]));
+           judge.node_turn_cost(*run[n - 1].traits[s], *run[0].traits[*first],
+                                judge.unrounded_node_turns(run[n - 1].start, run[0].start));
     if (c < best.cost) best.cost = c, best.states.assign(n, 0), best.states[n - 1] = s;
   }
   if (best.cost == infeasible) return best;
@@ -627,11 +626,11 @@ RunSteps best_run_steps(const std::vector<OutlineNode>& nodes, std::span<const s
   if (cycle) {
     for (std::size_t first = 0; first < run[0].states(); ++first) {
       if (run[0].cost[first] >= best.cost) continue;  // costs only add up: it cannot win
-      RunChoice c = best_run(run, flat, first);
+      RunChoice c = best_run(run, judge, flat, first);
       if (c.cost < best.cost) best = std::move(c);
     }
   } else {
-    best = best_run(run, flat, std::nullopt);
+    best = best_run(run, judge, flat, std::nullopt);
   }
   return {std::move(run), std::move(best)};
 }
@@ -711,19 +710,15 @@ RunSteps choose_window(const std::vector<OutlineNode>& nodes, std::span<const st
                                         : cubic_choices(nodes, steps, i, j, judge, flat, joins.meets_line(i),
                                                         joins.meets_line(j), as_is));
   }
-  out.best = best_run(out.run, flat, std::nullopt);
+  out.best = best_run(out.run, judge, flat, std::nullopt);
   return out;
 }
 
-// Whether κ turns at node i (joining two cubics), or inside either cubic, where the unrounded
-// outline's does not (HandleStepLimits::node_turns; never otherwise).
+// CubicJudge::turns_too_often at node i of the outline as it stands.
 bool turns_too_often(const std::vector<OutlineNode>& nodes, const OutlineJoins& joins, CubicJudge& judge, std::size_t i) {
   if (!judge.node_turns() || !joins.joins_cubics(i)) return false;
-  const std::size_t n = nodes.size(), h = (i + n - 1) % n;
-  const CubicTraits &before = judge.traits(h, outline_cubic(nodes, h)), &after = judge.traits(i, outline_cubic(nodes, i));
-  return node_turns(before, after, judge.hysteresis()) >
-             node_turns(judge.unrounded(h), judge.unrounded(i), judge.hysteresis()) ||
-         before.shape.turns > judge.unrounded(h).shape.turns || after.shape.turns > judge.unrounded(i).shape.turns;
+  const std::size_t h = (i + nodes.size() - 1) % nodes.size();
+  return judge.turns_too_often(h, judge.traits(h, outline_cubic(nodes, h)), i, judge.traits(i, outline_cubic(nodes, i)));
 }
 
 // Where a run still jumps once the passes end, or turns where it should not (turns_too_often):

@@ -322,9 +322,8 @@ ChainOutcome fair_chain(const ChainSpan& span, const RunReference& ref, PieceAlp
   const double L = ref.length();
   out.cuts = missing_junctions(span, L);
   if (out.adjusts()) return out;
-  // Handwriting only: on text, as many g2-jumps came as went (a–z A–Z of seven fonts, 20 → 21).
   LacChain chain = initial_chain(span, ref, alphas, run, settings.feature_window_units, budget,
-                                 settings.profile == FairProfile::handwriting);
+                                 settings.tangents_between_chords);
   make_drawable(chain, span, ref, run, out);
   if (out.adjusts()) return out;
 

@@ -97,6 +97,8 @@ class SmoothingProblem {
         const Cubic c = basis_.span_cubic(unit, s);
         unit[static_cast<std::size_t>(t.index[k])] = {};
         t.w[k] = (c.p[3] - 3.0 * c.p[2] + 3.0 * c.p[1] - c.p[0]).x;
+        t.bend_start[k] = (c.p[2] - 2.0 * c.p[1] + c.p[0]).x;
+        t.bend_end[k] = (c.p[3] - 2.0 * c.p[2] + c.p[1]).x;
       }
     }
     weigh_spans(std::vector<double>(terms_.size(), 1.0));
@@ -208,14 +210,10 @@ class SmoothingProblem {
   };
   BendRow bend_row(int span, double t, Vec2 normal, double target) const {
     BendRow row{{}, {}, normal, target};
-    std::vector<Vec2> unit(controls_.size());
     const SpanTerm& term = terms_[static_cast<std::size_t>(span)];
     for (int k = 0; k < 4; ++k) {
       row.index[k] = term.index[k];
-      unit[static_cast<std::size_t>(term.index[k])] = {1.0, 0.0};
-      const Cubic c = basis_.span_cubic(unit, span);
-      unit[static_cast<std::size_t>(term.index[k])] = {};
-      row.w[k] = 6.0 * ((1.0 - t) * (c.p[2] - 2.0 * c.p[1] + c.p[0]) + t * (c.p[3] - 2.0 * c.p[2] + c.p[1])).x;
+      row.w[k] = 6.0 * ((1.0 - t) * term.bend_start[k] + t * term.bend_end[k]);
     }
     return row;
   }
@@ -244,9 +242,12 @@ class SmoothingProblem {
   std::span<const Vec2> points_;
   BSplineBasis basis_;
   std::vector<Control> controls_;
+  // A span's four controls and their weights in its third derivative (constant on the span)
+  // and in its second derivative over 6 at its ends (linear between them), in Bézier form.
   struct SpanTerm {
     int index[4];
     double w[4];
+    double bend_start[4], bend_end[4];
   };
   std::vector<SpanTerm> terms_;
   int unknowns_ = 0;
@@ -370,6 +371,20 @@ void merge_small_lobes(SmoothingProblem& problem, Fitted& fit, double tolerance,
     if (closed && u >= lobes[0].u0 + 1.0) return u - 1.0;
     return u;
   };
+  // The half-span points and the lobe each lies in.
+  struct Point {
+    int span;
+    double t, u;
+    std::size_t lobe;
+  };
+  std::vector<Point> points;
+  for (int j = 0; j < spans; ++j)
+    for (const double t : {0.0, 0.5}) {
+      const double u = unwrap((j + t) / spans);
+      std::size_t i = 0;
+      while (i + 1 < count && u >= lobes[i + 1].u0) ++i;
+      points.push_back({j, t, u, i});
+    }
   std::size_t lobes_now = count;
   const auto attempt = [&] {
     std::vector<double> kept;  // the sign changes that stay
@@ -377,43 +392,34 @@ void merge_small_lobes(SmoothingProblem& problem, Fitted& fit, double tolerance,
       const std::size_t k = (i + 1) % count;
       if (sign[i] != sign[k]) kept.push_back(0.5 * (lobes[i].u1 + lobes[k].u0 + (k == 0 ? 1.0 : 0.0)));
     }
-    struct Point {
-      int span;
-      double t;
-      int sign;
-    };
-    std::vector<Point> points;
     const double margin = 0.75 / spans;
-    for (int j = 0; j < spans; ++j)
-      for (const double t : {0.0, 0.5}) {
-        const double u = unwrap((j + t) / spans);
-        const bool near_kept = std::any_of(kept.begin(), kept.end(), [&](double v) {
-          const double d = std::abs(u - v);
-          return std::min(d, closed ? std::abs(1.0 - d) : d) < margin;
-        });
-        if (near_kept) continue;
-        std::size_t i = 0;
-        while (i + 1 < count && u >= lobes[i + 1].u0) ++i;
-        points.push_back({j, t, sign[i]});
-      }
+    const auto near_kept = [&](const Point& p) {
+      return std::any_of(kept.begin(), kept.end(), [&](double v) {
+        const double d = std::abs(p.u - v);
+        return std::min(d, closed ? std::abs(1.0 - d) : d) < margin;
+      });
+    };
     const SmoothingProblem before = problem;
     std::vector<SmoothingProblem::BendRow> rows;
-    std::vector<bool> held(points.size(), false);
+    // Held already, or left free next to a sign change that stays.
+    std::vector<bool> settled(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) settled[i] = near_kept(points[i]);
     Fitted f = fit;
     for (int round = 0; round < merge_rounds; ++round) {
       const std::vector<Cubic> now = problem.spans(f.controls);
       const std::size_t before_rows = rows.size();
       for (std::size_t i = 0; i < points.size(); ++i) {
-        if (held[i]) continue;
+        if (settled[i]) continue;
         const Point& p = points[i];
+        const int way = sign[p.lobe];
         const Derivatives d = derivatives_at(now[static_cast<std::size_t>(p.span)], p.t);
         const double speed = norm(d.d1);
         if (speed <= 0.0) continue;
         const Vec2 normal = perpendicular(d.d1 / speed);
-        const double least = p.sign * merging.least_curvature * speed * speed;
-        if (p.sign * (dot(d.d2, normal) - least) >= 0.0) continue;
+        const double least = way * merging.least_curvature * speed * speed;
+        if (way * (dot(d.d2, normal) - least) >= 0.0) continue;
         rows.push_back(problem.bend_row(p.span, p.t, normal, least));
-        held[i] = true;
+        settled[i] = true;
       }
       if (rows.size() == before_rows) break;
       problem.hold_bends(rows);
