@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <span>
 #include <vector>
 
+#include "geom/arc_length.hpp"
 #include "geom/critical_points.hpp"
 #include "geom/curvature.hpp"
 #include "geom/polyline_distance.hpp"
@@ -28,8 +30,19 @@ double moved_distance(const Cubic& a, const Cubic& b, double within) {
 }
 
 int inner_axis_extrema(const Cubic& c) {
-  const std::vector<AxisExtremum> all = axis_extrema(c);
-  return static_cast<int>(std::count_if(all.begin(), all.end(), [](const AxisExtremum& e) { return e.t > 0.01 && e.t < 0.99; }));
+  // By arc length, not t: a long handle crowds the first hundredth of t into a few units. An
+  // extremum on a node (most cubics start or end at one) is at t = 0 or 1 to rounding.
+  constexpr double on_node = 1e-9;
+  const Segment whole(c);
+  std::optional<double> length;
+  int inner = 0;
+  for (const AxisExtremum& e : axis_extrema(c)) {
+    if (e.t <= on_node || e.t >= 1.0 - on_node) continue;
+    if (!length) length = arc_length_estimate(whole);
+    const double before = arc_length_estimate(whole, 0.0, e.t);
+    inner += before > 0.01 * *length && *length - before > 0.01 * *length;
+  }
+  return inner;
 }
 
 double overreach_length(const Cubic& c) {

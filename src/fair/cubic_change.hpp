@@ -16,7 +16,8 @@ namespace gf {
 /// only that it is past.
 double moved_distance(const Cubic& a, const Cubic& b, double within);
 
-/// Horizontal and vertical extrema away from the ends (those within 1 % of t sit on the node).
+/// Horizontal and vertical extrema away from the ends: more than 1 % of the cubic's arc length
+/// from both (nearer, they sit on the node).
 int inner_axis_extrema(const Cubic& c);
 
 /// How far (units) the longer handle reaches beyond twice the chord and two units, 0 when

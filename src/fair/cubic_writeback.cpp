@@ -200,18 +200,21 @@ struct RequiredNode {
 };
 
 // Where the tangent is horizontal or vertical (each segment turns by less than π, monotonically).
+// A segment's ends count within `on_axis` radians: a junction at an extremum (every junction
+// of a circle's chain) comes out a last bit short of the axis on one side or the other, and
+// was lost to both segments (Inter Italic's i dot: one node, and its one cubic collapsed).
 std::vector<RequiredNode> axis_extrema(const ChainPath& path) {
   std::vector<RequiredNode> out;
-  const double quarter = std::numbers::pi / 2;
+  const double quarter = std::numbers::pi / 2, on_axis = 1e-9;
   for (std::size_t i = 0; i < path.segment_count(); ++i) {
     const PathPiece& seg = path.piece(i);
     const Vec2 t0 = seg.at(0.0).tangent;
     const double phi0 = angle_of(t0);
     const double turn = turning_angle(t0, seg.at(seg.length).tangent);
-    const double lo = std::min(phi0, phi0 + turn), hi = std::max(phi0, phi0 + turn);
+    const double lo = std::min(phi0, phi0 + turn) - on_axis, hi = std::max(phi0, phi0 + turn) + on_axis;
     for (double k = std::ceil(lo / quarter); k * quarter <= hi; k += 1.0) {
       const double target = k * quarter - phi0;
-      if (std::abs(target) < 1e-12 && i > 0) continue;  // the previous segment's end has it
+      if (std::abs(target) <= on_axis && i > 0) continue;  // the previous segment's end has it
       const double start = path.segment_start(i);
       const double sigma = path.where_turned(start, start + seg.length, target);
       const Vec2 t = path.at(sigma).tangent;
@@ -493,7 +496,9 @@ ChainCubics write_chain_as_cubics(const FairedChain& chain, double budget, doubl
     distinct.push_back(n);
   }
   if (chain.closed && distinct.size() > 1 && distinct.front().sigma + total - distinct.back().sigma < 0.5) distinct.pop_back();
+  // A closed chain needs two spans at least: one cubic cannot close on itself.
   if (chain.closed && distinct.empty()) distinct.push_back({0.0, std::nullopt});
+  if (chain.closed && distinct.size() == 1) distinct.push_back({distinct.front().sigma + 0.5 * total, std::nullopt});
 
   if (!chain.closed) {
     snap_extremum_to_corner(path, budget, flat_curvature, distinct, SegmentEnd::start, ends.start_corner);

@@ -26,6 +26,7 @@ constexpr int max_rounds = 10;
 constexpr int fallback_rounds = 4;  // a text run on its guide, after its own outline failed
 constexpr double max_relative_mismatch = 1e-9;  // |Δκ| / max|κ| the G2 solve must reach
 constexpr int max_g3_rounds = 4;  // of cutting the segments whose G3 spirals stray
+constexpr int max_guide_refinements = 3;  // doublings of a smoothing guide's spans
 
 // α of each piece of a run's reference from its LCG, estimated once: a round of refinement
 // solves again only the spans whose junctions changed, and most of their pieces are pieces of
@@ -367,10 +368,11 @@ ChainOutcome fair_chain(const ChainSpan& span, const RunReference& ref, PieceAlp
 
 // Handwriting traced from scans wobbles at every scale below the tolerance: the junctions and
 // the chain are built on a guide, the smoothest cubic spline of the run within `tolerance` of
-// it (geom/smoothing_spline; one span per half feature window), while fidelity is measured
-// against the source itself. A line's tangent is held at its end; a corner's is the guide's.
-// None when no spline comes within the tolerance. A professional outline is its own guide
-// until no chain on it comes within the budget (fair_run).
+// it (geom/smoothing_spline; one span per half feature window, up to eight where that cannot
+// come within it), while fidelity is measured against the source itself. A line's tangent is
+// held at its end; a corner's is the guide's. None when no spline comes within the tolerance.
+// A professional outline is its own guide until no chain on it comes within the budget
+// (fair_run).
 std::optional<SmoothRun> guide_for(const SmoothRun& run, const RunReference& source, double tolerance, double window,
                                    SmoothingPenalty penalty, const LobeMerging& merging) {
   const double L = source.length();
@@ -383,9 +385,16 @@ std::optional<SmoothRun> guide_for(const SmoothRun& run, const RunReference& sou
   SmoothingEnds ends;
   if (!run.closed && run.start.kind == RunEndKind::line) ends.start_tangent = run.start.tangent;
   if (!run.closed && run.end.kind == RunEndKind::line) ends.end_tangent = run.end.tangent;
-  const int spans = std::clamp(static_cast<int>(std::ceil(L / (0.5 * window))), run.closed ? 4 : 1, 80);
-  const BSplineFit fit = fit_smoothing_spline(points, tolerance, spans, run.closed, ends, penalty, merging);
-  if (fit.spans.empty() || fit.max_residual > 1.05 * tolerance) return std::nullopt;
+  int spans = std::clamp(static_cast<int>(std::ceil(L / (0.5 * window))), run.closed ? 4 : 1, 80);
+  const auto within = [&](const BSplineFit& f) { return !f.spans.empty() && f.max_residual <= 1.05 * tolerance; };
+  BSplineFit fit = fit_smoothing_spline(points, tolerance, spans, run.closed, ends, penalty, merging);
+  // A thin contour's tolerance is half its thickness, a tenth of a unit on a brush font's
+  // hairline (Because We Create's t): finer spans there, at least two points each.
+  for (int k = 0; k < max_guide_refinements && !within(fit) && 4 * spans <= static_cast<int>(points.size()); ++k) {
+    spans *= 2;
+    fit = fit_smoothing_spline(points, tolerance, spans, run.closed, ends, penalty, merging);
+  }
+  if (!within(fit)) return std::nullopt;
   SmoothRun guide = run;
   guide.cubics = fit.spans;
   if (!run.closed) {

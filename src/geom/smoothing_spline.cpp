@@ -15,6 +15,11 @@ namespace gf {
 namespace {
 
 constexpr double least_reach_share = 0.25;  // of a held control's even reach, below which it is set there
+// log10 of the most smoothing, relative to the data's weight: past it the spline is its
+// penalty's own shape to the last digit, and the normal equations lose the data (on a run
+// shorter than its tolerance the sparse rounds climbed to 10¹⁷, and the solve put the inner
+// controls at the origin: Because We Create's q).
+constexpr double most_log_lambda = 8.0;
 // Merging a lobe: the bends are held by a penalty this many times the data's mean weight (soft,
 // so that rows which depend on each other, as three along one span's linear r'' do, stay
 // solvable; 10³ left a third of a merged lobe's turning), λ may fall by up to 10^1.5, rows are
@@ -272,11 +277,12 @@ std::vector<double> sparse_weights(std::span<const double> third) {
   return weight;
 }
 
-// The largest λ = 10^e in [lo, hi] that keeps every point within the tolerance, by bisection
+// The largest λ = 10^e in [lo, min(hi, 10^8)] that keeps every point within the tolerance, by bisection
 // on e; each round moves the points' parameters to their feet on the curve and narrows around
 // the last choice. Returns e (lo when none does).
 double choose_lambda(SmoothingProblem& problem, double tolerance, double lo, double hi, int rounds) {
   std::vector<double> feet, best_feet;
+  hi = std::min(hi, most_log_lambda);
   double chosen = lo;
   for (int round = 0; round < rounds; ++round) {
     problem.fit_data();
@@ -294,7 +300,7 @@ double choose_lambda(SmoothingProblem& problem, double tolerance, double lo, dou
       problem.project(problem.spans(c), best_feet);
     }
     problem.move_parameters(best_feet);
-    lo = chosen - 1.5, hi = chosen + 1.5;
+    lo = chosen - 1.5, hi = std::min(chosen + 1.5, most_log_lambda);
   }
   return chosen;
 }

@@ -145,6 +145,51 @@ TEST(ContourFairing, AContourThinnerThanTheToleranceKeepsItsDirection) {
   EXPECT_EQ(kept.reason, "it encloses no area");
 }
 
+TEST(ContourFairing, ADotKeepsANodeAtEachExtremum) {
+  // Inter Italic's i dot, an ellipse in four cubics: its closed chain's junctions lie on the
+  // extrema, a last bit short of the axis on one side or the other, and only the first was
+  // found; the whole loop then went into one cubic that collapsed to a point.
+  Contour dot;
+  dot.segments = {Cubic{{{526, 1792}, {618, 1792}, {694, 1864}, {694, 1952}}},
+                  Cubic{{{694, 1952}, {694, 2040}, {618, 2112}, {526, 2112}}},
+                  Cubic{{{526, 2112}, {434, 2112}, {358, 2040}, {358, 1952}}},
+                  Cubic{{{358, 1952}, {358, 1864}, {434, 1792}, {526, 1792}}}};
+  dot.nodes.assign(4, NodeFlags{});
+  const FairSettings settings = resolve_settings(FairOptions{}, 2816.0);
+  const ContourFairing r = fair_contour(dot, settings);
+  ASSERT_TRUE(r.faired) << r.reason;
+  EXPECT_LE(brute_force_hausdorff(dot, r.contour), 1.01 * settings.tolerance_units);
+  ASSERT_EQ(r.contour.segments.size(), 4u);
+  for (std::size_t k = 0; k < 4; ++k) {  // a horizontal or vertical tangent at every node
+    const Vec2 t = *end_tangent(r.contour.segments[k], SegmentEnd::start);
+    EXPECT_TRUE(t.x == 0.0 || t.y == 0.0) << "node " << k;
+  }
+}
+
+TEST(ContourFairing, AHairlineIsFairedWithinHalfItsThickness) {
+  // Because We Create's t: a brush stroke 2 to 4 units wide, faired to half its thickness. The
+  // smoothing guide at one span per half feature window could not come that close, and the
+  // contour was kept with its kinks and its inner extrema.
+  Contour hairline;
+  hairline.segments = {Line{{{197, 285}, {198, 285}}},
+                       Cubic{{{198, 285}, {198, 273}, {197, 262}, {199, 251}}},
+                       Cubic{{{199, 251}, {201, 240}, {200, 229}, {201, 217}}},
+                       Cubic{{{201, 217}, {202, 200}, {205, 183}, {202, 166}}},
+                       Cubic{{{202, 166}, {200, 181}, {202, 196}, {200, 211}}},
+                       Cubic{{{200, 211}, {197, 223}, {200, 234}, {198, 247}}},
+                       Cubic{{{198, 247}, {196, 259}, {196, 272}, {197, 285}}}};
+  hairline.nodes.assign(hairline.segments.size(), NodeFlags{});
+  FairOptions fo;
+  fo.profile = FairProfile::handwriting;
+  const FairSettings settings = resolve_settings(fo, 1000.0);
+  const double allowed = 0.5 * thickness(hairline);
+  ASSERT_LT(allowed, 0.1 * settings.tolerance_units);
+  const ContourFairing r = fair_contour(hairline, settings);
+  ASSERT_TRUE(r.faired) << r.reason;
+  EXPECT_EQ(signed_area(r.contour) > 0.0, signed_area(hairline) > 0.0);
+  EXPECT_LE(brute_force_hausdorff(hairline, r.contour), 1.01 * allowed);
+}
+
 // Sign changes of κ along the smooth stretches of a contour (joins within 3° continue a
 // stretch, as the fairing bars count them), from 64 steps per segment, |κ|·UPM under 1e-6 as 0.
 int inflections(const Contour& c, double upm) {

@@ -72,5 +72,14 @@ TEST(CubicTurning, ArcsTurnTheirAngleAndLoopsTurnTheLongWayRound) {
   EXPECT_GT(cubic_turning(loop), ends + std::numbers::pi / 2);
 }
 
+TEST(InnerAxisExtrema, CountByArcLengthFromTheEnds) {
+  // Both cubics turn vertical at t = 0.0086 (x′ = 3(1 − t)² − 342(1 − t)t − 210t² there): with
+  // the long first handle that is 1.04 % of the arc length from the start, as the check measures
+  // (brute force, 200,000 steps), an extremum without a node (dkg's f, rounded); with the short
+  // one 0.53 %, on the node.
+  EXPECT_EQ(inner_axis_extrema(Cubic{{0, 0}, {1, 84}, {-56, 136}, {-126, 136}}), 1);
+  EXPECT_EQ(inner_axis_extrema(Cubic{{0, 0}, {1, 40}, {-56, 136}, {-126, 136}}), 0);
+}
+
 }  // namespace
 }  // namespace gf
