@@ -166,6 +166,33 @@ TEST(ContourFairing, ADotKeepsANodeAtEachExtremum) {
   }
 }
 
+TEST(ContourFairing, RoundingThatStraysIsDoneAgainOnLessAllowance) {
+  // DejaVu Sans's chi: rounding slid the end of the upper arm's line along it and the handles
+  // after it took other whole steps, 4.4 units from the source at a tolerance of 2.56, and the
+  // contour was kept as it was. Rounded again on half the allowance, it fairs.
+  const std::vector<Vec2> corners{{732, -250}, {583, 133}, {276, -427}, {59, -427}, {493, 365}, {311, 836}};
+  Contour chi;
+  const auto line = [&](Vec2 a, Vec2 b) { chi.segments.push_back(Line{{a, b}}); };
+  const auto quad = [&](Vec2 a, Vec2 c, Vec2 b) { chi.segments.push_back(Quad{{a, c, b}}); };
+  for (std::size_t k = 0; k + 1 < corners.size(); ++k) line(corners[k], corners[k + 1]);
+  quad({311, 836}, {262, 962}, {108, 962});
+  line({108, 962}, {59, 962}), line({59, 962}, {59, 1120}), line({59, 1120}, {129, 1118});
+  quad({129, 1118}, {387, 1111}, {452, 944});
+  line({452, 944}, {600, 561}), line({600, 561}, {907, 1121}), line({907, 1121}, {1124, 1121});
+  line({1124, 1121}, {690, 329}), line({690, 329}, {872, -142});
+  quad({872, -142}, {921, -268}, {1075, -268});
+  line({1075, -268}, {1124, -268}), line({1124, -268}, {1124, -426}), line({1124, -426}, {1054, -424});
+  quad({1054, -424}, {796, -417}, {732, -250});
+  chi.nodes.assign(chi.segments.size(), NodeFlags{});
+  const FairSettings settings = resolve_settings(FairOptions{}, 2048.0);
+  const ContourFairing r = fair_contour(chi, settings);
+  ASSERT_TRUE(r.faired) << r.reason;
+  EXPECT_LE(brute_force_hausdorff(chi, r.contour), 1.01 * settings.tolerance_units);
+  EXPECT_EQ(signed_area(r.contour) > 0.0, signed_area(chi) > 0.0);
+  for (const Segment& s : r.contour.segments)
+    for_each_point(s, [&](Vec2 p) { EXPECT_TRUE(p.x == std::round(p.x) && p.y == std::round(p.y)); });
+}
+
 TEST(ContourFairing, AHairlineIsFairedWithinHalfItsThickness) {
   // Because We Create's t: a brush stroke 2 to 4 units wide, faired to half its thickness. The
   // smoothing guide at one span per half feature window could not come that close, and the
