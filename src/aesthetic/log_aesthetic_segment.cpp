@@ -46,6 +46,11 @@ LacPoint LogAestheticSegment::at_standard(double theta, cplx c, bool exact_end) 
     k_std = curve_.curvature_of_theta(theta);
     dk_std = curve_.curvature_derivative_of_theta(theta);
   }
+  return placed(theta, c, k_std, dk_std);
+}
+
+LacPoint LogAestheticSegment::placed(double theta, cplx c, double k_std, std::optional<double> dk_std) const {
+  const double S = scale();
   const double m = mirrored_ ? -1.0 : 1.0;
   const double g = m * (reversed_ ? -1.0 : 1.0);
   const cplx along = z_ * (mirrored_ ? std::polar(1.0, -theta) : std::polar(1.0, theta)) / S;
@@ -61,11 +66,37 @@ LacPoint LogAestheticSegment::at_standard(double theta, cplx c, bool exact_end) 
 LacPoint LogAestheticSegment::start() const { return reversed_ ? standard_end() : standard_start(); }
 LacPoint LogAestheticSegment::end() const { return reversed_ ? standard_start() : standard_end(); }
 
+// Towards an inflection end (α < 0, κ = (|Λα| Δs)^{−1/α} with Δs the arc length left) the
+// curve runs straight so fast that θ(s) reaches θ_d to the last bit while Δs is still a few
+// hundredths of the segment (α = −0.1: θ_d − θ ∝ Δs¹¹), and C(θ), integrated in θ, stops there:
+// the last units of the segment drew as its end point. Near the end the position is instead
+// C(θ_d) − e^{iθ_d} ∫₀^Δs e^{−iΔθ(v)} dv with Δθ(v) = (|Λα| v)^p / (Λ(1 − α)), p = (α − 1)/α,
+// whose series Σ (−iΔθ(Δs))^k Δs / (k! (kp + 1)) converges at once where Δθ is small.
+std::optional<LacPoint> LogAestheticSegment::near_inflection_end(double before) const {
+  constexpr double most_turning = 0.05;  // radians: 13 terms reach 1e-17
+  const double a = curve_.alpha, L = curve_.lambda;
+  if (!(std::isinf(log_end_ratio_) && log_end_ratio_ < 0.0 && a < 0.0 && L > 0.0) || before <= 0.0) return std::nullopt;
+  const double p = (a - 1.0) / a, reach = -L * a * before;  // |Λα| Δs
+  const double turned = std::pow(reach, p) / (L * (1.0 - a));
+  if (!(turned <= most_turning)) return std::nullopt;
+  cplx sum = 0.0, power = 1.0;  // (−iΔθ)^k / k!
+  for (int k = 0; k < 40; ++k) {
+    const cplx term = power * before / (k * p + 1.0);
+    sum += term;
+    if (std::abs(term) <= 1e-17 * before) break;
+    power *= cplx(0.0, -turned) / static_cast<double>(k + 1);
+  }
+  const double k_std = std::pow(reach, -1.0 / a);
+  const std::optional<double> dk_std = -L * std::pow(k_std, a + 1.0);
+  return placed(theta_d_ - turned, end_position_ - std::polar(1.0, theta_d_) * sum, k_std, dk_std);
+}
+
 LacPoint LogAestheticSegment::at(double sigma) const {
   const double total = standard_end_length();
   const double s = std::clamp(reversed_ ? total - sigma / scale() : sigma / scale(), 0.0, total);
   if (s == 0.0) return standard_start();
   if (s == total) return standard_end();
+  if (const std::optional<LacPoint> tail = near_inflection_end(total - s)) return *tail;
   const double theta = curve_.theta_of_s(s);
   return at_standard(theta, lac_position(curve_, 0.0, theta), false);
 }
@@ -79,6 +110,10 @@ std::vector<LacPoint> LogAestheticSegment::sample(int n) const {
   cplx c = 0.0;
   double theta = 0.0;
   for (int j = 1; j < n; ++j) {
+    if (const std::optional<LacPoint> tail = near_inflection_end(total - total * j / n)) {
+      out.push_back(*tail);
+      continue;
+    }
     const double next = curve_.theta_of_s(total * j / n);
     c += lac_position(curve_, theta, next);
     theta = next;

@@ -51,6 +51,10 @@ class LogAestheticSegment {
 
  private:
   LacPoint at_standard(double theta, std::complex<double> c, bool exact_end) const;
+  LacPoint placed(double theta, std::complex<double> c, double k_std, std::optional<double> dk_std) const;
+  /// The standard curve `before` short of an inflection end, from that end (nullopt where the
+  /// segment has none or the stretch turns too much for the series).
+  std::optional<LacPoint> near_inflection_end(double before) const;
   LacPoint standard_start() const { return at_standard(0.0, 0.0, false); }
   LacPoint standard_end() const { return at_standard(theta_d_, end_position_, true); }
   double standard_end_length() const;

@@ -152,6 +152,36 @@ TEST(InflectionStart, MatchesTheSeedExample) {
   }
 }
 
+TEST(InflectionStart, TheStraightRunOutOfTheInflectionIsDrawn) {
+  // Near α = 0⁻ the curve leaves its inflection so straight that θ(s) stands still in double
+  // precision over the first hundredths of the segment (θ − θ₀ ∝ s^{1−1/α}), and positions
+  // integrated in θ stood at P0 there. Oracle: P0 plus the tangent integrated along the arc
+  // length (Simpson, 20,000 steps), against at(σ) and sample().
+  const Vec2 p2{std::sqrt(2.0) + 1.0, 1.0};
+  for (const double end_angle_deg : {130.0, 160.0, 170.0, 175.0}) {
+    const double a = end_angle_deg * std::numbers::pi / 180.0;
+    const Vec2 p1{p2.x - p2.y / std::tan(a), 0.0};
+    const SegmentFit fit = fit_inflection_start({0, 0}, p1, p2);
+    ASSERT_TRUE(fit.ok()) << fit.reason;
+    const LogAestheticSegment& s = *fit.segment;
+    const double L = s.length();
+    constexpr int steps = 20000;
+    const double h = L / steps;
+    Vec2 p{0, 0};
+    double worst = 0.0;
+    for (int k = 0; k < steps; k += 2) {
+      const Vec2 t0 = s.at(k * h).tangent, t1 = s.at((k + 1) * h).tangent, t2 = s.at((k + 2) * h).tangent;
+      p = p + (t0 + t1 * 4.0 + t2) * (h / 3.0);
+      worst = std::max(worst, distance(s.at((k + 2) * h).point, p));
+    }
+    EXPECT_LT(worst, 1e-9 * L) << end_angle_deg << "°: α = " << s.alpha();
+    const std::vector<LacPoint> samples = s.sample(200);
+    for (std::size_t j = 0; j < samples.size(); ++j)
+      EXPECT_LT(distance(samples[j].point, s.at(L * static_cast<double>(j) / 200.0).point), 1e-9 * L)
+          << end_angle_deg << "° sample " << j;
+  }
+}
+
 TEST(InflectionStart, NeedsTheLongerLegAtTheInflection) {
   EXPECT_FALSE(fit_inflection_start({0, 0}, {1, 0}, {1.5, 2}).ok());  // |P0P1| < |P1P2|
 }
