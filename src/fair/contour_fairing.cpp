@@ -23,6 +23,9 @@ namespace {
 // handwriting font's a-z A-Z changed no further after three.
 constexpr int handwriting_polish_rounds = 3;
 constexpr int rounding_retries = 3;  // on half the allowance each, when rounding strays
+// Cubics shorter than this (units) are merged away before rounding (outline_nodes): 2 took
+// Because We Create's missing extrema 9 → 6, 3 to 12.
+constexpr double tiny_cubic_chord = 2.0;
 
 // Points along a contour, dense enough that chords stay within a small fraction of a unit of
 // the curve for glyph-sized curvature, and for each the segment whose stretch of polyline (to
@@ -313,6 +316,7 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
       continue;
     }
     drop_empty_cubics(a.nodes, source.closed);
+    if (round) merge_tiny_cubics(a.nodes, source.closed, tiny_cubic_chord);
     rotate_to_start(a.nodes, source.node_point(0));
     Contour faired = to_contour(a.nodes, source.closed);
     const SampledContour sampled(faired);

@@ -65,4 +65,39 @@ void drop_empty_cubics(std::vector<OutlineNode>& nodes, bool closed) {
   }
 }
 
+namespace {
+
+bool on_axis(const OutlineNode& n) { return n.grid_step && (n.grid_step->x == 0.0 || n.grid_step->y == 0.0); }
+
+}  // namespace
+
+void merge_tiny_cubics(std::vector<OutlineNode>& nodes, bool closed, double shortest) {
+  for (std::size_t i = 0; nodes.size() > (closed ? 3u : 2u) && i < nodes.size();) {
+    const std::size_t j = (i + 1) % nodes.size();
+    const bool interior = closed || (i > 0 && j + 1 < nodes.size() && j != 0);
+    const OutlineNode &a = nodes[i], &b = nodes[j];
+    if (!interior || !a.smooth || !b.smooth || !a.in_handle || !a.out_handle || !b.in_handle || !b.out_handle ||
+        distance(a.point, b.point) >= shortest) {
+      ++i;
+      continue;
+    }
+    const double chord = distance(a.point, b.point);
+    const bool keep_first = on_axis(a) || !on_axis(b);
+    OutlineNode merged = keep_first ? a : b;
+    if (keep_first) {
+      const Vec2 t = a.point - *a.in_handle;
+      if (norm(t) == 0.0) { ++i; continue; }
+      merged.out_handle = a.point + t / norm(t) * (distance(*b.out_handle, b.point) + chord);
+    } else {
+      const Vec2 t = *b.out_handle - b.point;
+      if (norm(t) == 0.0) { ++i; continue; }
+      merged.in_handle = b.point - t / norm(t) * (distance(*a.in_handle, a.point) + chord);
+    }
+    // A closed contour's first node stays first.
+    const std::size_t keep = j == 0 ? j : i, drop = j == 0 ? i : j;
+    nodes[keep] = merged;
+    nodes.erase(nodes.begin() + static_cast<std::ptrdiff_t>(drop));
+  }
+}
+
 }  // namespace gf

@@ -32,11 +32,17 @@ Cubic outline_cubic(const std::vector<OutlineNode>& nodes, std::size_t i);
 Contour to_contour(const std::vector<OutlineNode>& nodes, bool closed);
 
 /// Removes every cubic of no extent (its node, both handles and the next node at one point),
-/// the node before it leaving as the node after it did: a log-aesthetic segment whose arc
-/// length runs a little past what it draws leaves its last units at its end point, where the
-/// writeback can cut cubics of length 0 (dkg Bold's G had four, and rounding sent such a node
-/// to the origin).
+/// the node before it leaving as the node after it did: rounding finds no direction for such
+/// a node (dkg Bold's G had four where a log-aesthetic segment's last units drew as its end
+/// point, and one went to the origin).
 void drop_empty_cubics(std::vector<OutlineNode>& nodes, bool closed);
+
+/// Merges the two smooth nodes of every cubic whose chord is under `shortest` into one, for
+/// rounding: the grid cannot draw a cubic of a unit or two, and whole steps folded such cubics
+/// into loops with an extremum inside (Because We Create's P and r). The node kept is the one
+/// on a horizontal or vertical extremum, else the first; the handle it takes over from the
+/// other node keeps its length, plus the chord, along the kept node's tangent.
+void merge_tiny_cubics(std::vector<OutlineNode>& nodes, bool closed, double shortest);
 
 /// The integer grid point nearest p.
 inline Vec2 nearest_grid_point(Vec2 p) { return {std::round(p.x), std::round(p.y)}; }

@@ -173,6 +173,37 @@ TEST(GridRounding, NodesRoundedOntoOnePointBecomeOne) {
   }
 }
 
+TEST(OutlineNodes, CubicsUnderTwoUnitsMergeIntoOneNode) {
+  // Because We Create's P: a vertical extremum 1.5 units from the next smooth node, between
+  // two corners. One node stays, the extremum; it leaves along its own tangent with the
+  // dropped node's out-handle length plus the chord, and arrives as it did.
+  const OutlineNode first = node({58, 390}, Vec2{60, 420}, Vec2{56.79, 389.19}, false);
+  const OutlineNode extremum = node({37.94, 368.05}, Vec2{37.94, 376.62}, Vec2{37.94, 367.36}, true, Vec2{0, -1});
+  const OutlineNode tiny_end = node({38.16, 366.57}, Vec2{38.06, 366.88}, Vec2{39.83, 361.58});
+  const OutlineNode last = node({59, 360}, Vec2{50.34, 360}, Vec2{80, 300}, false);
+  std::vector<OutlineNode> nodes{first, extremum, tiny_end, last};
+  merge_tiny_cubics(nodes, false, 2.0);
+  ASSERT_EQ(nodes.size(), 3u);
+  EXPECT_EQ(nodes[0], first);
+  EXPECT_EQ(nodes[2], last);
+  EXPECT_EQ(nodes[1].point, extremum.point);
+  EXPECT_EQ(nodes[1].in_handle, extremum.in_handle);
+  EXPECT_EQ(nodes[1].grid_step, extremum.grid_step);
+  const double reach = distance(*tiny_end.out_handle, tiny_end.point) + distance(extremum.point, tiny_end.point);
+  EXPECT_NEAR(nodes[1].out_handle->x, extremum.point.x, 1e-12);
+  EXPECT_NEAR(nodes[1].out_handle->y, extremum.point.y - reach, 1e-12);
+  // Off the axes the first node stays and takes the second's way out; two units apart, none merge.
+  std::vector<OutlineNode> diagonal{first, node({40, 370}, Vec2{39, 371}, Vec2{40.5, 369.5}),
+                                    node({41, 369}, Vec2{40.5, 369.5}, Vec2{43, 367}), last};
+  merge_tiny_cubics(diagonal, false, 2.0);
+  ASSERT_EQ(diagonal.size(), 3u);
+  EXPECT_EQ(diagonal[1].point, (Vec2{40, 370}));
+  std::vector<OutlineNode> apart{first, node({40, 370}, Vec2{39, 371}, Vec2{41, 369}), node({42, 370}, Vec2{41, 371}, Vec2{43, 369}), last};
+  const std::vector<OutlineNode> before = apart;
+  merge_tiny_cubics(apart, false, 2.0);
+  EXPECT_EQ(apart, before);
+}
+
 TEST(OutlineNodes, CubicsOfNoExtentAreDropped) {
   // An open chain ending with two cubics of length 0 at its end point (all their points on
   // it), and a closed square with one at its first node: the outlines without them.
