@@ -34,7 +34,6 @@ double LogAestheticSegment::standard_end_length() const {
 double LogAestheticSegment::length() const { return scale() * standard_end_length(); }
 
 LacPoint LogAestheticSegment::at_standard(double theta, cplx c, bool exact_end) const {
-  const double S = scale();
   const double a = curve_.alpha, L = curve_.lambda, x = log_end_ratio_;
   double k_std;
   std::optional<double> dk_std;
@@ -86,9 +85,9 @@ std::optional<LacPoint> LogAestheticSegment::near_inflection_end(double before) 
     if (std::abs(term) <= 1e-17 * before) break;
     power *= cplx(0.0, -turned) / static_cast<double>(k + 1);
   }
-  const double k_std = std::pow(reach, -1.0 / a);
-  const std::optional<double> dk_std = -L * std::pow(k_std, a + 1.0);
-  return placed(theta_d_ - turned, end_position_ - std::polar(1.0, theta_d_) * sum, k_std, dk_std);
+  const double k_std = std::pow(reach, -1.0 / a);  // κ and dκ/ds from Δs, not from θ
+  return placed(theta_d_ - turned, end_position_ - std::polar(1.0, theta_d_) * sum, k_std,
+                -L * std::pow(k_std, a + 1.0));
 }
 
 LacPoint LogAestheticSegment::at(double sigma) const {

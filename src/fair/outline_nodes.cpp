@@ -83,16 +83,15 @@ void merge_tiny_cubics(std::vector<OutlineNode>& nodes, bool closed, double shor
     }
     const double chord = distance(a.point, b.point);
     const bool keep_first = on_axis(a) || !on_axis(b);
-    OutlineNode merged = keep_first ? a : b;
-    if (keep_first) {
-      const Vec2 t = a.point - *a.in_handle;
-      if (norm(t) == 0.0) { ++i; continue; }
-      merged.out_handle = a.point + t / norm(t) * (distance(*b.out_handle, b.point) + chord);
-    } else {
-      const Vec2 t = *b.out_handle - b.point;
-      if (norm(t) == 0.0) { ++i; continue; }
-      merged.in_handle = b.point - t / norm(t) * (distance(*a.in_handle, a.point) + chord);
+    const Vec2 tangent = keep_first ? a.point - *a.in_handle : *b.out_handle - b.point;
+    if (norm(tangent) == 0.0) {
+      ++i;
+      continue;
     }
+    const Vec2 u = tangent / norm(tangent);
+    OutlineNode merged = keep_first ? a : b;
+    if (keep_first) merged.out_handle = a.point + u * (distance(*b.out_handle, b.point) + chord);
+    else merged.in_handle = b.point - u * (distance(*a.in_handle, a.point) + chord);
     // A closed contour's first node stays first.
     const std::size_t keep = j == 0 ? j : i, drop = j == 0 ? i : j;
     nodes[keep] = merged;
