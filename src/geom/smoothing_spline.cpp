@@ -299,9 +299,9 @@ std::vector<double> sparse_weights(std::span<const double> third) {
   return weight;
 }
 
-// The largest λ = 10^e in [lo, min(hi, 10^8)] that keeps every point within the tolerance, by bisection
-// on e; each round moves the points' parameters to their feet on the curve and narrows around
-// the last choice. Returns e (lo when none does).
+// The largest λ = 10^e, e in [lo, min(hi, most_log_lambda)], that keeps every point within the
+// tolerance, by bisection on e; each round moves the points' parameters to their feet on the
+// curve and narrows around the last choice. Returns e (lo when none does).
 double choose_lambda(SmoothingProblem& problem, double tolerance, double lo, double hi, int rounds) {
   std::vector<double> feet, best_feet;
   hi = std::min(hi, most_log_lambda);
