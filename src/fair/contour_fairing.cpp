@@ -334,17 +334,16 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
       limits.polish_rounds = hand ? handwriting_polish_rounds : 0;
       limits.inflection_handles = limits.node_turns = hand;
       for (const double e : by_segment) limits.allowance_by_cubic.push_back(0.95 * (settings.tolerance_units - e));
-      faired = to_contour(round_to_grid(a.nodes, source.closed, limits), source.closed);
-      d = distance_between(SampledContour(faired), sampled_source);
       // Rounding can stray past its allowance where it slides a line's end (line_rounding) and
       // the handles after it take other whole steps (DejaVu Sans's chi: 4.4 units from the
       // source at a tolerance of 2.56, and the contour was kept unfaired): rounded again on
       // half the allowance, up to three times.
-      for (int k = 0; k < rounding_retries && d > settings.tolerance_units; ++k) {
-        limits.allowance *= 0.5;
-        for (double& e : limits.allowance_by_cubic) e *= 0.5;
+      for (int retry = 0;; ++retry) {
         faired = to_contour(round_to_grid(a.nodes, source.closed, limits), source.closed);
         d = distance_between(SampledContour(faired), sampled_source);
+        if (d <= settings.tolerance_units || retry == rounding_retries) break;
+        limits.allowance *= 0.5;
+        for (double& e : limits.allowance_by_cubic) e *= 0.5;
       }
     }
     if (d <= settings.tolerance_units) {

@@ -30,14 +30,11 @@ double moved_distance(const Cubic& a, const Cubic& b, double within) {
 }
 
 int inner_axis_extrema(const Cubic& c) {
-  // By arc length, not t: a long handle crowds the first hundredth of t into a few units. An
-  // extremum on a node (most cubics start or end at one) is at t = 0 or 1 to rounding.
-  constexpr double on_node = 1e-9;
+  // By arc length, not t: a long handle crowds the first hundredth of t into a few units.
   const Segment whole(c);
-  std::optional<double> length;
+  std::optional<double> length;  // only for a cubic with an extremum inside (0, 1)
   int inner = 0;
   for (const AxisExtremum& e : axis_extrema(c)) {
-    if (e.t <= on_node || e.t >= 1.0 - on_node) continue;
     if (!length) length = arc_length_estimate(whole);
     const double before = arc_length_estimate(whole, 0.0, e.t);
     inner += before > 0.01 * *length && *length - before > 0.01 * *length;

@@ -42,6 +42,20 @@ std::optional<Vec2> primitive_step(Vec2 along) {
 
 double node_curvature(const Cubic& c, SegmentEnd end) { return end_curvature(c, end).curvature.value_or(0.0); }
 
+namespace {
+
+// Nodes i and i + 1 replaced by `merged`; a closed contour's first node stays first.
+void replace_pair(std::vector<OutlineNode>& nodes, std::size_t i, const OutlineNode& merged) {
+  const std::size_t j = (i + 1) % nodes.size();
+  const std::size_t keep = j == 0 ? j : i, drop = j == 0 ? i : j;
+  nodes[keep] = merged;
+  nodes.erase(nodes.begin() + static_cast<std::ptrdiff_t>(drop));
+}
+
+bool on_axis(const OutlineNode& n) { return n.grid_step && (n.grid_step->x == 0.0 || n.grid_step->y == 0.0); }
+
+}  // namespace
+
 void drop_empty_cubics(std::vector<OutlineNode>& nodes, bool closed) {
   for (std::size_t i = 0; nodes.size() > (closed ? 2u : 1u) && i < nodes.size();) {
     const std::size_t j = (i + 1) % nodes.size();
@@ -54,22 +68,14 @@ void drop_empty_cubics(std::vector<OutlineNode>& nodes, bool closed) {
       ++i;
       continue;
     }
-    // Node i arrives as it did and leaves as node j does; a closed contour's first node stays.
-    const std::size_t keep = j == 0 ? j : i, drop = j == 0 ? i : j;
+    // Node i arrives as it did and leaves as node j does.
     OutlineNode merged = nodes[i];
     merged.out_handle = nodes[j].out_handle;
     merged.smooth = nodes[i].smooth && nodes[j].smooth;
     if (!merged.grid_step) merged.grid_step = nodes[j].grid_step;
-    nodes[keep] = merged;
-    nodes.erase(nodes.begin() + static_cast<std::ptrdiff_t>(drop));
+    replace_pair(nodes, i, merged);
   }
 }
-
-namespace {
-
-bool on_axis(const OutlineNode& n) { return n.grid_step && (n.grid_step->x == 0.0 || n.grid_step->y == 0.0); }
-
-}  // namespace
 
 void merge_tiny_cubics(std::vector<OutlineNode>& nodes, bool closed, double shortest) {
   for (std::size_t i = 0; nodes.size() > (closed ? 3u : 2u) && i < nodes.size();) {
@@ -92,10 +98,7 @@ void merge_tiny_cubics(std::vector<OutlineNode>& nodes, bool closed, double shor
     OutlineNode merged = keep_first ? a : b;
     if (keep_first) merged.out_handle = a.point + u * (distance(*b.out_handle, b.point) + chord);
     else merged.in_handle = b.point - u * (distance(*a.in_handle, a.point) + chord);
-    // A closed contour's first node stays first.
-    const std::size_t keep = j == 0 ? j : i, drop = j == 0 ? i : j;
-    nodes[keep] = merged;
-    nodes.erase(nodes.begin() + static_cast<std::ptrdiff_t>(drop));
+    replace_pair(nodes, i, merged);
   }
 }
 

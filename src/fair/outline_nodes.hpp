@@ -34,7 +34,8 @@ Contour to_contour(const std::vector<OutlineNode>& nodes, bool closed);
 /// Removes every cubic of no extent (its node, both handles and the next node at one point),
 /// the node before it leaving as the node after it did: rounding finds no direction for such
 /// a node (dkg Bold's G had four where a log-aesthetic segment's last units drew as its end
-/// point, and one went to the origin).
+/// point, and one went to the origin). A guard since that segment was mended: on twelve fonts'
+/// a–z A–Z and the whole of DejaVu Sans it finds none.
 void drop_empty_cubics(std::vector<OutlineNode>& nodes, bool closed);
 
 /// Merges the two smooth nodes of every cubic whose chord is under `shortest` into one, for
