@@ -605,6 +605,65 @@ std::vector<std::size_t> seat_inflections(std::vector<OutlineNode>& nodes, const
   return seated;
 }
 
+// A curve leaving a line keeps κ = 0 at the join on the grid only where its far handle lies
+// exactly on the line, a whole number of the far node's steps from that node; along a diagonal
+// line the far node's own direction seldom crosses it at one (Comic Neue's K: a 22-unit cap
+// left its line with κ·UPM 18). Where such a join still jumps, its far node, one joining two
+// cubics, is tried at the grid points next to it and, unless it is an extremum, in the primitive
+// directions within `turn` of its tangent, for one whose handle line crosses the line at a whole
+// step beyond the join;
+// that handle goes there, the node's other handle a step or three either way. Returns the
+// nodes it moved (their directions changed in `steps`).
+std::vector<std::size_t> seat_line_joins(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal,
+                                         std::vector<std::optional<Vec2>>& steps, const OutlineJoins& joins,
+                                         std::span<const std::size_t> candidates, CubicJudge& judge, double flat) {
+  const std::size_t n = nodes.size();
+  std::vector<std::size_t> seated;
+  for (const std::size_t i : candidates) {
+    if (!joins.joins_cubics(i) || !steps[i]) continue;
+    const std::size_t h = (i + n - 1) % n, j = (i + 1) % n;
+    // The join on the line: before i (its cubic arrives at i) or after it; sign is i's handle's.
+    const bool before = joins.meets_line(h) && join_jump(joins, h, flat) > target_jump;
+    const bool after = !before && joins.meets_line(j) && join_jump(joins, j, flat) > target_jump;
+    if (!before && !after) continue;
+    const OutlineNode& join = nodes[before ? h : j];
+    const Vec2 into = before ? *join.out_handle - join.point : join.point - *join.in_handle;  // along the line, h to j
+    const double sign = before ? -1.0 : 1.0;
+    const NodeChange change(nodes, joins, judge, flat, i);
+    const OutlineNode kept = nodes[i];
+    const OutlineNode& target = ideal[i];
+    double best_cost = change.cost();
+    std::optional<OutlineNode> best;
+    std::optional<Vec2> best_step;
+    // An extremum's direction stays horizontal or vertical.
+    std::vector<Vec2> directions{*steps[i]};
+    if (steps[i]->x != 0.0 && steps[i]->y != 0.0)
+      for (const Vec2 d : directions_near(*target.out_handle - *target.in_handle, turn, 16))
+        if (d != *steps[i]) directions.push_back(d);
+    for (const Vec2 d : directions)
+      for (const Vec2 p : node_places(kept.point, target.point)) {
+        const std::optional<double> m = steps_to_line(p, d, sign, join.point, into);
+        if (!m || *m < 1.0 || *m != std::round(*m)) continue;
+        const Vec2 on_line = p + d * (sign * *m);
+        if (sign * dot(on_line - join.point, into) >= 0.0) continue;  // the far handle beyond the join, towards i
+        const Vec2 other = before ? *target.out_handle : *target.in_handle;
+        const double m_other = std::max(1.0, whole_steps(target.point, other, d, -sign));
+        nodes[i].point = p;
+        (before ? nodes[i].in_handle : nodes[i].out_handle) = on_line;
+        for (int b = -reach; b <= reach; ++b) {
+          if (m_other + b < 1.0) continue;
+          (before ? nodes[i].out_handle : nodes[i].in_handle) = p - d * (sign * (m_other + b));
+          if (const std::optional<double> c = change.cost_under(best_cost)) best_cost = *c, best = nodes[i], best_step = d;
+        }
+      }
+    nodes[i] = best ? *best : kept;
+    if (!best) continue;
+    steps[i] = best_step;
+    seated.push_back(i);
+  }
+  return seated;
+}
+
 // The whole steps of one run of cubics joined at smooth nodes (the nodes starting them, in
 // order), chosen together (Viterbi; a run that closes on itself with each state of its first
 // cubic in turn): the choices and the cheapest states.
@@ -837,6 +896,8 @@ void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<Outl
     for (const std::size_t i : nudge_jumping_nodes(nodes, ideal, steps, joins, inside, judge, limits.flat_curvature))
       again[run_of[i]] = true;
     for (const std::size_t i : seat_inflections(nodes, ideal, steps, joins, inside, judge, limits.flat_curvature))
+      again[run_of[i]] = true;
+    for (const std::size_t i : seat_line_joins(nodes, ideal, steps, joins, inside, judge, limits.flat_curvature))
       again[run_of[i]] = true;
     for (std::size_t r = 0; r < runs.size(); ++r) again[r] = again[r] && still_jumps(runs[r]);
     if (std::none_of(again.begin(), again.end(), [](bool b) { return b; })) break;

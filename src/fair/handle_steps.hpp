@@ -71,7 +71,8 @@ std::vector<Vec2> handles_for_curvature(Vec2 node, Vec2 step, bool out, Vec2 far
 /// smooth nodes; then moves a node still jumping (or next to one), or one whose cubic bends
 /// more ways than before rounding (an S no choice of whole steps undoes), by a unit with its
 /// handles, or turns it to a nearby primitive direction, where that helps; seats an inflection
-/// node still jumping where κ = 0 holds exactly on both sides; and chooses the steps again around
+/// node still jumping where κ = 0 holds exactly on both sides, and the far node of a curve
+/// whose line join still jumps where its handle lands on the line; and chooses the steps again around
 /// what moved, at most sixteen passes; then, `limits.polish_rounds` times over each run that
 /// still jumps (or, with `limits.node_turns`, turns κ where the unrounded run does not), moves
 /// each node at or beside a jump (or turning so) with the handles around it chosen again.

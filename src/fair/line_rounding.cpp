@@ -16,7 +16,10 @@ constexpr double off_line = 0.75;        // units a slid end may lie off the lin
 constexpr double slide_weight = 0.02;    // a unit of slide costs this much of a unit moved
 constexpr double step_weight = 0.1;      // a unit of primitive step costs this much
 constexpr double tie_weight = 0.01;      // of a unit moved, at the ends of a line no curve meets
-constexpr double far_handle_unit = 1.0;  // the cost of a join the curve cannot leave with κ = 0
+// A join the curve cannot leave with κ = 0 costs as much as moving an end by what the line has
+// left of the tolerance, and at least a unit: a brush font's 10 units of room go to G2 before a
+// shorter step.
+constexpr double far_handle_unit = 1.0;
 constexpr double fold_unit = 4.0;        // the cost of a curve the line's step bends into an extremum
 constexpr int curve_samples = 32;
 constexpr int slid_samples = 12;
@@ -25,6 +28,8 @@ constexpr double max_back_slide = 96.0;  // units back along the line, and at mo
 constexpr double short_step = 3.0;       // units: no slide gives a shorter step than (2, 1)
 constexpr double stray_share = 0.25;     // of its length, a handle on the line may change by
 constexpr double fold_share = 0.75;      // of its curve's chord, a handle on the line may reach
+constexpr int most_room = 3;             // units an end may move beyond its grid neighbours
+constexpr double most_line_turn = 0.1;   // radians, as a node may turn on the grid (handle_steps)
 
 struct EndPlace {
   Vec2 point;
@@ -80,20 +85,27 @@ class Slide {
   std::vector<Vec2> path_;  ///< the line's far end, then the curve
 };
 
-// Where a line's end may go: its nearest grid point and the neighbours; a curve's end also the
-// grid points its slide allows.
-std::vector<EndPlace> end_places(Vec2 exact, const std::optional<Slide>& slide) {
+// Where a line's end may go: its nearest grid point and the neighbours, and the grid points
+// within `room` (units, up to `most_room`) of it: a line a degree off the vertical has a
+// primitive step of 60 units or more, and a few units more of room let it stand upright (Comic
+// Neue's i: its stem's step (1, 63) folded the 52-unit foot into a loop); a curve's end also
+// the grid points its slide allows.
+std::vector<EndPlace> end_places(Vec2 exact, const std::optional<Slide>& slide, double room) {
   std::vector<EndPlace> out;
   const Vec2 base = nearest_grid_point(exact);
-  const int reach = slide ? static_cast<int>(std::ceil(slide->reach() + off_line)) : 1;
+  const int square = std::clamp(static_cast<int>(std::floor(room)), 1, most_room);
+  const int reach = std::max(square, slide ? static_cast<int>(std::ceil(slide->reach() + off_line)) : 1);
   const auto consider = [&](Vec2 p, bool neighbour) {
     const std::optional<double> slid = slide ? slide->moved(exact, p) : std::nullopt;
     if (slid) out.push_back({p, *slid, true});
     else if (neighbour) out.push_back({p, distance(p, exact)});
   };
   for (int dx = -reach; dx <= reach; ++dx)
-    for (int dy = -reach; dy <= reach; ++dy)
-      consider(base + Vec2{double(dx), double(dy)}, std::abs(dx) <= 1 && std::abs(dy) <= 1);
+    for (int dy = -reach; dy <= reach; ++dy) {
+      const Vec2 p = base + Vec2{double(dx), double(dy)};
+      consider(p, (std::abs(dx) <= 1 && std::abs(dy) <= 1) ||
+                      (std::abs(dx) <= square && std::abs(dy) <= square && distance(p, exact) <= room));
+    }
   // Back along the line beyond the square: the grid points beside it, unit by unit.
   if (slide && slide->back_reach() > reach) {
     std::vector<Vec2> seen;
@@ -130,8 +142,8 @@ struct LinePlacement {
 class LinePlacer {
  public:
   LinePlacer(const std::vector<OutlineNode>& exact, const std::vector<OutlineNode>& rounded,
-             const std::vector<std::optional<Vec2>>& steps, double flat_curvature)
-      : exact_(exact), rounded_(rounded), steps_(steps), flat_(flat_curvature), exact_extrema_(exact.size(), 0) {
+             const std::vector<std::optional<Vec2>>& steps, const HandleStepLimits& limits)
+      : exact_(exact), rounded_(rounded), steps_(steps), limits_(limits), exact_extrema_(exact.size(), 0) {
     // Each exact cubic's H/V extrema, once: every placement of its line weighs its far handle.
     for (std::size_t i = 0; i < exact.size(); ++i)
       if (exact[i].out_handle && exact[(i + 1) % exact.size()].in_handle)
@@ -143,7 +155,7 @@ class LinePlacer {
                       double bound = std::numeric_limits<double>::infinity()) const {
     LinePlacement out;
     const std::optional<Vec2> step = primitive_step(b.point - a.point);
-    if (!step) return out;
+    if (!step || turns_too_far(line, b.point - a.point)) return out;
     out.step = *step;
     // A line no curve meets tangentially needs no short step, and its ends' moves only break
     // ties: the lines beside it that a curve does meet decide where they go.
@@ -171,22 +183,34 @@ class LinePlacer {
     }
     out.cost = std::max({out.cost, out.in_moved, out.out_moved});
     if (out.cost >= bound) return out;
-    if (out.in_handle) out.cost += far_handle_cost(previous(line.i), true, a.point, *out.in_handle, out.step);
-    if (out.out_handle) out.cost += far_handle_cost((line.j + 1) % exact_.size(), false, b.point, *out.out_handle, out.step);
+    const double unseated = std::max(far_handle_unit, limits_.allowance_at(line.i));
+    if (out.in_handle) out.cost += far_handle_cost(previous(line.i), true, a.point, *out.in_handle, out.step, unseated);
+    if (out.out_handle)
+      out.cost += far_handle_cost((line.j + 1) % exact_.size(), false, b.point, *out.out_handle, out.step, unseated);
     return out;
   }
 
  private:
   std::size_t previous(std::size_t k) const { return (k + exact_.size() - 1) % exact_.size(); }
 
+  // Whether a line placed along `placed` turns from its exact direction by more than a node may
+  // turn on the grid, or than its nearest grid points turn it (a 4-unit line of dkg Bold's n,
+  // its ends moved two units each, stood across its stroke and the curve after it looped).
+  bool turns_too_far(const LineOnGrid& line, Vec2 placed) const {
+    const Vec2 from = exact_[line.i].point, to = exact_[line.j].point;
+    const double nearest = std::abs(turning_angle(to - from, nearest_grid_point(to) - nearest_grid_point(from)));
+    return std::abs(turning_angle(to - from, placed)) > std::max(most_line_turn, nearest);
+  }
+
   // The curve meeting the line at `end` with its near handle `near` on the line: its far handle
   // (node k's out-handle when the curve arrives, its in-handle when it leaves) at the whole
   // step nearest the line, or where rounding put it. Its cost: how far that handle moves
-  // (three tenths), or a unit when even there the curvature at the join stays visible; and four
-  // more where the curve is shorter than two of the line's steps and every such handle gives it
-  // an H/V extremum its exact self lacks (a short curve bent back on itself by a handle of the
-  // line's long step: Because We Build's M, a 2-unit curve from the bowl's foot to a (14, 1) line).
-  double far_handle_cost(std::size_t k, bool out, Vec2 end, Vec2 near, Vec2 d) const {
+  // (three tenths), or `unseated` when even there the curvature at the join stays visible; and
+  // that and four more where every such handle gives the curve an H/V extremum its exact self
+  // lacks, so that a missing extremum weighs more than a jump (a short curve bent back on itself
+  // by a handle of the line's long step: Because We Build's M, a 2-unit curve from the bowl's
+  // foot to a (14, 1) line; dkg Bold's n, a 9-unit curve between two near-vertical lines).
+  double far_handle_cost(std::size_t k, bool out, Vec2 end, Vec2 near, Vec2 d, double unseated) const {
     const std::optional<Vec2> wanted = out ? exact_[k].out_handle : exact_[k].in_handle;
     const std::optional<Vec2> placed = out ? rounded_[k].out_handle : rounded_[k].in_handle;
     if (!steps_[k] || !wanted || !placed) return 0.0;
@@ -194,15 +218,15 @@ class LinePlacer {
       return out ? Cubic{rounded_[k].point, h, near, end} : Cubic{end, near, h, rounded_[k].point};
     };
     const int extrema = exact_extrema_[out ? k : previous(k)];
-    const bool short_curve = distance(rounded_[k].point, end) < 2.0 * norm(d);
-    double best = far_handle_unit + fold_unit;
+    const double fold = unseated + fold_unit;
+    double best = unseated + fold;
     std::vector<Vec2> candidates = handles_near_line(rounded_[k].point, *steps_[k], out ? 1.0 : -1.0, end, d);
     candidates.push_back(*placed);
     for (const Vec2 h : candidates) {
       const Cubic c = curve(h);
       const double kappa = node_curvature(c, out ? SegmentEnd::end : SegmentEnd::start);
-      const double cost = (std::abs(kappa) <= 0.05 * flat_ ? 0.3 * distance(h, *wanted) : far_handle_unit) +
-                          (short_curve && inner_axis_extrema(c) > extrema ? fold_unit : 0.0);
+      const double cost = (std::abs(kappa) <= 0.05 * limits_.flat_curvature ? 0.3 * distance(h, *wanted) : unseated) +
+                          (inner_axis_extrema(c) > extrema ? fold : 0.0);
       best = std::min(best, cost);
     }
     return best;
@@ -211,7 +235,7 @@ class LinePlacer {
   const std::vector<OutlineNode>& exact_;
   const std::vector<OutlineNode>& rounded_;
   const std::vector<std::optional<Vec2>>& steps_;
-  double flat_;
+  const HandleStepLimits& limits_;
   std::vector<int> exact_extrema_;  ///< of the exact cubic from each node
 };
 
@@ -277,8 +301,10 @@ class RunPlacement {
   /// every choice is degenerate.
   bool choose(bool slides) {
     std::vector<std::vector<EndPlace>> places;
-    places.push_back(end_places(exact_[run_.front().i].point, slides ? slide(run_.front(), true) : std::nullopt));
-    for (const LineOnGrid& l : run_) places.push_back(end_places(exact_[l.j].point, slides ? slide(l, false) : std::nullopt));
+    places.push_back(end_places(exact_[run_.front().i].point, slides ? slide(run_.front(), true) : std::nullopt,
+                                room(run_.front().i)));
+    for (const LineOnGrid& l : run_)
+      places.push_back(end_places(exact_[l.j].point, slides ? slide(l, false) : std::nullopt, room(l.j)));
     std::vector<std::size_t> chosen = cheapest_places(run_, places, placer_);
     if (chosen.empty()) return false;
     places_ = std::move(places), chosen_ = std::move(chosen);
@@ -326,6 +352,12 @@ class RunPlacement {
  private:
   const EndPlace& place(std::size_t t) const { return places_[t][chosen_[t]]; }
 
+  // How far node k may move: what both its segments have left of the tolerance.
+  double room(std::size_t k) const {
+    const std::size_t n = exact_.size();
+    return std::min(limits_.allowance_at(k), limits_.allowance_at((k + n - 1) % n));
+  }
+
   // A curve's end slides along its line, off it by no more than the line has left of the
   // tolerance.
   std::optional<Slide> slide(const LineOnGrid& l, bool arrives) const {
@@ -350,7 +382,7 @@ class RunPlacement {
 
 void place_lines_on_grid(const std::vector<OutlineNode>& exact, std::vector<OutlineNode>& rounded,
                          std::vector<std::optional<Vec2>>& steps, bool closed, const HandleStepLimits& limits) {
-  const LinePlacer placer(exact, rounded, steps, limits.flat_curvature);
+  const LinePlacer placer(exact, rounded, steps, limits);
   for (const std::vector<LineOnGrid>& run : line_runs(exact, closed)) {
     if (std::none_of(run.begin(), run.end(), [](const LineOnGrid& l) { return l.curve_arrives || l.curve_leaves; })) continue;
     RunPlacement placement(exact, run, placer, limits);

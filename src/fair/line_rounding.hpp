@@ -3,7 +3,9 @@
 // the join, for G1 to stay exact; a diagonal line between nearby grid points may have a long
 // primitive step (DejaVu's S spine: (122, −25); Inter's y: (−65, −176)), and the handle would
 // be at least that long. So the ends of each run of lines meeting at corners are chosen
-// together (Viterbi over the run): each end at its nearest grid point or a neighbour; and where
+// together (Viterbi over the run): each end at its nearest grid point or a neighbour, or any
+// grid point within what the tolerance leaves there (up to 3 units: a line a degree off the
+// vertical may stand upright), the line turning no more than a node may; and where
 // a curve's handle would then grow or shrink by more than a quarter, the curve's end may also
 // slide along its line (a curve leaves a G2 line join straight, κ = 0, so starting it a few
 // units earlier or later along the line, its handle's tip kept, barely moves it) to where the
@@ -27,8 +29,9 @@ namespace gf {
 /// and the curves' handles; a slid end by how far its curve then strays from `exact`, plus a
 /// fiftieth of the slide) and a tenth of a unit per unit of step, and more where the curve's
 /// far handle cannot give it κ = 0 at the join (|κ| within a twentieth of
-/// `limits.flat_curvature`) or where a curve shorter than two steps would gain an H/V extremum;
-/// the run's least total wins. A slid end stays within what the line has left of the tolerance
+/// `limits.flat_curvature`: what the line leaves of the tolerance, at least a unit) and more
+/// again where the curve would gain an H/V extremum; no line turns by more than 0.1 rad or
+/// what its nearest grid points turn it; the run's least total wins. A slid end stays within what the line has left of the tolerance
 /// (`limits.allowance_at`) of it, both ways where it slid back past its handle. Ends slide
 /// where a handle on a line of long step strays (moves by more than a quarter of its length
 /// and its curve's allowance) or reaches past three quarters of its curve's chord.

@@ -276,11 +276,13 @@ def main():
               f"missing {missing}  dist {row['distance']:.2f}{'' if row['contours_kept'] else '  CONTOURS CHANGED'}")
 
     def ratio(key, f=statistics.median):
-        return f([r[key][1] / r[key][0] for r in rows if r[key][0] > 0])
+        # NaN (the bar not met) where no glyph's source has any: Humor Sans draws only lines.
+        values = [r[key][1] / r[key][0] for r in rows if r[key][0] > 0]
+        return f(values) if values else math.nan
 
     def total_ratio(key):
-        a = sum(r[key][0] for r in rows)
-        return sum(r[key][1] for r in rows) / a if a else 0.0
+        a, b = sum(r[key][0] for r in rows), sum(r[key][1] for r in rows)
+        return b / a if a else (math.inf if b else 0.0)
 
     jumps = sum(r["g2_jumps"] for r in rows)
     smooth = sum(r["smooth_joins"] for r in rows)
