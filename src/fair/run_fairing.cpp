@@ -229,17 +229,19 @@ LacChain initial_chain(const ChainSpan& span, const RunReference& ref, PieceAlph
 
 // Makes every segment exist before the solve, or says which junctions to add or drop. In
 // turn: a κ = 0 end the source's shape does not allow (its curvature falls towards the end)
-// becomes a free end, G1 there; a corner's noisy tangent is turned; the nearest drawable α;
-// a junction that does not turn with its neighbours is dropped; else the piece is cut.
+// becomes a free end, G1 there, but on a guided run, whose guide meets the line with κ = 0
+// where no chain does (dkg, Because We Learn and Kristi a–z A–Z unrounded: g2-jumps 0.9, 0.1
+// and 1.8 % → 0); a corner's noisy tangent is turned; the nearest drawable α; a junction that
+// does not turn with its neighbours is dropped; else the piece is cut.
 void make_drawable(LacChain& chain, const ChainSpan& span, const RunReference& ref, const SmoothRun& run,
-                   ChainOutcome& out) {
+                   bool guided, ChainOutcome& out) {
   const double L = ref.length();
   const std::size_t points = span.s.size(), segments = chain.segment_count();
   for (std::size_t i = 0; i < segments; ++i) {
     if (build_chain_segment(chain, i).ok()) continue;
     const bool zero_here = !chain.closed && ((i == 0 && chain.zero_curvature_start) ||
                                              (i + 1 == segments && chain.zero_curvature_end));
-    if (zero_here) {
+    if (zero_here && !guided) {
       LacChain released = chain;
       (i == 0 && chain.zero_curvature_start ? released.zero_curvature_start : released.zero_curvature_end) = false;
       if (build_chain_segment(released, i).ok()) {
@@ -325,7 +327,7 @@ ChainOutcome fair_chain(const ChainSpan& span, const RunReference& ref, PieceAlp
   if (out.adjusts()) return out;
   LacChain chain = initial_chain(span, ref, alphas, run, settings.feature_window_units, budget,
                                  settings.tangents_between_chords);
-  make_drawable(chain, span, ref, run, out);
+  make_drawable(chain, span, ref, run, guided, out);
   if (out.adjusts()) return out;
 
   std::vector<LogAestheticSegment> built;
