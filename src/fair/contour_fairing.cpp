@@ -66,15 +66,15 @@ struct Budgets {
 // larger budget stands too.
 class FairedRuns {
  public:
-  /// `on_guide`: a run that failed on its own outline goes on its smoothing guide (text);
-  /// one faired on its own outline stands.
+  /// `basis`: what a run that failed on its own outline is faired on next (text); one faired
+  /// on its own outline stands.
   const FairedRun& get(const SmoothRun& run, const FairSettings& settings, double budget, bool larger_stands,
-                       bool on_guide) {
+                       RunBasis basis) {
     for (const Entry& e : entries_)
       if (e.run == run && (e.budget == budget || (larger_stands && e.faired.ok && e.budget > budget)) &&
-          (e.on_guide == on_guide || (on_guide && e.faired.ok)))
+          (e.basis == basis || (e.basis == RunBasis::own && e.faired.ok)))
         return e.faired;
-    entries_.push_back({run, budget, on_guide, fair_run(run, settings, budget, on_guide)});
+    entries_.push_back({run, budget, basis, fair_run(run, settings, budget, basis)});
     return entries_.back().faired;
   }
 
@@ -82,7 +82,7 @@ class FairedRuns {
   struct Entry {
     SmoothRun run;
     double budget;
-    bool on_guide;
+    RunBasis basis;
     FairedRun faired;
   };
   std::deque<Entry> entries_;  // stable references
@@ -162,14 +162,14 @@ LacPoint faired_start(const FairedRun& run) { return run.chains.front().start_fr
 LacPoint faired_end(const FairedRun& run) { return run.chains.back().end_frame(); }
 
 Attempt fair_with_budgets(const ContourPlan& plan, const FairSettings& settings, Budgets budgets, FairedRuns& cache,
-                          bool after_run_failure, bool on_guide) {
+                          bool after_run_failure, RunBasis basis) {
   Attempt a;
   const std::size_t count = plan.pieces.size();
   std::vector<std::optional<FairedRun>> runs(count);
   for (std::size_t i = 0; i < count; ++i) {
     const SmoothRun* run = std::get_if<SmoothRun>(&plan.pieces[i]);
     if (!run) continue;
-    runs[i] = cache.get(*run, settings, budgets.chain, after_run_failure, on_guide);
+    runs[i] = cache.get(*run, settings, budgets.chain, after_run_failure, basis);
     if (!runs[i]->ok) {
       a.failure = runs[i]->reason;
       return a;
@@ -293,11 +293,10 @@ std::vector<std::size_t> kinked_corners(const Contour& faired, std::span<const C
 }
 
 // The contour faired on one plan: the budgets halved once when the first try strays, the
-// outline rounded when asked; `on_guide`, the runs that fail on their own outlines faired on
-// their smoothing guides. `kinked` gets the corners of the result that turn by less than the
-// kink limit.
+// outline rounded when asked; the runs that fail on their own outlines faired on `basis`.
+// `kinked` gets the corners of the result that turn by less than the kink limit.
 ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& plan, const SampledContour& sampled_source,
-                                   const FairSettings& settings, FairedRuns& cache, bool on_guide,
+                                   const FairSettings& settings, FairedRuns& cache, RunBasis basis,
                                    std::vector<std::size_t>& kinked) {
   ContourFairing out;
   out.contour = source;
@@ -306,10 +305,10 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
   bool run_failed = false;
   // On the guides, one try: a second, with half the budget, took whole DejaVu Sans 8 % more
   // time to fair 18 more contours.
-  const int attempts = on_guide ? 1 : 2;
+  const int attempts = basis == RunBasis::guide ? 1 : 2;
   for (int attempt = 0; attempt < attempts; ++attempt, available *= 0.5) {
     Attempt a = fair_with_budgets(plan, settings, {settings.chain_share * available, (1.0 - settings.chain_share) * available},
-                                  cache, run_failed, on_guide);
+                                  cache, run_failed, basis);
     run_failed = !a.failure.empty();
     if (run_failed) {
       out.reason = a.failure;
@@ -368,14 +367,17 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
 }
 
 // A text contour that cannot be faired on its own outlines is faired again with the runs that
-// failed there on their smoothing guides (fair/run_fairing.hpp); why the first try failed is
-// what is reported when neither fairs.
+// failed there on their smoothing guides, and then on their own outlines with the jumps of
+// stalled chains (RunBasis); why the first try failed is what is reported when none fairs.
 ContourFairing fair_planned(const Contour& source, const ContourPlan& plan, const SampledContour& sampled_source,
                             const FairSettings& settings, FairedRuns& cache, std::vector<std::size_t>& kinked) {
-  ContourFairing own = fair_within_budgets(source, plan, sampled_source, settings, cache, false, kinked);
+  ContourFairing own = fair_within_budgets(source, plan, sampled_source, settings, cache, RunBasis::own, kinked);
   if (own.faired || settings.profile != FairProfile::text) return own;
-  ContourFairing guided = fair_within_budgets(source, plan, sampled_source, settings, cache, true, kinked);
-  return guided.faired ? guided : own;
+  for (const RunBasis next : {RunBasis::guide, RunBasis::own_with_jumps}) {
+    ContourFairing again = fair_within_budgets(source, plan, sampled_source, settings, cache, next, kinked);
+    if (again.faired) return again;
+  }
+  return own;
 }
 
 // How many times corners that came out as kinks are made smooth and the contour faired again.

@@ -318,9 +318,11 @@ void check_fidelity(const std::vector<std::vector<Vec2>>& lac, const ChainSpan& 
 }
 
 // `guided`: ref is the run's smoothing guide, source the run itself (else both are the source).
+// Once `accept_mismatch`, a chain whose G2 solve stalls gives way: to the guide on a guided
+// run, else to the next RunBasis, but where `keep_stalled`.
 ChainOutcome fair_chain(const ChainSpan& span, const RunReference& ref, PieceAlphas& alphas, const RunReference& source,
                         bool guided, const SmoothRun& run, const FairSettings& settings, double budget,
-                        bool accept_mismatch) {
+                        bool accept_mismatch, bool keep_stalled) {
   ChainOutcome out;
   const double L = ref.length();
   out.cuts = missing_junctions(span, L);
@@ -339,7 +341,7 @@ ChainOutcome fair_chain(const ChainSpan& span, const RunReference& ref, PieceAlp
     if (mismatch > max_relative_mismatch) {
       // A guided run has a C2 guide to fall back on, smoother than a chain left with its
       // curvature jumps (the writeback would bend each junction to the mean curvature).
-      if (accept_mismatch && guided) return out;
+      if (accept_mismatch && (guided || !keep_stalled)) return out;
       if (!accept_mismatch) {
         // No G2 within reach of these junctions: more freedom next to the worst junction.
         const auto worst = std::max_element(g2.mismatches.begin(), g2.mismatches.end(),
@@ -523,9 +525,9 @@ LacPoint FairedChain::end_frame() const {
 namespace {
 
 // The run faired on `guide` (its smoothing guide) or, without one, on its source itself, in at
-// most `rounds` rounds.
+// most `rounds` rounds; `keep_stalled` as fair_chain takes it.
 FairedRun fair_run_on(const SmoothRun& run, const RunReference& source, const std::optional<SmoothRun>& guide,
-                      const FairSettings& settings, double budget, int rounds) {
+                      const FairSettings& settings, double budget, int rounds, bool keep_stalled) {
   FairedRun result;
   const SmoothRun& guide_run = guide ? *guide : run;
   const auto guide_ref = guide ? std::make_shared<const RunReference>(*guide) : nullptr;
@@ -554,7 +556,7 @@ FairedRun fair_run_on(const SmoothRun& run, const RunReference& source, const st
       ChainOutcome o = known != settled.end()
                            ? known->second
                            : fair_chain(span, ref, alphas, source, guide.has_value(), guide_run, settings, budget,
-                                        round >= rounds / 2);
+                                        round >= rounds / 2, keep_stalled);
       if (known == settled.end() && !o.adjusts()) settled.emplace_back(span, o);
       result.deviation = std::max(result.deviation, o.deviation);
       too_far = too_far || o.too_far;
@@ -592,15 +594,17 @@ FairedRun fair_run_on(const SmoothRun& run, const RunReference& source, const st
 
 }  // namespace
 
-FairedRun fair_run(const SmoothRun& run, const FairSettings& settings, double budget, bool on_guide) {
+FairedRun fair_run(const SmoothRun& run, const FairSettings& settings, double budget, RunBasis basis) {
   const RunReference source(run);
   const auto guide = [&](SmoothingPenalty penalty) {
     return guide_for(run, source, budget * settings.guide_share, settings.feature_window_units, penalty,
                      settings.guide_lobes);
   };
+  // Handwriting without a guide (none within the budget) keeps its stalled chains.
   if (settings.profile == FairProfile::handwriting)
-    return fair_run_on(run, source, guide(SmoothingPenalty::sparse), settings, budget, max_rounds);
-  if (!on_guide) return fair_run_on(run, source, std::nullopt, settings, budget, max_rounds);
+    return fair_run_on(run, source, guide(SmoothingPenalty::sparse), settings, budget, max_rounds, true);
+  if (basis != RunBasis::guide)
+    return fair_run_on(run, source, std::nullopt, settings, budget, max_rounds, basis == RunBasis::own_with_jumps);
   // A professional outline is its own guide, until no chain on it comes G2 within the budget
   // (Inter's U: κ falls from its shoulders to a flat bottom and rises again, and the solve
   // stalls): then the run is faired on its smoothing guide, as handwriting is, with the squared
@@ -613,7 +617,7 @@ FairedRun fair_run(const SmoothRun& run, const FairSettings& settings, double bu
     none.reason = "no smoothing guide within the budget";
     return none;
   }
-  return fair_run_on(run, source, smoothed, settings, budget, fallback_rounds);
+  return fair_run_on(run, source, smoothed, settings, budget, fallback_rounds, false);
 }
 
 }  // namespace gf
