@@ -388,7 +388,8 @@ constexpr int kink_passes = 2;
 void fillet_kinks(ContourFairing& out, const Contour& source, const FairSettings& settings) {
   const Contour filleted = fillet_line_kinks(out.contour, 0.95 * (settings.tolerance_units - out.deviation),
                                              settings.rounding == Rounding::integers);
-  if (filleted.segments.size() == out.contour.segments.size()) return;
+  // Unchanged: no kink took a fillet (a fillet that takes a whole line leaves as many segments).
+  if (filleted.segments == out.contour.segments) return;
   const double d = contour_distance(filleted, source);
   if (d > settings.tolerance_units) return;
   out.contour = filleted;

@@ -193,6 +193,22 @@ TEST(ContourFairing, RoundingThatStraysIsDoneAgainOnLessAllowance) {
     for_each_point(s, [&](Vec2 p) { EXPECT_TRUE(p.x == std::round(p.x) && p.y == std::round(p.y)); });
 }
 
+TEST(ContourFairing, AKinkWhoseFilletTakesAWholeLineIsFilleted) {
+  // Liberation Sans's V, lines only: its inner sides bend by 2.8° and 2.7° where they meet the
+  // 263-unit strokes to the notch. Each fillet may take that whole stroke, and then the
+  // contour had as many segments as before: taken for unchanged, it kept both kinks.
+  const std::vector<Vec2> corners{{782, 0},    {584, 0},    {9, 1409},    {210, 1409}, {600, 417},
+                                  {684, 168}, {768, 417}, {1156, 1409}, {1357, 1409}};
+  Contour v;
+  for (std::size_t k = 0; k < corners.size(); ++k) v.segments.push_back(Line{{corners[k], corners[(k + 1) % corners.size()]}});
+  v.nodes.assign(v.segments.size(), NodeFlags{});
+  const FairSettings settings = resolve_settings(FairOptions{}, 2048.0);
+  const ContourFairing r = fair_contour(v, settings);
+  ASSERT_TRUE(r.faired) << r.reason;
+  EXPECT_LE(brute_force_hausdorff(v, r.contour), 1.01 * settings.tolerance_units);
+  for (const Join& j : joins_of(r.contour)) EXPECT_NE(j.kind, JoinKind::kink) << "node " << j.node;
+}
+
 TEST(ContourFairing, AHairlineIsFairedWithinHalfItsThickness) {
   // Because We Create's t: a brush stroke 2 to 4 units wide, faired to half its thickness. The
   // smoothing guide at one span per half feature window could not come that close, and the
