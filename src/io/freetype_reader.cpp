@@ -15,6 +15,7 @@
 #include FT_TRUETYPE_IDS_H
 #include FT_TRUETYPE_TABLES_H
 
+#include "io/agl_names.hpp"
 #include "io/harfbuzz_instance.hpp"
 #include "io/input_error.hpp"
 #include "io/sfnt_directory.hpp"
@@ -139,8 +140,12 @@ struct FreetypeFont::Impl {
       char buf[256];
       if (FT_HAS_GLYPH_NAMES(face) && FT_Get_Glyph_Name(face, gid, buf, sizeof buf) == 0) name = buf;
       if (name.empty()) {
+        // No names stored: the Adobe Glyph List's where it has one, as other tools name them.
         char made[32];
+        const std::optional<std::string_view> listed =
+            gid != 0 && !unicodes[gid].empty() ? agl_name(unicodes[gid][0]) : std::nullopt;
         if (gid == 0) std::snprintf(made, sizeof made, ".notdef");
+        else if (listed) std::snprintf(made, sizeof made, "%.*s", static_cast<int>(listed->size()), listed->data());
         else if (!unicodes[gid].empty())
           std::snprintf(made, sizeof made, unicodes[gid][0] > 0xFFFF ? "u%05X" : "uni%04X",
                         static_cast<unsigned>(unicodes[gid][0]));
