@@ -611,9 +611,8 @@ std::vector<std::size_t> seat_inflections(std::vector<OutlineNode>& nodes, const
 // left its line with κ·UPM 18). Where such a join still jumps, its far node, one joining two
 // cubics, is tried at the grid points next to it and, unless it is an extremum, in the primitive
 // directions within `turn` of its tangent, for one whose handle line crosses the line at a whole
-// step beyond the join;
-// that handle goes there, the node's other handle a step or three either way. Returns the
-// nodes it moved (their directions changed in `steps`).
+// step on its side of the join; that handle goes there, the node's other handle a step or three
+// either way. Returns the nodes it moved (their directions changed in `steps`).
 std::vector<std::size_t> seat_line_joins(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal,
                                          std::vector<std::optional<Vec2>>& steps, const OutlineJoins& joins,
                                          std::span<const std::size_t> candidates, CubicJudge& judge, double flat) {
@@ -627,7 +626,8 @@ std::vector<std::size_t> seat_line_joins(std::vector<OutlineNode>& nodes, const 
     const bool after = !before && joins.meets_line(j) && join_jump(joins, j, flat) > target_jump;
     if (!before && !after) continue;
     const OutlineNode& join = nodes[before ? h : j];
-    const Vec2 into = before ? *join.out_handle - join.point : join.point - *join.in_handle;  // along the line, h to j
+    // The join's tangent, in the contour's direction (h → i → j).
+    const Vec2 into = before ? *join.out_handle - join.point : join.point - *join.in_handle;
     const double sign = before ? -1.0 : 1.0;
     const NodeChange change(nodes, joins, judge, flat, i);
     const OutlineNode kept = nodes[i];
@@ -645,7 +645,7 @@ std::vector<std::size_t> seat_line_joins(std::vector<OutlineNode>& nodes, const 
         const std::optional<double> m = steps_to_line(p, d, sign, join.point, into);
         if (!m || *m < 1.0 || *m != std::round(*m)) continue;
         const Vec2 on_line = p + d * (sign * *m);
-        if (sign * dot(on_line - join.point, into) >= 0.0) continue;  // the far handle beyond the join, towards i
+        if (sign * dot(on_line - join.point, into) >= 0.0) continue;  // on i's side of the join
         const Vec2 other = before ? *target.out_handle : *target.in_handle;
         const double m_other = std::max(1.0, whole_steps(target.point, other, d, -sign));
         nodes[i].point = p;
