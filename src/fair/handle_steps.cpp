@@ -486,12 +486,12 @@ std::vector<Vec2> directions_near(Vec2 tangent, double most, int longest) {
 
 // The directions node i may take on the grid: its own step and, where that is not horizontal or
 // vertical (an extremum's must stay so), the primitive directions within `turn` of its
-// unrounded tangent, only of at most 10 units a side: whole steps of a longer one are too coarse
-// to set curvature by (and each direction costs a search).
-std::vector<Vec2> node_directions(Vec2 step, const OutlineNode& target) {
+// unrounded tangent, only of at most `longest` units a side: whole steps of a longer one are too
+// coarse to set curvature by (and each direction costs a search).
+std::vector<Vec2> node_directions(Vec2 step, const OutlineNode& target, int longest = 10) {
   std::vector<Vec2> directions{step};
   if (step.x != 0.0 && step.y != 0.0)
-    for (const Vec2 d : directions_near(*target.out_handle - *target.in_handle, turn, 10))
+    for (const Vec2 d : directions_near(*target.out_handle - *target.in_handle, turn, longest))
       if (d != step && d.x != 0.0 && d.y != 0.0) directions.push_back(d);
   return directions;
 }
@@ -635,12 +635,8 @@ std::vector<std::size_t> seat_line_joins(std::vector<OutlineNode>& nodes, const 
     double best_cost = change.cost();
     std::optional<OutlineNode> best;
     std::optional<Vec2> best_step;
-    // An extremum's direction stays horizontal or vertical.
-    std::vector<Vec2> directions{*steps[i]};
-    if (steps[i]->x != 0.0 && steps[i]->y != 0.0)
-      for (const Vec2 d : directions_near(*target.out_handle - *target.in_handle, turn, 16))
-        if (d != *steps[i]) directions.push_back(d);
-    for (const Vec2 d : directions)
+    // Sides up to 16: only a step that lands on the line is taken, not one set by curvature.
+    for (const Vec2 d : node_directions(*steps[i], target, 16))
       for (const Vec2 p : node_places(kept.point, target.point)) {
         const std::optional<double> m = steps_to_line(p, d, sign, join.point, into);
         if (!m || *m < 1.0 || *m != std::round(*m)) continue;

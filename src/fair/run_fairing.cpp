@@ -318,8 +318,8 @@ void check_fidelity(const std::vector<std::vector<Vec2>>& lac, const ChainSpan& 
 }
 
 // `guided`: ref is the run's smoothing guide, source the run itself (else both are the source).
-// Once `accept_mismatch`, a chain whose G2 solve stalls gives way: to the guide on a guided
-// run, else to the next RunBasis, but where `keep_stalled`.
+// Once `accept_mismatch`, a chain whose G2 solve stalls is kept with its best angles where
+// `keep_stalled`, else gives way (to the guide on a guided run, else to the next RunBasis).
 ChainOutcome fair_chain(const ChainSpan& span, const RunReference& ref, PieceAlphas& alphas, const RunReference& source,
                         bool guided, const SmoothRun& run, const FairSettings& settings, double budget,
                         bool accept_mismatch, bool keep_stalled) {
@@ -339,9 +339,7 @@ ChainOutcome fair_chain(const ChainSpan& span, const RunReference& ref, PieceAlp
     if (g2.segments.empty()) return out;
     mismatch = g2.curvature_scale > 0.0 ? g2.max_mismatch / g2.curvature_scale : 0.0;
     if (mismatch > max_relative_mismatch) {
-      // A guided run has a C2 guide to fall back on, smoother than a chain left with its
-      // curvature jumps (the writeback would bend each junction to the mean curvature).
-      if (accept_mismatch && (guided || !keep_stalled)) return out;
+      if (accept_mismatch && !keep_stalled) return out;
       if (!accept_mismatch) {
         // No G2 within reach of these junctions: more freedom next to the worst junction.
         const auto worst = std::max_element(g2.mismatches.begin(), g2.mismatches.end(),
@@ -549,9 +547,9 @@ FairedRun fair_run_on(const SmoothRun& run, const RunReference& source, const st
     result.guide_stretches = 0;
     result.deviation = 0.0;
     for (const ChainSpan& span : chain_spans(junctions, ref, run)) {
-      // After half the rounds, a chain whose solve stalls is kept with its best angles (the
-      // cubic writeback then meets the mean curvature at its junctions), or, on a guided
-      // run, gives way to the guide.
+      // After half the rounds, a chain whose solve stalls gives way, or is kept with its best
+      // angles where `keep_stalled` (the cubic writeback then meets the mean curvature at its
+      // junctions).
       const auto known = std::find_if(settled.begin(), settled.end(), [&](const auto& e) { return e.first == span; });
       ChainOutcome o = known != settled.end()
                            ? known->second
@@ -600,9 +598,12 @@ FairedRun fair_run(const SmoothRun& run, const FairSettings& settings, double bu
     return guide_for(run, source, budget * settings.guide_share, settings.feature_window_units, penalty,
                      settings.guide_lobes);
   };
-  // Handwriting without a guide (none within the budget) keeps its stalled chains.
-  if (settings.profile == FairProfile::handwriting)
-    return fair_run_on(run, source, guide(SmoothingPenalty::sparse), settings, budget, max_rounds, true);
+  // A guided run has a C2 guide to give way to, smoother than a chain left with its curvature
+  // jumps; handwriting without one (none within the budget) keeps its stalled chains.
+  if (settings.profile == FairProfile::handwriting) {
+    const std::optional<SmoothRun> smoothed = guide(SmoothingPenalty::sparse);
+    return fair_run_on(run, source, smoothed, settings, budget, max_rounds, !smoothed);
+  }
   if (basis != RunBasis::guide)
     return fair_run_on(run, source, std::nullopt, settings, budget, max_rounds, basis == RunBasis::own_with_jumps);
   // A professional outline is its own guide, until no chain on it comes G2 within the budget

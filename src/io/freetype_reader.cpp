@@ -129,6 +129,21 @@ struct FreetypeFont::Impl {
     return file + ": glyph '" + (gid < names.size() ? names[gid] : std::to_string(gid)) + "'";
   }
 
+  // A name for a glyph the font names not: the Adobe Glyph List's where it has one for the
+  // glyph's first code point, as other tools name them; else uniXXXX, or by glyph id.
+  std::string made_name(std::uint32_t gid) const {
+    if (gid == 0) return ".notdef";
+    char made[32];
+    if (unicodes[gid].empty()) {
+      std::snprintf(made, sizeof made, "glyph%05u", gid);
+      return made;
+    }
+    const char32_t c = unicodes[gid][0];
+    if (const std::optional<std::string_view> listed = agl_name(c)) return std::string(*listed);
+    std::snprintf(made, sizeof made, c > 0xFFFF ? "u%05X" : "uni%04X", static_cast<unsigned>(c));
+    return made;
+  }
+
   void read_names() {
     const std::uint32_t n = static_cast<std::uint32_t>(face->num_glyphs);
     names.resize(n);
@@ -139,19 +154,7 @@ struct FreetypeFont::Impl {
       std::string name;
       char buf[256];
       if (FT_HAS_GLYPH_NAMES(face) && FT_Get_Glyph_Name(face, gid, buf, sizeof buf) == 0) name = buf;
-      if (name.empty()) {
-        // No names stored: the Adobe Glyph List's where it has one, as other tools name them.
-        char made[32];
-        const std::optional<std::string_view> listed =
-            gid != 0 && !unicodes[gid].empty() ? agl_name(unicodes[gid][0]) : std::nullopt;
-        if (gid == 0) std::snprintf(made, sizeof made, ".notdef");
-        else if (listed) std::snprintf(made, sizeof made, "%.*s", static_cast<int>(listed->size()), listed->data());
-        else if (!unicodes[gid].empty())
-          std::snprintf(made, sizeof made, unicodes[gid][0] > 0xFFFF ? "u%05X" : "uni%04X",
-                        static_cast<unsigned>(unicodes[gid][0]));
-        else std::snprintf(made, sizeof made, "glyph%05u", gid);
-        name = made;
-      }
+      if (name.empty()) name = made_name(gid);
       // Names must identify glyphs; a font that repeats one gets the later ones suffixed.
       if (by_name.count(name)) name += ".gid" + std::to_string(gid);
       by_name.emplace(name, gid);
