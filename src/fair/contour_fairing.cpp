@@ -156,8 +156,8 @@ void record_chain(const FairedChain& chain, bool smooth_start, FairedPieces& out
   if (out.size() > first) out[first].smooth_start = smooth_start;
 }
 
-// Where a piece starts and ends once faired: a G3 run may have slid its ends along the lines
-// it meets (fair/g3_run.hpp), and the lines follow.
+// Where a piece starts and ends once faired: a run may have slid its ends along the lines it
+// meets (fair/g3_run.hpp; slide_into_line in fair/run_fairing.cpp), and the lines follow.
 LacPoint faired_start(const FairedRun& run) { return run.chains.front().start_frame(); }
 LacPoint faired_end(const FairedRun& run) { return run.chains.back().end_frame(); }
 
@@ -175,7 +175,7 @@ Attempt fair_with_budgets(const ContourPlan& plan, const FairSettings& settings,
       return a;
     }
   }
-  const auto g3_run_at = [&](std::size_t i) { return runs[i] && runs[i]->g3() ? &*runs[i] : nullptr; };
+  const auto moved_run_at = [&](std::size_t i) { return runs[i] && runs[i]->ends_moved() ? &*runs[i] : nullptr; };
   NodeAssembler assembler;
   bool previous_ends_smooth = false;  // how the last piece ended: the join to the next piece
   std::vector<bool> smooth_before(count, false);  // the join in front of each piece
@@ -194,9 +194,9 @@ Attempt fair_with_budgets(const ContourPlan& plan, const FairSettings& settings,
       Vec2 start = line->start(), end = line->end();
       const bool wraps = plan.closed && count > 1;
       if (i > 0 || wraps)
-        if (const FairedRun* before = g3_run_at((i + count - 1) % count)) start = faired_end(*before).point;
+        if (const FairedRun* before = moved_run_at((i + count - 1) % count)) start = faired_end(*before).point;
       if (i + 1 < count || wraps)
-        if (const FairedRun* after = g3_run_at((i + 1) % count)) end = faired_start(*after).point;
+        if (const FairedRun* after = moved_run_at((i + 1) % count)) end = faired_start(*after).point;
       append_line(i, start, end, previous_ends_smooth);
       continue;
     }

@@ -190,8 +190,13 @@ std::optional<G3Problem> g3_problem(const std::vector<FairedChain>& chains, cons
   G3Problem p;
   p.closed = run.closed;
   const auto end_kind = [](RunEndKind k) { return k == RunEndKind::line ? G3NodeKind::line : G3NodeKind::corner; };
-  // The run's share of the line, less 1 % so that the line keeps a length.
-  const auto room = [](const RunEnd& e) { return 0.99 * e.line_share; };
+  // The run's share of the line, less 1 % so that the line keeps a length, less what the G2
+  // chain already slid back into it.
+  const auto room = [&](const RunEnd& e, Vec2 node, bool at_start) {
+    const Vec2 source_end = at_start ? run.cubics.front().p[0] : run.cubics.back().p[3];
+    const double slid_back = dot(at_start ? source_end - node : node - source_end, e.tangent);
+    return std::max(0.99 * e.line_share - std::max(slid_back, 0.0), 0.0);
+  };
   std::vector<const LogAestheticSegment*> segments;
   std::vector<bool> at_inflection;  // the segment starts where its chain meets the one before at κ = 0
   for (const FairedChain& c : chains) {
@@ -215,7 +220,7 @@ std::optional<G3Problem> g3_problem(const std::vector<FairedChain>& chains, cons
         // κ: the mean of the two sides (equal once the G2 solve converged).
         if (i > 0 || run.closed) kappa = 0.5 * (kappa + segments[(i + m - 1) % m]->end().curvature);
       }
-      p.nodes.push_back({last.point, angle, kappa, kind, !run.closed && i == 0 && k == 0 ? room(run.start) : 0.0});
+      p.nodes.push_back({last.point, angle, kappa, kind, !run.closed && i == 0 && k == 0 ? room(run.start, last.point, true) : 0.0});
       const LacPoint next = k + 1 == n ? seg.end() : seg.at(seg.length() * (k + 1) / n);
       p.lengths.push_back(seg.length() / n);
       p.log_aesthetic_segment.push_back(i);
@@ -225,7 +230,7 @@ std::optional<G3Problem> g3_problem(const std::vector<FairedChain>& chains, cons
   }
   if (!run.closed) {
     const LacPoint end = segments.back()->end();
-    p.nodes.push_back({end.point, angle, end.curvature, end_kind(run.end.kind), room(run.end)});
+    p.nodes.push_back({end.point, angle, end.curvature, end_kind(run.end.kind), room(run.end, end.point, false)});
   }
   return p;
 }

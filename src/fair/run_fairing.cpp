@@ -27,6 +27,7 @@ constexpr int fallback_rounds = 4;  // a text run on its guide, after its own ou
 constexpr double max_relative_mismatch = 1e-9;  // |Δκ| / max|κ| the G2 solve must reach
 constexpr int max_g3_rounds = 4;  // of cutting the segments whose G3 spirals stray
 constexpr int max_guide_refinements = 3;  // doublings of a smoothing guide's spans
+constexpr double transition_shift_share = 0.25;  // of the budget, spent where a κ = 0 end leaves its line earlier
 
 // α of each piece of a run's reference from its LCG, estimated once: a round of refinement
 // solves again only the spans whose junctions changed, and most of their pieces are pieces of
@@ -227,20 +228,76 @@ LacChain initial_chain(const ChainSpan& span, const RunReference& ref, PieceAlph
   return chain;
 }
 
+/// How far an open chain's κ = 0 ends may slide back into the lines they meet, in units (0: held).
+struct LineRoom {
+  double start = 0.0, end = 0.0;
+};
+
+// How far the span's κ = 0 ends may slide back into the lines they meet: half the run's share
+// of each line (a line slid down to a sliver came out kinked once rounded: dkg Bold's y and D);
+// none at an inflection, whose point the next chain shares.
+LineRoom line_room(const ChainSpan& span, const RunReference& ref, const SmoothRun& run) {
+  LineRoom room;
+  if (span.closed || ref.closed()) return room;
+  if (span.zero_start && span.s.front() == 0.0 && run.start.kind == RunEndKind::line) room.start = 0.5 * run.start.line_share;
+  if (span.zero_end && span.s.back() == ref.length() && run.end.kind == RunEndKind::line) room.end = 0.5 * run.end.line_share;
+  return room;
+}
+
+// How far a κ = 0 end leaves its line earlier than the source does, where the source meets the
+// line with curvature κ (a corner rounded between two lines, Lato's w; an arc ending on a
+// stem): half the length l of the clothoid that takes the curvature from 0 to κ and shifts the
+// curve off the source's by p, a share of the budget (a railway's transition curve: p = l²κ/24),
+// within the room.
+double transition_slide(double end_curvature, double budget, double room) {
+  const double shift = transition_shift_share * budget;
+  return std::min(0.5 * std::sqrt(24.0 * shift / std::max(std::abs(end_curvature), 1e-12)), room);
+}
+
+// The chain's κ = 0 end (its start, or its end) moved `slide` units back along its line, where
+// segment i, which ends there, is still drawn; else left as it was.
+bool slide_into_line(LacChain& chain, std::size_t i, bool at_start, double slide) {
+  if (!(slide > 0.0)) return false;
+  const std::size_t p = at_start ? 0 : chain.points.size() - 1;
+  const Vec2 held = chain.points[p];
+  chain.points[p] = held + direction_of(chain.tangent_angles[p]) * (at_start ? -slide : slide);
+  if (build_chain_segment(chain, i).ok()) return true;
+  chain.points[p] = held;
+  return false;
+}
+
+// Each κ = 0 end of the chain at a line moved by its transition_slide (when its segment is
+// still drawn); whether any moved.
+bool leave_lines_earlier(LacChain& chain, const RunReference& ref, double budget, LineRoom room) {
+  const std::size_t last = chain.segment_count() - 1;
+  bool moved = false;
+  if (chain.zero_curvature_start && room.start > 0.0)
+    moved = slide_into_line(chain, 0, true, transition_slide(ref.curvature_at(0.0), budget, room.start)) || moved;
+  if (chain.zero_curvature_end && room.end > 0.0)
+    moved = slide_into_line(chain, last, false, transition_slide(ref.curvature_at(ref.length()), budget, room.end)) || moved;
+  return moved;
+}
+
 // Makes every segment exist before the solve, or says which junctions to add or drop. In
-// turn: a κ = 0 end the source's shape does not allow (its curvature falls towards the end)
-// becomes a free end, G1 there, but on a guided run, whose guide meets the line with κ = 0
+// turn: a κ = 0 end at a line leaves the line earlier (transition_slide); a κ = 0 end the
+// source's shape does not allow (its curvature falls towards the end) becomes a free end, G1
+// there, but on a guided run, whose guide meets the line with κ = 0
 // where no chain does (dkg, Because We Learn and Kristi a–z A–Z unrounded: g2-jumps 0.9, 0.1
 // and 1.8 % → 0); a corner's noisy tangent is turned; the nearest drawable α; a junction that
 // does not turn with its neighbours is dropped; else the piece is cut.
 void make_drawable(LacChain& chain, const ChainSpan& span, const RunReference& ref, const SmoothRun& run,
-                   bool guided, ChainOutcome& out) {
+                   bool guided, double budget, LineRoom room, ChainOutcome& out) {
   const double L = ref.length();
   const std::size_t points = span.s.size(), segments = chain.segment_count();
   for (std::size_t i = 0; i < segments; ++i) {
     if (build_chain_segment(chain, i).ok()) continue;
     const bool zero_here = !chain.closed && ((i == 0 && chain.zero_curvature_start) ||
                                              (i + 1 == segments && chain.zero_curvature_end));
+    if (zero_here) {
+      const bool at_start = i == 0 && chain.zero_curvature_start;
+      const double r = at_start ? room.start : room.end;
+      if (slide_into_line(chain, i, at_start, transition_slide(ref.curvature_at(at_start ? 0.0 : L), budget, r))) continue;
+    }
     if (zero_here && !guided) {
       LacChain released = chain;
       (i == 0 && chain.zero_curvature_start ? released.zero_curvature_start : released.zero_curvature_end) = false;
@@ -292,26 +349,60 @@ void make_drawable(LacChain& chain, const ChainSpan& span, const RunReference& r
   }
 }
 
+// Where an open chain's κ = 0 end lies once it slid along its line (slide_into_line), against
+// the source's end there; `back` > 0 into the line.
+struct SlidEnd {
+  Vec2 point, source_point;
+  double back;
+};
+struct SlidEnds {
+  std::optional<SlidEnd> start, end;
+};
+// The chain's ends that slid: those off the reference's own ends (where initial_chain put them).
+SlidEnds slid_ends(const LacChain& chain, const RunReference& ref, const RunReference& source, LineRoom room) {
+  SlidEnds out;
+  for (const bool at_start : {true, false}) {
+    if (!((at_start ? room.start : room.end) > 0.0)) continue;
+    const std::size_t p = at_start ? 0 : chain.points.size() - 1;
+    if (chain.points[p] == ref.point_at(at_start ? 0.0 : ref.length())) continue;
+    const Vec2 held = source.point_at(at_start ? 0.0 : source.length());
+    const Vec2 back = direction_of(chain.tangent_angles[p]) * (at_start ? -1.0 : 1.0);
+    (at_start ? out.start : out.end) = SlidEnd{chain.points[p], held, dot(chain.points[p] - held, back)};
+  }
+  return out;
+}
+
 // Fidelity, piece by piece against the source between the same junctions (the guide's arc
 // length mapped onto the source's in proportion; with a guide (`guided`: ref is the guide,
 // not the source), the source side gets a margin for the difference and the source is
 // compared with the piece and its neighbours). Pieces over the budget are cut in the middle.
 void check_fidelity(const std::vector<std::vector<Vec2>>& lac, const ChainSpan& span, const RunReference& ref,
-                    const RunReference& source, bool guided, double budget, ChainOutcome& out) {
+                    const RunReference& source, bool guided, const SlidEnds& slid, double budget, ChainOutcome& out) {
   const std::size_t segments = lac.size();
   const double L = ref.length();
   const double scale = source.length() / L, margin = guided ? 0.02 * source.length() : 0.0;
   for (std::size_t i = 0; i < segments; ++i) {
     const double s0 = span.s[i], s1 = segment_end_s(span, i, L);
-    const std::vector<Vec2> near = source.polyline(s0 * scale - margin, s1 * scale + margin);
-    const std::vector<Vec2> own = guided ? source.polyline(s0 * scale, s1 * scale) : near;
-    std::vector<Vec2> around = lac[i];
+    std::vector<Vec2> near = source.polyline(s0 * scale - margin, s1 * scale + margin);
+    std::vector<Vec2> own = guided ? source.polyline(s0 * scale, s1 * scale) : near;
+    std::vector<Vec2> piece = lac[i];
+    // An end slid along its line: the line is the source's as far as the end went back into
+    // it, and the faired outline's as far as it went forwards.
+    for (const bool at_start : {true, false}) {
+      if (at_start ? i > 0 : i + 1 < segments) continue;
+      const std::optional<SlidEnd>& e = at_start ? slid.start : slid.end;
+      if (!e) continue;
+      const auto put = [at_start](std::vector<Vec2>& v, Vec2 p) { v.insert(at_start ? v.begin() : v.end(), p); };
+      if (e->back > 0.0) put(near, e->point), put(own, e->point);
+      else put(piece, e->source_point);
+    }
+    std::vector<Vec2> around = piece;
     if (guided)
       for (const std::size_t k : {i + segments - 1, i + 1}) {  // the neighbours, wrapping on a closed chain
         if (!span.closed && (k == i + segments - 1 ? i == 0 : i + 1 == segments)) continue;
         around.insert(around.end(), lac[k % segments].begin(), lac[k % segments].end());
       }
-    const double d = std::max(directed_hausdorff(lac[i], near), directed_hausdorff(own, around));
+    const double d = std::max(directed_hausdorff(piece, near), directed_hausdorff(own, around));
     out.deviation = std::max(out.deviation, d);
     if (d > budget) out.cuts.push_back(0.5 * (s0 + s1)), out.too_far = true;
   }
@@ -320,24 +411,34 @@ void check_fidelity(const std::vector<std::vector<Vec2>>& lac, const ChainSpan& 
 // `guided`: ref is the run's smoothing guide, source the run itself (else both are the source).
 // Once `accept_mismatch`, a chain whose G2 solve stalls is kept with its best angles where
 // `keep_stalled`, else gives way (to the guide on a guided run, else to the next RunBasis).
+// κ = 0 ends may leave their lines earlier where `leave_lines`.
 ChainOutcome fair_chain(const ChainSpan& span, const RunReference& ref, PieceAlphas& alphas, const RunReference& source,
                         bool guided, const SmoothRun& run, const FairSettings& settings, double budget,
-                        bool accept_mismatch, bool keep_stalled) {
+                        bool accept_mismatch, bool keep_stalled, bool leave_lines) {
   ChainOutcome out;
   const double L = ref.length();
   out.cuts = missing_junctions(span, L);
   if (out.adjusts()) return out;
   LacChain chain = initial_chain(span, ref, alphas, run, settings.feature_window_units, budget,
                                  settings.tangents_between_chords);
-  make_drawable(chain, span, ref, run, guided, out);
+  const LineRoom room = leave_lines ? line_room(span, ref, run) : LineRoom{};
+  make_drawable(chain, span, ref, run, guided, budget, room, out);
   if (out.adjusts()) return out;
 
   std::vector<LogAestheticSegment> built;
   double mismatch = 0.0;
   if (settings.continuity != Continuity::g1 && chain.free_junction_count() > 0) {
-    G2Result g2 = make_g2(chain, G2Tolerance{0.0, 0.1 * max_relative_mismatch});
+    const G2Tolerance g2_tolerance{0.0, 0.1 * max_relative_mismatch};
+    G2Result g2 = make_g2(chain, g2_tolerance);
     if (g2.segments.empty()) return out;
-    mismatch = g2.curvature_scale > 0.0 ? g2.max_mismatch / g2.curvature_scale : 0.0;
+    const auto relative = [](const G2Result& r) { return r.curvature_scale > 0.0 ? r.max_mismatch / r.curvature_scale : 0.0; };
+    // Held where the source meets its lines, κ = 0 ends may leave no G2 within the feasible
+    // angles; leaving the lines earlier, they may.
+    if (relative(g2) > max_relative_mismatch)
+      if (LacChain placed = chain; leave_lines_earlier(placed, ref, budget, room))
+        if (G2Result again = make_g2(placed, g2_tolerance); !again.segments.empty() && relative(again) < relative(g2))
+          g2 = std::move(again);
+    mismatch = relative(g2);
     if (mismatch > max_relative_mismatch) {
       if (accept_mismatch && !keep_stalled) return out;
       if (!accept_mismatch) {
@@ -356,9 +457,11 @@ ChainOutcome fair_chain(const ChainSpan& span, const RunReference& ref, PieceAlp
   } else {
     built = build_chain(chain).segments;
   }
-  check_fidelity(sampled<LogAestheticSegment>(built, budget), span, ref, source, guided, budget, out);
+  const SlidEnds slid = slid_ends(chain, ref, source, room);
+  check_fidelity(sampled<LogAestheticSegment>(built, budget), span, ref, source, guided, slid, budget, out);
   if (out.adjusts()) return out;
   FairedChain faired;
+  faired.slid_line_ends = slid.start || slid.end;
   faired.segments = std::move(built);
   faired.closed = chain.closed;
   faired.zero_curvature_start = chain.zero_curvature_start;
@@ -449,10 +552,11 @@ std::vector<double> distance_by_spiral(const G3Result& g3, const G3Problem& prob
       if (held.kind != G3NodeKind::line && held.kind != G3NodeKind::line_g2) continue;
       const Vec2 slid = g3.ends[j].point;
       const Vec2 outwards = direction_of(held.tangent_angle) * (at_start ? -1.0 : 1.0);
-      if (dot(slid - held.point, outwards) > 0.0) {
+      const Vec2 source_end = source.point_at(at_start ? 0.0 : source.length());
+      if (dot(slid - source_end, outwards) > 0.0) {
         original.insert(at_start ? original.begin() : original.end(), slid);
       } else {
-        faired.insert(at_start ? faired.begin() : faired.end(), held.point);
+        faired.insert(at_start ? faired.begin() : faired.end(), source_end);
         spiral_of.insert(at_start ? spiral_of.begin() : spiral_of.end(), at_start ? 0 : pieces.size() - 1);
       }
     }
@@ -523,9 +627,9 @@ LacPoint FairedChain::end_frame() const {
 namespace {
 
 // The run faired on `guide` (its smoothing guide) or, without one, on its source itself, in at
-// most `rounds` rounds; `keep_stalled` as fair_chain takes it.
+// most `rounds` rounds; `keep_stalled` and `leave_lines` as fair_chain takes them.
 FairedRun fair_run_on(const SmoothRun& run, const RunReference& source, const std::optional<SmoothRun>& guide,
-                      const FairSettings& settings, double budget, int rounds, bool keep_stalled) {
+                      const FairSettings& settings, double budget, int rounds, bool keep_stalled, bool leave_lines) {
   FairedRun result;
   const SmoothRun& guide_run = guide ? *guide : run;
   const auto guide_ref = guide ? std::make_shared<const RunReference>(*guide) : nullptr;
@@ -554,7 +658,7 @@ FairedRun fair_run_on(const SmoothRun& run, const RunReference& source, const st
       ChainOutcome o = known != settled.end()
                            ? known->second
                            : fair_chain(span, ref, alphas, source, guide.has_value(), guide_run, settings, budget,
-                                        round >= rounds / 2, keep_stalled);
+                                        round >= rounds / 2, keep_stalled, leave_lines);
       if (known == settled.end() && !o.adjusts()) settled.emplace_back(span, o);
       result.deviation = std::max(result.deviation, o.deviation);
       too_far = too_far || o.too_far;
@@ -594,6 +698,15 @@ FairedRun fair_run_on(const SmoothRun& run, const RunReference& source, const st
 
 FairedRun fair_run(const SmoothRun& run, const FairSettings& settings, double budget, RunBasis basis) {
   const RunReference source(run);
+  // Leaving the lines earlier can keep a run from any chain that holding them found (DejaVu
+  // Sans's ☚ was kept unfaired): on the last try a run gets (a text run's own outline with its
+  // jumps, or handwriting's guide), such a run is faired again with its ends held. Earlier
+  // tries give way to the next as they did.
+  const bool last_try = settings.profile == FairProfile::handwriting || basis == RunBasis::own_with_jumps;
+  const auto fair_on = [&](const std::optional<SmoothRun>& guide, int rounds, bool keep_stalled) {
+    FairedRun r = fair_run_on(run, source, guide, settings, budget, rounds, keep_stalled, true);
+    return r.ok || !last_try ? r : fair_run_on(run, source, guide, settings, budget, rounds, keep_stalled, false);
+  };
   const auto guide = [&](SmoothingPenalty penalty) {
     return guide_for(run, source, budget * settings.guide_share, settings.feature_window_units, penalty,
                      settings.guide_lobes);
@@ -602,10 +715,10 @@ FairedRun fair_run(const SmoothRun& run, const FairSettings& settings, double bu
   // jumps; handwriting without one (none within the budget) keeps its stalled chains.
   if (settings.profile == FairProfile::handwriting) {
     const std::optional<SmoothRun> smoothed = guide(SmoothingPenalty::sparse);
-    return fair_run_on(run, source, smoothed, settings, budget, max_rounds, !smoothed);
+    return fair_on(smoothed, max_rounds, !smoothed);
   }
   if (basis != RunBasis::guide)
-    return fair_run_on(run, source, std::nullopt, settings, budget, max_rounds, basis == RunBasis::own_with_jumps);
+    return fair_on(std::nullopt, max_rounds, basis == RunBasis::own_with_jumps);
   // A professional outline is its own guide, until no chain on it comes G2 within the budget
   // (Inter's U: κ falls from its shoulders to a flat bottom and rises again, and the solve
   // stalls): then the run is faired on its smoothing guide, as handwriting is, with the squared
@@ -618,7 +731,7 @@ FairedRun fair_run(const SmoothRun& run, const FairSettings& settings, double bu
     none.reason = "no smoothing guide within the budget";
     return none;
   }
-  return fair_run_on(run, source, smoothed, settings, budget, fallback_rounds, false);
+  return fair_on(smoothed, fallback_rounds, false);
 }
 
 }  // namespace gf

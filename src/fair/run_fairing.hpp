@@ -36,6 +36,7 @@ struct FairedChain {
   bool closed = false;
   bool zero_curvature_start = false, zero_curvature_end = false;
   double max_mismatch_relative = 0.0;  ///< max |Δκ| / max |κ| over its junctions
+  bool slid_line_ends = false;  ///< a κ = 0 end left where the run met its line, along the line (which follows)
 
   /// Where it starts and ends, whichever curves carry it (spirals, segments or the guide).
   LacPoint start_frame() const;
@@ -53,6 +54,11 @@ struct FairedRun {
 
   /// Its chains are G3 spirals (--continuity g3): the G3 solve hands spirals to every chain or none.
   bool g3() const { return !chains.empty() && !chains.front().spirals.empty(); }
+  /// Its ends may lie elsewhere along the lines it meets than the source's: G3 slid them, or a
+  /// chain did.
+  bool ends_moved() const {
+    return g3() || (!chains.empty() && (chains.front().slid_line_ends || chains.back().slid_line_ends));
+  }
 };
 
 /// What a text run is faired on. First its own outline, where a chain whose G2 solve stalls
