@@ -56,7 +56,8 @@ struct NodeSides {
 };
 
 // The exact collinear choice nearest to (point, in, out): directions d = (dx, dy) primitive,
-// near the handles' direction, no longer than the shorter handle; the node itself may move by
+// near the handles' direction, no longer than the shorter handle (or the longer, where none so
+// short keeps the cubics bent within the kink limit); the node itself may move by
 // one unit from its nearest grid point. A choice that keeps both cubics bent as they were,
 // turning the tangent by less than the kink limit, beats any that does not (a wider turn is a
 // visible change of its own: a brush font's half-unit handles would swing by 30–45°). The
@@ -69,13 +70,20 @@ std::optional<Choice> collinear_choice(Vec2 point, std::optional<Vec2> in, std::
   if (norm(dir) == 0.0 && in) dir = point - *in;
   if (norm(dir) == 0.0) return std::nullopt;
   const double shortest = std::min(in ? norm(point - *in) : 1e300, out ? norm(*out - point) : 1e300);
-  const int reach = std::clamp(static_cast<int>(shortest), 1, 64);
+  const double longest = std::max(in ? norm(point - *in) : 0.0, out ? norm(*out - point) : 0.0);
   const bool steep = std::abs(dir.y) > std::abs(dir.x);
   const Vec2 base = nearest_grid_point(point);
   const double most_turn = radians(kink_limit_deg);
   std::optional<Choice> best;
   bool best_keeps = false;
-  for (int major = 1; major <= reach; ++major) {
+  // Directions no longer than the shorter handle first; where none of them keeps the cubics
+  // bent within the kink limit, longer ones up to the longer handle (Open Sans's g: a node
+  // 5.9° off the horizontal with a 4.6-unit handle took (1, 0), and its cubic became an S with
+  // κ·UPM 382 at the node; (10, 1) lengthens that handle to 10 units instead).
+  const int short_reach = std::clamp(static_cast<int>(shortest), 1, 64);
+  const int long_reach = std::clamp(static_cast<int>(longest), short_reach, 64);
+  for (int major = 1; major <= long_reach; ++major) {
+    if (major > short_reach && best_keeps) break;
     const double minor_exact = major * (steep ? dir.x / std::abs(dir.y) : dir.y / std::abs(dir.x));
     for (int delta = -1; delta <= 1; ++delta) {
       const double minor = std::round(minor_exact) + delta;

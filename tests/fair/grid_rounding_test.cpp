@@ -8,7 +8,9 @@
 #include <cmath>
 #include <random>
 
+#include "fair/contour_plan.hpp"
 #include "fair/cubic_change.hpp"
+#include "geom/curvature.hpp"
 
 namespace gf {
 namespace {
@@ -207,6 +209,36 @@ TEST(GridRounding, AHandleOnALineDoesNotGrowIntoASpike) {
     const Cubic c = outline_cubic(r, i);
     EXPECT_LE(overreach_length(c), 0.0) << "cubic " << i;
     for (const Vec2 p : c.p) EXPECT_LE(distance(p, nodes[i].point), 6.0) << "cubic " << i;
+  }
+}
+
+// Open Sans's g, unrounded: past the bottom of its lower bowl a node turns 5.9° off the
+// horizontal, its in-handle 4.6 units long, the cubic before it 110 units. Directions were
+// sought no longer than the shorter handle, and none within 4 units lies within the kink limit
+// of 5.9°, so the node took (1, 0): the cubic, rising 5 units to end level, became an S with
+// κ·UPM of 382 at the node (an inflection and a g2-jump). A longer direction, up to the longer
+// handle, now keeps the node's tangent within the kink limit and both cubics bent one way.
+TEST(GridRounding, AShortHandleTakesALongerDirectionThanTurnPastTheKinkLimit) {
+  const std::vector<OutlineNode> nodes{
+      node(Vec2{491.775, -365.021}, Vec2{364.673, -365.021}, Vec2{549.476, -365.021}, true, Vec2{1.0, 0.0}),
+      node(Vec2{602.413, -359.605}, Vec2{597.848, -360.075}, Vec2{644.577, -355.262}),
+      node(Vec2{730.025, -333.838}, Vec2{688.990, -347.516}, Vec2{746.116, -328.474}),
+      node(Vec2{776.938, -314.598}, Vec2{761.837, -322.148}, std::nullopt, false),
+  };
+  HandleStepLimits limits;
+  limits.allowance = 1.0;  // a text tolerance, most of it left
+  const std::vector<OutlineNode> r = round_to_grid(nodes, false, limits);
+
+  ASSERT_EQ(r.size(), nodes.size());
+  const OutlineNode& n = r[1];
+  const Vec2 faired = *nodes[1].out_handle - nodes[1].point;
+  EXPECT_EQ(cross(n.point - *n.in_handle, *n.out_handle - n.point), 0.0);
+  EXPECT_LT(std::abs(turning_angle(faired, *n.out_handle - n.point)), radians(kink_limit_deg));
+  // Both cubics at the node bend left all along, as before rounding.
+  for (const std::size_t i : {0u, 1u}) {
+    const Cubic c = outline_cubic(r, i);
+    for (int k = 0; k <= 16; ++k)
+      EXPECT_GT(curvature(derivatives_at(c, k / 16.0)).value_or(0.0), 0.0) << "cubic " << i << " at " << k / 16.0;
   }
 }
 
