@@ -65,7 +65,7 @@ struct NodeSides {
 // both do (the cubics of no extent a segment's overrun of its arc length leaves at a chain's
 // end: dkg Bold's G had four, and such a node went to the origin).
 std::optional<Choice> collinear_choice(Vec2 point, std::optional<Vec2> in, std::optional<Vec2> out,
-                                       const NodeSides& sides) {
+                                       const NodeSides& sides, double chord_in, double chord_out) {
   Vec2 dir = out ? *out - point : Vec2{};
   if (norm(dir) == 0.0 && in) dir = point - *in;
   if (norm(dir) == 0.0) return std::nullopt;
@@ -77,11 +77,15 @@ std::optional<Choice> collinear_choice(Vec2 point, std::optional<Vec2> in, std::
   std::optional<Choice> best;
   bool best_keeps = false;
   // Directions no longer than the shorter handle first; where none of them keeps the cubics
-  // bent within the kink limit, longer ones up to the longer handle (Open Sans's g: a node
-  // 5.9° off the horizontal with a 4.6-unit handle took (1, 0), and its cubic became an S with
-  // κ·UPM 382 at the node; (10, 1) lengthens that handle to 10 units instead).
+  // bent within the kink limit, longer ones up to the longer handle and a quarter of the
+  // shorter handle's cubic (Open Sans's g: a node 5.9° off the horizontal with a 4.6-unit
+  // handle on a 110-unit cubic took (1, 0), and the cubic became an S with κ·UPM 382 at the
+  // node; (10, 1) lengthens that handle to 10 units instead; DejaVu Sans's ʑ: a handle
+  // lengthened to 6 units on an 11-unit cubic turned it past the vertical).
+  const bool in_shorter = in && (!out || norm(point - *in) <= norm(*out - point));
+  const double room = 0.25 * (in_shorter ? chord_in : chord_out);
   const int short_reach = std::clamp(static_cast<int>(shortest), 1, 64);
-  const int long_reach = std::clamp(static_cast<int>(longest), short_reach, 64);
+  const int long_reach = std::clamp(static_cast<int>(std::min(longest, room)), short_reach, 64);
   for (int major = 1; major <= long_reach; ++major) {
     if (major > short_reach && best_keeps) break;
     const double minor_exact = major * (steep ? dir.x / std::abs(dir.y) : dir.y / std::abs(dir.x));
@@ -230,7 +234,9 @@ std::vector<OutlineNode> round_to_grid(const std::vector<OutlineNode>& nodes, bo
       sides.before = node_side(outline_cubic(nodes, before), SegmentEnd::end, r[before].point, *r[before].out_handle, flat);
     if (nodes[after].in_handle)
       sides.after = node_side(outline_cubic(nodes, i), SegmentEnd::start, r[after].point, *r[after].in_handle, flat);
-    const std::optional<Choice> c = collinear_choice(src.point, src.in_handle, src.out_handle, sides);
+    const std::optional<Choice> c = collinear_choice(src.point, src.in_handle, src.out_handle, sides,
+                                                     distance(nodes[before].point, src.point),
+                                                     distance(src.point, nodes[after].point));
     if (!c) continue;  // as plainly rounded
     dst.point = c->point, dst.in_handle = c->in, dst.out_handle = c->out;
     steps[i] = c->step;

@@ -11,6 +11,7 @@
 #include <cmath>
 
 #include "fair/contour_plan.hpp"
+#include "fair/cubic_change.hpp"
 #include "geom/curvature.hpp"
 #include "geom/join.hpp"
 #include "io/source.hpp"
@@ -452,6 +453,27 @@ TEST(ContourFairing, ACornerRoundedBetweenTwoLinesLeavesTheLinesEarlier) {
     }
     EXPECT_EQ(line_joins, 2) << at;
   }
+}
+
+// DejaVu Sans's ʑ, its curl: a line along y = 147, then three quadratics round to the top and
+// back. Rounded, the curl's nodes off the vertical have handles of 1 to 4 units on cubics of
+// 11; a node given a grid direction longer than its shorter handle, (−1, 6), took a 6-unit
+// handle there, and the cubic bulged past the vertical: an x-extremum inside it, off any node
+// (whole DejaVu Sans: missing extrema 19 → 44). A longer direction may take no more than a
+// quarter of the shorter handle's cubic (fair/grid_rounding.cpp, collinear_choice).
+TEST(ContourFairing, RoundingPutsNoExtremumInsideACubicOfACurl) {
+  Contour c;
+  c.segments = {Line{{Vec2{624, 147}, Vec2{680, 147}}}, Quad{{Vec2{680, 147}, Vec2{818, 147}, Vec2{818, 201}}},
+                Quad{{Vec2{818, 201}, Vec2{818, 294}, Vec2{748, 292}}},
+                Quad{{Vec2{748, 292}, Vec2{660, 290}, Vec2{624, 147}}}};
+  c.nodes.assign(c.segments.size(), NodeFlags{});
+  const FairSettings settings = resolve_settings(FairOptions{}, 2048.0);
+  const ContourFairing r = fair_contour(c, settings);
+  ASSERT_TRUE(r.faired) << r.reason;
+  EXPECT_LE(brute_force_hausdorff(c, r.contour), 1.01 * settings.tolerance_units);
+  for (std::size_t k = 0; k < r.contour.segments.size(); ++k)
+    if (const Cubic* cubic = std::get_if<Cubic>(&r.contour.segments[k]))
+      EXPECT_EQ(inner_axis_extrema(*cubic), 0) << "segment " << k;
 }
 
 // A text run whose G2 solve stalls is tried on its smoothing guide before its chain is kept
