@@ -266,16 +266,20 @@ bool slide_into_line(LacChain& chain, std::size_t i, bool at_start, double slide
   return false;
 }
 
-// Each κ = 0 end of the chain at a line moved by its transition_slide (when its segment is
-// still drawn); whether any moved.
+// The chain's κ = 0 end at a line (its start, or its end, which segment i ends at) moved back
+// by its transition_slide, where that segment is still drawn; whether it moved.
+bool leave_line_earlier(LacChain& chain, std::size_t i, bool at_start, const RunReference& ref, double budget,
+                        LineRoom room) {
+  const double r = at_start ? room.start : room.end;
+  if (!(r > 0.0)) return false;
+  return slide_into_line(chain, i, at_start, transition_slide(ref.curvature_at(at_start ? 0.0 : ref.length()), budget, r));
+}
+
+// Both κ = 0 ends of the chain at lines moved so; whether any moved.
 bool leave_lines_earlier(LacChain& chain, const RunReference& ref, double budget, LineRoom room) {
-  const std::size_t last = chain.segment_count() - 1;
-  bool moved = false;
-  if (chain.zero_curvature_start && room.start > 0.0)
-    moved = slide_into_line(chain, 0, true, transition_slide(ref.curvature_at(0.0), budget, room.start)) || moved;
-  if (chain.zero_curvature_end && room.end > 0.0)
-    moved = slide_into_line(chain, last, false, transition_slide(ref.curvature_at(ref.length()), budget, room.end)) || moved;
-  return moved;
+  const bool start = chain.zero_curvature_start && leave_line_earlier(chain, 0, true, ref, budget, room);
+  const bool end = chain.zero_curvature_end && leave_line_earlier(chain, chain.segment_count() - 1, false, ref, budget, room);
+  return start || end;
 }
 
 // Makes every segment exist before the solve, or says which junctions to add or drop. In
@@ -293,11 +297,7 @@ void make_drawable(LacChain& chain, const ChainSpan& span, const RunReference& r
     if (build_chain_segment(chain, i).ok()) continue;
     const bool zero_here = !chain.closed && ((i == 0 && chain.zero_curvature_start) ||
                                              (i + 1 == segments && chain.zero_curvature_end));
-    if (zero_here) {
-      const bool at_start = i == 0 && chain.zero_curvature_start;
-      const double r = at_start ? room.start : room.end;
-      if (slide_into_line(chain, i, at_start, transition_slide(ref.curvature_at(at_start ? 0.0 : L), budget, r))) continue;
-    }
+    if (zero_here && leave_line_earlier(chain, i, i == 0 && chain.zero_curvature_start, ref, budget, room)) continue;
     if (zero_here && !guided) {
       LacChain released = chain;
       (i == 0 && chain.zero_curvature_start ? released.zero_curvature_start : released.zero_curvature_end) = false;
