@@ -254,25 +254,24 @@ double transition_slide(double end_curvature, double budget, double room) {
   return std::min(0.5 * std::sqrt(24.0 * shift / std::max(std::abs(end_curvature), 1e-12)), room);
 }
 
-// The chain's κ = 0 end (its start, or its end) moved `slide` units back along its line, where
-// segment i, which ends there, is still drawn; else left as it was.
-bool slide_into_line(LacChain& chain, std::size_t i, bool at_start, double slide) {
-  if (!(slide > 0.0)) return false;
-  const std::size_t p = at_start ? 0 : chain.points.size() - 1;
-  const Vec2 held = chain.points[p];
-  chain.points[p] = held + direction_of(chain.tangent_angles[p]) * (at_start ? -slide : slide);
-  if (build_chain_segment(chain, i).ok()) return true;
-  chain.points[p] = held;
-  return false;
-}
-
-// The chain's κ = 0 end at a line (its start, or its end, which segment i ends at) moved back
-// by its transition_slide, where that segment is still drawn; whether it moved.
+// The chain's κ = 0 end at a line (its start, or its end, which segment i ends at) put its
+// transition_slide back along the line from where the reference meets the line, where that
+// segment is still drawn; whether it moved (not when it was there already: make_drawable may
+// have put it there before the solve stalled).
 bool leave_line_earlier(LacChain& chain, std::size_t i, bool at_start, const RunReference& ref, double budget,
                         LineRoom room) {
   const double r = at_start ? room.start : room.end;
   if (!(r > 0.0)) return false;
-  return slide_into_line(chain, i, at_start, transition_slide(ref.curvature_at(at_start ? 0.0 : ref.length()), budget, r));
+  const double s = at_start ? 0.0 : ref.length();
+  const double slide = transition_slide(ref.curvature_at(s), budget, r);
+  const std::size_t p = at_start ? 0 : chain.points.size() - 1;
+  const Vec2 placed = ref.point_at(s) + direction_of(chain.tangent_angles[p]) * (at_start ? -slide : slide);
+  if (!(slide > 0.0) || chain.points[p] == placed) return false;
+  const Vec2 held = chain.points[p];
+  chain.points[p] = placed;
+  if (build_chain_segment(chain, i).ok()) return true;
+  chain.points[p] = held;
+  return false;
 }
 
 // Both κ = 0 ends of the chain at lines moved so; whether any moved.
@@ -285,10 +284,10 @@ bool leave_lines_earlier(LacChain& chain, const RunReference& ref, double budget
 // Makes every segment exist before the solve, or says which junctions to add or drop. In
 // turn: a κ = 0 end at a line leaves the line earlier (transition_slide); a κ = 0 end the
 // source's shape does not allow (its curvature falls towards the end) becomes a free end, G1
-// there, but on a guided run, whose guide meets the line with κ = 0
-// where no chain does (dkg, Because We Learn and Kristi a–z A–Z unrounded: g2-jumps 0.9, 0.1
-// and 1.8 % → 0); a corner's noisy tangent is turned; the nearest drawable α; a junction that
-// does not turn with its neighbours is dropped; else the piece is cut.
+// there, but on a guided run, whose guide meets the line with κ = 0 where no chain does (dkg,
+// Because We Learn and Kristi a–z A–Z unrounded: g2-jumps 0.9, 0.1 and 1.8 % → 0); a corner's
+// noisy tangent is turned; the nearest drawable α; a junction that does not turn with its
+// neighbours is dropped; else the piece is cut.
 void make_drawable(LacChain& chain, const ChainSpan& span, const RunReference& ref, const SmoothRun& run,
                    bool guided, double budget, LineRoom room, ChainOutcome& out) {
   const double L = ref.length();
@@ -349,7 +348,7 @@ void make_drawable(LacChain& chain, const ChainSpan& span, const RunReference& r
   }
 }
 
-// Where an open chain's κ = 0 end lies once it slid along its line (slide_into_line), against
+// Where an open chain's κ = 0 end lies once it slid along its line (leave_line_earlier), against
 // the source's end there; `back` > 0 into the line.
 struct SlidEnd {
   Vec2 point, source_point;
