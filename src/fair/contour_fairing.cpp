@@ -335,14 +335,19 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
       for (const double e : by_segment) limits.allowance_by_cubic.push_back(0.95 * (settings.tolerance_units - e));
       // Rounding can stray past its allowance where it slides a line's end (line_rounding) and
       // the handles after it take other whole steps (DejaVu Sans's chi: 4.4 units from the
-      // source at a tolerance of 2.56, and the contour was kept unfaired): rounded again on
-      // half the allowance, up to three times.
+      // source at a tolerance of 2.56, and the contour was kept unfaired), or moves a corner
+      // to a grid neighbour past the tolerance (FreeSerif's V, at 1.25): rounded again with
+      // the lines' ends kept within their allowance, then both ways on half the allowance, up
+      // to three times.
       for (int retry = 0;; ++retry) {
+        limits.any_grid_neighbour = retry % 2 == 0;
+        if (retry > 0 && limits.any_grid_neighbour) {
+          limits.allowance *= 0.5;
+          for (double& e : limits.allowance_by_cubic) e *= 0.5;
+        }
         faired = to_contour(round_to_grid(a.nodes, source.closed, limits), source.closed);
         d = distance_between(SampledContour(faired), sampled_source);
-        if (d <= settings.tolerance_units || retry == rounding_retries) break;
-        limits.allowance *= 0.5;
-        for (double& e : limits.allowance_by_cubic) e *= 0.5;
+        if (d <= settings.tolerance_units || retry == 2 * rounding_retries + 1) break;
       }
     }
     if (d <= settings.tolerance_units) {

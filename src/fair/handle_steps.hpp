@@ -45,6 +45,11 @@ struct HandleStepLimits {
   /// 0.578× (at 1.2 % of the em); with the guide's lobes merged as well, the polish 0.533× →
   /// 0.478×, for half as much time again (one thread, 9.3 → 14.1 s).
   bool node_turns = false;
+  /// Whether a line's end (fair/line_rounding) may go to any of its grid neighbours, however
+  /// far that moves it, or only to those within its allowance (and its nearest grid point): a
+  /// neighbour may give a line the short grid step a curve's handle on it needs, but a corner
+  /// on the grid moved to a diagonal neighbour strays by 1.4 units.
+  bool any_grid_neighbour = true;
 
   double allowance_at(std::size_t node) const {
     return node < allowance_by_cubic.size() ? allowance_by_cubic[node] : allowance;

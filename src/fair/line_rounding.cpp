@@ -89,10 +89,13 @@ class Slide {
 // within `room` (units, up to `most_room`) of it: a line a degree off the vertical has a
 // primitive step of 60 units or more, and a few units more of room let it stand upright (Comic
 // Neue's i: its stem's step (1, 63) folded the 52-unit foot into a loop); a curve's end also
-// the grid points its slide allows.
-std::vector<EndPlace> end_places(Vec2 exact, const std::optional<Slide>& slide, double room) {
+// the grid points its slide allows. Without `any_neighbour`, only the neighbours within `room`
+// (HandleStepLimits::any_grid_neighbour).
+std::vector<EndPlace> end_places(Vec2 exact, const std::optional<Slide>& slide, double room, bool any_neighbour) {
   std::vector<EndPlace> out;
   const Vec2 base = nearest_grid_point(exact);
+  const double neighbour_reach =
+      any_neighbour ? std::numeric_limits<double>::infinity() : std::max(room, distance(base, exact)) + 1e-9;
   const int square = std::clamp(static_cast<int>(std::floor(room)), 1, most_room);
   const int reach = std::max(square, slide ? static_cast<int>(std::ceil(slide->reach() + off_line)) : 1);
   const auto consider = [&](Vec2 p, bool neighbour) {
@@ -103,7 +106,7 @@ std::vector<EndPlace> end_places(Vec2 exact, const std::optional<Slide>& slide, 
   for (int dx = -reach; dx <= reach; ++dx)
     for (int dy = -reach; dy <= reach; ++dy) {
       const Vec2 p = base + Vec2{double(dx), double(dy)};
-      consider(p, (std::abs(dx) <= 1 && std::abs(dy) <= 1) ||
+      consider(p, (std::abs(dx) <= 1 && std::abs(dy) <= 1 && distance(p, exact) <= neighbour_reach) ||
                       (std::abs(dx) <= square && std::abs(dy) <= square && distance(p, exact) <= room));
     }
   // Back along the line beyond the square: the grid points beside it, unit by unit.
@@ -302,9 +305,10 @@ class RunPlacement {
   bool choose(bool slides) {
     std::vector<std::vector<EndPlace>> places;
     places.push_back(end_places(exact_[run_.front().i].point, slides ? slide(run_.front(), true) : std::nullopt,
-                                room(run_.front().i)));
+                                room(run_.front().i), limits_.any_grid_neighbour));
     for (const LineOnGrid& l : run_)
-      places.push_back(end_places(exact_[l.j].point, slides ? slide(l, false) : std::nullopt, room(l.j)));
+      places.push_back(end_places(exact_[l.j].point, slides ? slide(l, false) : std::nullopt, room(l.j),
+                                  limits_.any_grid_neighbour));
     std::vector<std::size_t> chosen = cheapest_places(run_, places, placer_);
     if (chosen.empty()) return false;
     places_ = std::move(places), chosen_ = std::move(chosen);

@@ -471,9 +471,48 @@ TEST(ContourFairing, RoundingPutsNoExtremumInsideACubicOfACurl) {
   const ContourFairing r = fair_contour(c, settings);
   ASSERT_TRUE(r.faired) << r.reason;
   EXPECT_LE(brute_force_hausdorff(c, r.contour), 1.01 * settings.tolerance_units);
-  for (std::size_t k = 0; k < r.contour.segments.size(); ++k)
-    if (const Cubic* cubic = std::get_if<Cubic>(&r.contour.segments[k]))
+  for (std::size_t k = 0; k < r.contour.segments.size(); ++k) {
+    if (const Cubic* cubic = std::get_if<Cubic>(&r.contour.segments[k])) {
       EXPECT_EQ(inner_axis_extrema(*cubic), 0) << "segment " << k;
+    }
+  }
+}
+
+// FreeSerif's V (UPM 1000, tolerance 1.25): its bottom is a 15-unit flat between two long
+// diagonals, each meeting a curve of a serif tangentially. Rounding the diagonals to short grid
+// steps moved both corners of the flat to a diagonal grid neighbour, 1.4 units off, on every
+// retry (a neighbour was always a choice, however little the tolerance left), and the contour
+// was kept unfaired. A retry now keeps the lines' ends within what the tolerance leaves
+// (HandleStepLimits::any_grid_neighbour).
+TEST(ContourFairing, RoundingMovesNoCornerPastTheTolerance) {
+  const auto q = [](Vec2 a, Vec2 b, Vec2 c) { return Segment{Quad{{a, b, c}}}; };
+  const auto l = [](Vec2 a, Vec2 b) { return Segment{Line{{a, b}}}; };
+  Contour c;
+  c.closed = true;
+  c.segments = {l({691, 662}, {691, 643}),         q({691, 643}, {654, 641}, {638.5, 625}),
+                q({638.5, 625}, {623, 609}, {599, 550}), l({599, 550}, {377, -11}),
+                l({377, -11}, {362, -11}),         l({362, -11}, {116, 538}),
+                q({116, 538}, {87, 604}, {67.5, 622.5}), q({67.5, 622.5}, {48, 641}, {10, 643}),
+                l({10, 643}, {10, 662}),           l({10, 662}, {276, 662}),
+                l({276, 662}, {276, 643}),         q({276, 643}, {248, 641}, {247, 641}),
+                q({247, 641}, {201, 638}, {201, 610}), q({201, 610}, {201, 590}, {242, 499}),
+                l({242, 499}, {393, 161}),         l({393, 161}, {540, 528}),
+                q({540, 528}, {559, 576}, {559, 601}), q({559, 601}, {559, 622}, {543, 631.5}),
+                q({543, 631.5}, {527, 641}, {486, 643}), l({486, 643}, {486, 662}),
+                l({486, 662}, {691, 662})};
+  c.nodes.assign(c.segments.size(), NodeFlags{});
+  FairOptions options;
+  options.rounding = Rounding::integers;  // as its font's glyphs are, their implied midpoints aside
+  const FairSettings settings = resolve_settings(options, 1000.0);
+  const ContourFairing r = fair_contour(c, settings);
+  ASSERT_TRUE(r.faired) << r.reason;
+  EXPECT_FALSE(has_fraction(Outline{{r.contour}}));
+  EXPECT_LE(brute_force_hausdorff(c, r.contour), 1.01 * settings.tolerance_units);
+  for (const Vec2 corner : {Vec2{377, -11}, Vec2{362, -11}}) {
+    double nearest = 1e300;
+    for (std::size_t k = 0; k < r.contour.segments.size(); ++k) nearest = std::min(nearest, distance(r.contour.node_point(k), corner));
+    EXPECT_LE(nearest, settings.tolerance_units) << corner.x << ", " << corner.y;
+  }
 }
 
 // A text run whose G2 solve stalls is tried on its smoothing guide before its chain is kept
