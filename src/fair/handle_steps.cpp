@@ -777,22 +777,23 @@ bool turns_too_often(const std::vector<OutlineNode>& nodes, const OutlineJoins& 
 }
 
 // Where a run still jumps once the passes end, or turns where it should not (turns_too_often):
-// each node at a jump, or next to one, or turning so, moved to
+// each node at a jump, or next to one (unless `lone`), or turning so, moved to
 // the grid points next to it and turned to the primitive directions near its tangent (its
 // handles as many steps long as they were), with the handles of the cubics around it chosen
 // again for each place (choose_window), so that a move which needs its neighbours' handles to
 // follow is seen at its worth. The cheapest stands. Returns whether any node moved.
 bool polish_jumping_run(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal,
                         std::vector<std::optional<Vec2>>& steps, const OutlineJoins& joins,
-                        std::span<const std::size_t> cubics, bool cycle, CubicJudge& judge, double flat) {
+                        std::span<const std::size_t> cubics, bool cycle, CubicJudge& judge, double flat,
+                        bool lone) {
   bool moved = false;
   const std::size_t n = nodes.size();
   for (std::size_t q = 0; q < cubics.size(); ++q) {
     const std::size_t i = cubics[q];
     if (!joins.joins_cubics(i) || !steps[i]) continue;
-    if (join_jump(joins, i, flat) <= target_jump && join_jump(joins, (i + 1) % n, flat) <= target_jump &&
-        join_jump(joins, (i + n - 1) % n, flat) <= target_jump && !turns_too_often(nodes, joins, judge, i))
-      continue;
+    const bool beside = !lone && (join_jump(joins, (i + 1) % n, flat) > target_jump ||
+                                  join_jump(joins, (i + n - 1) % n, flat) > target_jump);
+    if (join_jump(joins, i, flat) <= target_jump && !beside && !turns_too_often(nodes, joins, judge, i)) continue;
     const RunWindow window = window_around(cubics, cycle, q);
     const RunSteps now = choose_window(nodes, steps, joins, window, judge, flat, i);
     double best_cost = now.best.cost;
@@ -898,9 +899,18 @@ void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<Outl
     for (std::size_t r = 0; r < runs.size(); ++r) again[r] = again[r] && still_jumps(runs[r]);
     if (std::none_of(again.begin(), again.end(), [](bool b) { return b; })) break;
   }
+  const auto jumps_in = [&](std::span<const std::size_t> run) {
+    int count = join_jump(joins, (run.back() + 1) % n, limits.flat_curvature) > target_jump;
+    for (const std::size_t k : run) count += join_jump(joins, k, limits.flat_curvature) > target_jump;
+    return count;
+  };
   for (std::size_t r = 0; r < runs.size(); ++r)
-    for (int k = 0; k < limits.polish_rounds && (still_jumps(runs[r]) || turns_too_often_in(runs[r])); ++k)
-      if (!polish_jumping_run(nodes, ideal, steps, joins, runs[r], cycle, judge, limits.flat_curvature)) break;
+    for (int k = 0; k < limits.polish_rounds && (still_jumps(runs[r]) || turns_too_often_in(runs[r])) &&
+                    (!limits.polish_lone_jumps || jumps_in(runs[r]) <= 1);
+         ++k)
+      if (!polish_jumping_run(nodes, ideal, steps, joins, runs[r], cycle, judge, limits.flat_curvature,
+                              limits.polish_lone_jumps))
+        break;
 }
 
 }  // namespace gf

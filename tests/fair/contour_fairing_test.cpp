@@ -515,6 +515,42 @@ TEST(ContourFairing, RoundingMovesNoCornerPastTheTolerance) {
   }
 }
 
+// Cantarell's s and S (UPM 1000, cubic outlines): rounded, each kept one curvature jump over
+// 5 % in its spine (s: κ·UPM 0.048 against −0.079 where both are nearly flat), a lone jump
+// that neither whole steps nor moving one node alone could mend. A text run left with a single
+// jump is now polished as handwriting's are (HandleStepLimits::polish_lone_jumps): the node at
+// it tried at its grid neighbours and directions, the cubics around it chosen again for each.
+TEST(ContourFairing, ALoneJumpInATextRunIsPolishedAway) {
+  using P = Vec2;
+  const auto c = [](P a, P b, P d, P e) { return Segment{Cubic{{a, b, d, e}}}; };
+  const auto l = [](P a, P b) { return Segment{Line{{a, b}}}; };
+  Contour s, S;
+  s.segments = {c({229, -10}, {348, -10}, {421, 46}, {421, 135}), c({421, 135}, {421, 312}, {133, 246}, {133, 355}),
+                c({133, 355}, {133, 397}, {178, 424}, {250, 424}), c({250, 424}, {291, 424}, {339, 415}, {380, 401}),
+                l({380, 401}, {399, 466}), c({399, 466}, {358, 483}, {309, 492}, {258, 492}),
+                c({258, 492}, {133, 492}, {53, 437}, {53, 346}), c({53, 346}, {53, 173}, {340, 245}, {340, 127}),
+                c({340, 127}, {340, 83}, {301, 58}, {235, 58}), c({235, 58}, {184, 58}, {116, 72}, {65, 94}),
+                l({65, 94}, {46, 29}), c({46, 29}, {101, 4}, {168, -10}, {229, -10})};
+  S.segments = {c({263, -10}, {418, -10}, {519, 69}, {519, 191}), c({519, 191}, {519, 437}, {130, 339}, {130, 518}),
+                c({130, 518}, {130, 591}, {189, 631}, {295, 631}), c({295, 631}, {354, 631}, {418, 619}, {468, 598}),
+                l({468, 598}, {493, 663}), c({493, 663}, {434, 689}, {367, 703}, {301, 703}),
+                c({301, 703}, {146, 703}, {45, 626}, {45, 505}), c({45, 505}, {45, 267}, {433, 356}, {433, 179}),
+                c({433, 179}, {433, 109}, {373, 64}, {268, 64}), c({268, 64}, {205, 64}, {127, 81}, {59, 109}),
+                l({59, 109}, {34, 44}), c({34, 44}, {111, 9}, {189, -10}, {263, -10})};
+  constexpr double upm = 1000.0;
+  const FairSettings settings = resolve_settings(FairOptions{}, upm);
+  for (Contour* contour : {&s, &S}) {
+    contour->nodes.assign(contour->segments.size(), NodeFlags{});
+    const ContourFairing r = fair_contour(*contour, settings);
+    ASSERT_TRUE(r.faired) << r.reason;
+    EXPECT_FALSE(has_fraction(Outline{{r.contour}}));
+    // Between points and segments: the spine's 600-unit cubic sampled 400 times would err high
+    // by 0.2 units between points alone.
+    EXPECT_LE(test::polyline_hausdorff(dense(*contour), dense(r.contour)), settings.tolerance_units);
+    EXPECT_EQ(g2_jumps(Outline{{r.contour}}, upm), 0);
+  }
+}
+
 // A text run whose G2 solve stalls is tried on its smoothing guide before its chain is kept
 // with the curvature jumps the stall left (fair/run_fairing.hpp, RunBasis): Inconsolata's Q,
 // r, Z and z were kept so, with |Δκ| of up to 160 per em at their junctions, and DejaVu's ℀
