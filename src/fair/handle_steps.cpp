@@ -870,11 +870,13 @@ void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<Outl
   // A nudged node changes the curvature its neighbours' handles give (its handles are their
   // far handles), and the steps chosen are the centre of the next choice's reach: a run is
   // chosen again while it or a nudge changes it and a join of it still jumps.
-  auto still_jumps = [&](std::span<const std::size_t> run) {
-    for (const std::size_t k : run)
-      if (join_jump(joins, k, limits.flat_curvature) > target_jump) return true;
-    return join_jump(joins, (run.back() + 1) % n, limits.flat_curvature) > target_jump;
+  // The joins of a run (the one after its last cubic too) that jump.
+  const auto jumps_in = [&](std::span<const std::size_t> run) {
+    int count = join_jump(joins, (run.back() + 1) % n, limits.flat_curvature) > target_jump;
+    for (const std::size_t k : run) count += join_jump(joins, k, limits.flat_curvature) > target_jump;
+    return count;
   };
+  const auto still_jumps = [&](std::span<const std::size_t> run) { return jumps_in(run) > 0; };
   CubicJudge judge(nodes, ideal, joins, limits);
   auto turns_too_often_in = [&](std::span<const std::size_t> run) {
     return std::any_of(run.begin(), run.end(), [&](std::size_t k) { return turns_too_often(nodes, joins, judge, k); });
@@ -899,11 +901,6 @@ void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<Outl
     for (std::size_t r = 0; r < runs.size(); ++r) again[r] = again[r] && still_jumps(runs[r]);
     if (std::none_of(again.begin(), again.end(), [](bool b) { return b; })) break;
   }
-  const auto jumps_in = [&](std::span<const std::size_t> run) {
-    int count = join_jump(joins, (run.back() + 1) % n, limits.flat_curvature) > target_jump;
-    for (const std::size_t k : run) count += join_jump(joins, k, limits.flat_curvature) > target_jump;
-    return count;
-  };
   for (std::size_t r = 0; r < runs.size(); ++r)
     for (int k = 0; k < limits.polish_rounds && (still_jumps(runs[r]) || turns_too_often_in(runs[r])) &&
                     (!limits.polish_lone_jumps || jumps_in(runs[r]) <= 1);

@@ -33,7 +33,7 @@ struct HandleStepLimits {
   int polish_rounds = 0;
   /// Polish only a run left with a single jump, and only the node at it (not those beside
   /// it): the few isolated jumps of a professional outline, at a fraction of the cost. Whole
-  /// DejaVu Sans, one round: g2-jumps 1,357 → 1,315 for 2.5 % more time; every jumping run
+  /// DejaVu Sans, one round: g2-jumps 1,357 → 1,315 for 4–5 % more time; every jumping run
   /// polished, 1,242 for 15 % more.
   bool polish_lone_jumps = false;
   /// At a smooth node flat on both sides before rounding (an inflection), the far handles'
