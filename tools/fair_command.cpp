@@ -82,7 +82,7 @@ int FairCommand::run() const {
 
   std::optional<FairedSegmentsOutput> segments;
   if (!segments_.empty()) segments.emplace(name, settings, font.units_per_em);
-  std::size_t glyphs_faired = 0, contours_kept = 0, g1_nodes = 0, guide_stretches = 0, g3_runs = 0, g2_runs = 0,
+  std::size_t glyphs_faired = 0, contours_kept = 0, runs_as_drawn = 0, g1_nodes = 0, guide_stretches = 0, g3_runs = 0, g2_runs = 0,
               g2_line_joins = 0;
   double deviation = 0.0, mismatch = 0.0;
   stream_glyphs<GlyphFairing>(
@@ -91,6 +91,11 @@ int FairCommand::run() const {
         for (const std::string& why : r.kept) {
           progress.clear();
           std::cerr << "glyphfair: warning: " << name << ": glyph '" << r.glyph.name << "': " << why << " (kept unfaired)\n";
+        }
+        for (const std::string& why : r.runs_as_drawn) {
+          progress.clear();
+          std::cerr << "glyphfair: warning: " << name << ": glyph '" << r.glyph.name << "': " << why
+                    << " (the rest of the contour faired)\n";
         }
         for (const std::string& why : r.g3_shortfalls) {
           progress.clear();
@@ -101,6 +106,7 @@ int FairCommand::run() const {
         g2_runs += r.g3_shortfalls.size();
         if (segments) segments->add(r);
         contours_kept += r.kept.size();
+        runs_as_drawn += r.runs_as_drawn.size();
         g1_nodes += static_cast<std::size_t>(r.g1_nodes);
         guide_stretches += static_cast<std::size_t>(r.guide_stretches);
         ++glyphs_faired;
@@ -122,7 +128,8 @@ int FairCommand::run() const {
     write_proof(proof_pages, font, proof, proof_, proof_inputs);
   }
   std::cerr << "glyphfair: " << name << ": " << glyphs_faired << " glyphs faired, " << contours_kept
-            << " contours kept as they were; largest distance from the source " << deviation << " units (tolerance "
+            << " contours kept as they were, " << runs_as_drawn
+            << " runs kept as drawn in contours faired otherwise; largest distance from the source " << deviation << " units (tolerance "
             << settings.tolerance_units << "); largest relative curvature mismatch left by a chain solve " << mismatch
             << "; " << g1_nodes << " smooth nodes G1 only; " << guide_stretches
             << " spans written from the smoothing guide (no G2 log-aesthetic chain within the budget)";

@@ -6,6 +6,7 @@
 #include <limits>
 #include <optional>
 #include <span>
+#include <sstream>
 
 #include "fair/contour_plan.hpp"
 #include "fair/cubic_writeback.hpp"
@@ -13,6 +14,8 @@
 #include "fair/kink_fillet.hpp"
 #include "fair/run_fairing.hpp"
 #include "fair/tight_turn.hpp"
+#include "geom/arc_length.hpp"
+#include "geom/curvature.hpp"
 #include "geom/polyline_distance.hpp"
 
 namespace gf {
@@ -132,6 +135,7 @@ struct Attempt {
   int guide_stretches = 0;
   int g3_runs = 0, g2_line_joins = 0;
   std::vector<std::string> g3_shortfalls;
+  std::vector<std::string> runs_as_drawn;
   FairedPieces pieces;
   std::vector<CornerJoin> corners;
 };
@@ -161,8 +165,15 @@ void record_chain(const FairedChain& chain, bool smooth_start, FairedPieces& out
 LacPoint faired_start(const FairedRun& run) { return run.chains.front().start_frame(); }
 LacPoint faired_end(const FairedRun& run) { return run.chains.back().end_frame(); }
 
+// Whether a node's two directions run exactly the same way (G1 exact, as on the grid).
+bool exactly_collinear(Vec2 arriving, Vec2 leaving) {
+  return cross(arriving, leaving) == 0.0 && dot(arriving, leaving) > 0.0;
+}
+
+// `as_drawn`: an open run that fails is kept as the source draws it instead of failing the
+// contour.
 Attempt fair_with_budgets(const ContourPlan& plan, const FairSettings& settings, Budgets budgets, FairedRuns& cache,
-                          bool after_run_failure, RunBasis basis) {
+                          bool after_run_failure, RunBasis basis, bool as_drawn = false) {
   Attempt a;
   const std::size_t count = plan.pieces.size();
   std::vector<std::optional<FairedRun>> runs(count);
@@ -170,10 +181,15 @@ Attempt fair_with_budgets(const ContourPlan& plan, const FairSettings& settings,
     const SmoothRun* run = std::get_if<SmoothRun>(&plan.pieces[i]);
     if (!run) continue;
     runs[i] = cache.get(*run, settings, budgets.chain, after_run_failure, basis);
-    if (!runs[i]->ok) {
+    if (runs[i]->ok) continue;
+    if (!as_drawn || run->closed) {
       a.failure = runs[i]->reason;
       return a;
     }
+    const Vec2 p = run->cubics.front().p[0];
+    std::ostringstream where;
+    where << "the run from (" << p.x << ", " << p.y << ") kept as drawn: " << runs[i]->reason;
+    a.runs_as_drawn.push_back(where.str());
   }
   const auto moved_run_at = [&](std::size_t i) { return runs[i] && runs[i]->ends_moved() ? &*runs[i] : nullptr; };
   NodeAssembler assembler;
@@ -202,6 +218,38 @@ Attempt fair_with_budgets(const ContourPlan& plan, const FairSettings& settings,
     }
     const SmoothRun& run = std::get<SmoothRun>(plan.pieces[i]);
     const FairedRun& faired = *runs[i];
+    if (!faired.ok) {
+      // As drawn: smooth only where the source is exactly G1 (at its ends too), and no corner
+      // of the plan to be made smooth and faired again.
+      std::vector<OutlineNode> drawn(run.cubics.size() + 1);
+      for (std::size_t k = 0; k < run.cubics.size(); ++k) {
+        const Cubic& c = run.cubics[k];
+        drawn[k].point = c.p[0], drawn[k].out_handle = c.p[1], drawn[k + 1].in_handle = c.p[2];
+        drawn[k].smooth = k > 0 && exactly_collinear(c.p[0] - run.cubics[k - 1].p[2], c.p[1] - c.p[0]);
+        const Segment s = c;
+        const auto frame = [&](SegmentEnd end, Vec2 at) {
+          return LacPoint{at, end_tangent(s, end).value_or(Vec2{}), end_curvature(s, end).curvature.value_or(0.0),
+                          std::nullopt};
+        };
+        a.pieces.push_back({FairedPieceKind::as_drawn, arc_length_estimate(s), frame(SegmentEnd::start, c.p[0]),
+                            frame(SegmentEnd::end, c.p[3]), std::nullopt, false});
+      }
+      drawn.back().point = run.cubics.back().p[3];
+      drawn.back().smooth = false;
+      const std::vector<OutlineNode>& before = assembler.nodes();
+      bool joined = false;
+      if (!before.empty() && distance(before.back().point, drawn.front().point) < 1e-9) {
+        const Vec2 arriving = before.back().in_handle ? before.back().point - *before.back().in_handle
+                              : before.size() > 1     ? before.back().point - before[before.size() - 2].point
+                                                      : Vec2{};
+        joined = exactly_collinear(arriving, *drawn.front().out_handle - drawn.front().point);
+      }
+      smooth_before[i] = true;
+      starts[i] = drawn.front().point;
+      assembler.append(std::move(drawn), joined);
+      previous_ends_smooth = false;
+      continue;
+    }
     if (faired.chains.empty()) {
       // Too short for a chain (a few units between two turns): its chord, a corner at each end.
       append_line(i, run.cubics.front().p[0], run.cubics.back().p[3], false);
@@ -297,7 +345,7 @@ std::vector<std::size_t> kinked_corners(const Contour& faired, std::span<const C
 // `kinked` gets the corners of the result that turn by less than the kink limit.
 ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& plan, const SampledContour& sampled_source,
                                    const FairSettings& settings, FairedRuns& cache, RunBasis basis,
-                                   std::vector<std::size_t>& kinked) {
+                                   std::vector<std::size_t>& kinked, bool as_drawn = false) {
   ContourFairing out;
   out.contour = source;
   const bool round = settings.rounding == Rounding::integers;
@@ -308,7 +356,7 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
   const int attempts = basis == RunBasis::guide ? 1 : 2;
   for (int attempt = 0; attempt < attempts; ++attempt, available *= 0.5) {
     Attempt a = fair_with_budgets(plan, settings, {settings.chain_share * available, (1.0 - settings.chain_share) * available},
-                                  cache, run_failed, basis);
+                                  cache, run_failed, basis, as_drawn);
     run_failed = !a.failure.empty();
     if (run_failed) {
       out.reason = a.failure;
@@ -362,6 +410,7 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
       out.g3_runs = a.g3_runs;
       out.g2_line_joins = a.g2_line_joins;
       out.g3_shortfalls = std::move(a.g3_shortfalls);
+      out.runs_as_drawn = std::move(a.runs_as_drawn);
       out.pieces = std::move(a.pieces);
       kinked = kinked_corners(out.contour, a.corners);
       return out;
@@ -378,12 +427,18 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
 ContourFairing fair_planned(const Contour& source, const ContourPlan& plan, const SampledContour& sampled_source,
                             const FairSettings& settings, FairedRuns& cache, std::vector<std::size_t>& kinked) {
   ContourFairing own = fair_within_budgets(source, plan, sampled_source, settings, cache, RunBasis::own, kinked);
-  if (own.faired || settings.profile != FairProfile::text) return own;
-  for (const RunBasis next : {RunBasis::guide, RunBasis::own_with_jumps}) {
-    ContourFairing again = fair_within_budgets(source, plan, sampled_source, settings, cache, next, kinked);
-    if (again.faired) return again;
-  }
-  return own;
+  if (own.faired) return own;
+  const bool text = settings.profile == FairProfile::text;
+  if (text)
+    for (const RunBasis next : {RunBasis::guide, RunBasis::own_with_jumps}) {
+      ContourFairing again = fair_within_budgets(source, plan, sampled_source, settings, cache, next, kinked);
+      if (again.faired) return again;
+    }
+  // Last, the runs that fail on the last basis kept as drawn, the rest faired (FreeSerif's W,
+  // EB Garamond's K: one serif's run of a dozen kept the whole contour unfaired).
+  ContourFairing partly = fair_within_budgets(source, plan, sampled_source, settings, cache,
+                                              text ? RunBasis::own_with_jumps : RunBasis::own, kinked, true);
+  return partly.faired ? partly : own;
 }
 
 // How many times corners that came out as kinks are made smooth and the contour faired again.
@@ -437,7 +492,7 @@ ContourFairing fair_curve(const Contour& source, const Contour& curve, std::span
     smooth_nodes.insert(smooth_nodes.end(), kinked.begin(), kinked.end());
     std::vector<std::size_t> still;
     ContourFairing again = fair_planned(curve, plan_with(smooth_nodes), sampled_source, settings, cache, still);
-    if (!again.faired) break;
+    if (!again.faired || again.runs_as_drawn.size() > out.runs_as_drawn.size()) break;
     out = std::move(again);
     kinked = std::move(still);
   }
@@ -475,7 +530,10 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& requested
     if (TightTurns t = find_tight_turns(source, limits); !t.turns.empty()) turned = std::move(t);
   }
   if (turned) out = fair_curve(source, turned->contour, turned->turns, settings);
-  if (!turned || !out.faired) out = fair_curve(source, source, {}, settings);
+  if (!turned || !out.faired || !out.runs_as_drawn.empty()) {
+    ContourFairing plain = fair_curve(source, source, {}, settings);
+    if (!out.faired || (plain.faired && plain.runs_as_drawn.size() < out.runs_as_drawn.size())) out = std::move(plain);
+  }
   if (out.faired) fillet_kinks(out, source, settings);
   // The last word on direction: a faired contour that winds the other way would fill (or
   // cut) the opposite of what the source does.

@@ -24,6 +24,9 @@ struct ContourFairing {
   int g3_runs = 0;         ///< --continuity g3: smooth runs that came out G3
   int g2_line_joins = 0;   ///< and their line joins held to G2 (no room on the line for G3)
   std::vector<std::string> g3_shortfalls;  ///< and why each other run stayed G2
+  /// Runs no chain fairs on any basis, kept as the source draws them while the rest of the
+  /// contour is faired: where each starts, and why.
+  std::vector<std::string> runs_as_drawn;
   FairedPieces pieces;     ///< the faired curve before the writeback (empty when kept)
 };
 

@@ -10,7 +10,8 @@
 
 namespace gf {
 
-enum class FairedPieceKind { line, log_aesthetic, polynomial_spiral, guide };
+/// `as_drawn`: a cubic of a run no chain fairs, kept as the source draws it.
+enum class FairedPieceKind { line, log_aesthetic, polynomial_spiral, guide, as_drawn };
 
 struct FairedPiece {
   FairedPieceKind kind;
@@ -29,6 +30,7 @@ inline const char* to_string(FairedPieceKind kind) {
     case FairedPieceKind::log_aesthetic: return "log-aesthetic";
     case FairedPieceKind::polynomial_spiral: return "polynomial-spiral";
     case FairedPieceKind::guide: return "guide";
+    case FairedPieceKind::as_drawn: return "as-drawn";
   }
   return "";
 }

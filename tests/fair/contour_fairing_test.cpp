@@ -551,6 +551,50 @@ TEST(ContourFairing, ALoneJumpInATextRunIsPolishedAway) {
   }
 }
 
+// EB Garamond's t (UPM 1000, tolerance 1.25): the crossbar ends in a cap that turns 180°
+// between two horizontal lines in 48 units, radius 12. No chain leaves a line with κ = 0 and
+// turns so within the budget, on any basis, and the whole contour was kept unfaired. Such a run
+// is now kept as drawn and the rest of the contour faired (ContourFairing::runs_as_drawn).
+TEST(ContourFairing, ARunNoChainFairsIsKeptAsDrawnAndTheRestFaired) {
+  using P = Vec2;
+  const auto c = [](P a, P b, P d, P e) { return Segment{Cubic{{a, b, d, e}}}; };
+  const auto l = [](P a, P b) { return Segment{Line{{a, b}}}; };
+  const Segment cap[] = {c({294, 352}, {299, 352}, {304, 364}, {304, 376}), c({304, 376}, {304, 388}, {299, 400}, {294, 400})};
+  Contour t;
+  t.segments = {c({189, -14}, {250, -14}, {306, 36}, {306, 47}), c({306, 47}, {306, 55}, {302, 64}, {296, 60}),
+                c({296, 60}, {280, 48}, {260, 41}, {221, 41}),   c({221, 41}, {190, 41}, {155, 61}, {155, 135}),
+                l({155, 135}, {155, 324}),                       c({155, 324}, {155, 351}, {161, 352}, {195, 352}),
+                l({195, 352}, {294, 352}),                       cap[0],
+                cap[1],                                          l({294, 400}, {180, 400}),
+                c({180, 400}, {167, 400}, {153, 405}, {155, 414}), l({155, 414}, {163, 458}),
+                c({163, 458}, {164, 467}, {152, 468}, {146, 468}), c({146, 468}, {136, 468}, {93, 394}, {40, 379}),
+                c({40, 379}, {38, 378}, {35, 375}, {35, 372}),   c({35, 372}, {35, 365}, {43, 352}, {47, 352}),
+                c({47, 352}, {78, 352}, {85, 349}, {85, 337}),   l({85, 337}, {85, 105}),
+                c({85, 105}, {85, 22}, {127, -14}, {189, -14})};
+  t.nodes.assign(t.segments.size(), NodeFlags{});
+  const FairSettings settings = resolve_settings(FairOptions{}, 1000.0);
+  const ContourFairing r = fair_contour(t, settings);
+  ASSERT_TRUE(r.faired) << r.reason;
+  ASSERT_EQ(r.runs_as_drawn.size(), 1u);
+  EXPECT_NE(r.runs_as_drawn.front().find("(294, 352)"), std::string::npos) << r.runs_as_drawn.front();
+  EXPECT_LE(test::polyline_hausdorff(dense(t), dense(r.contour)), settings.tolerance_units);
+  // The cap's nodes where the source has them (rounding may still give its handles other
+  // whole steps, as anywhere), its two cubics recorded as drawn, and the rest faired: none of
+  // the source's other curves is left.
+  for (const Vec2 node : {Vec2{294, 352}, Vec2{304, 376}, Vec2{294, 400}}) {
+    bool found = false;
+    for (std::size_t k = 0; k < r.contour.segments.size(); ++k) found = found || r.contour.node_point(k) == node;
+    EXPECT_TRUE(found) << node.x << ", " << node.y;
+  }
+  int as_drawn = 0;
+  for (const FairedPiece& p : r.pieces) as_drawn += p.kind == FairedPieceKind::as_drawn;
+  EXPECT_EQ(as_drawn, 2);
+  for (const Segment& s : r.contour.segments) {
+    if (is_line(s) || std::find(std::begin(cap), std::end(cap), s) != std::end(cap)) continue;
+    EXPECT_EQ(std::find(t.segments.begin(), t.segments.end(), s), t.segments.end()) << "a source curve left unfaired";
+  }
+}
+
 // A text run whose G2 solve stalls is tried on its smoothing guide before its chain is kept
 // with the curvature jumps the stall left (fair/run_fairing.hpp, RunBasis): Inconsolata's Q,
 // r, Z and z were kept so, with |Δκ| of up to 160 per em at their junctions, and DejaVu's ℀
