@@ -19,7 +19,6 @@ namespace gf {
 namespace {
 
 constexpr int max_depth = 6;
-constexpr double min_chord = 4.0;  // units: a shorter span is one cubic (halves of it round onto the same few grid points)
 constexpr int cubic_samples = 48;
 constexpr double min_handle_fraction = 0.03;
 constexpr double fine_enough = 0.03;  // of κ per grid step at a node
@@ -252,13 +251,13 @@ struct Fitted {
 
 class SpanWriter {
  public:
-  SpanWriter(const ChainPath& path, double budget, double flat_curvature, ChainCubics& out)
-      : path_(path), budget_(budget), flat_(flat_curvature), out_(out) {}
+  SpanWriter(const ChainPath& path, double budget, double flat_curvature, double shortest_span, ChainCubics& out)
+      : path_(path), budget_(budget), flat_(flat_curvature), shortest_span_(shortest_span), out_(out) {}
 
   void fit(double a, double b, std::optional<Vec2> start_step, std::optional<Vec2> end_step, int depth,
            std::vector<Piece>& pieces) {
     Fitted f = best_cubic(a, b, start_step, end_step);
-    if (f.within(budget_) || depth >= max_depth || distance(path_.at(a).point, path_.at(b).point) < min_chord) {
+    if (f.within(budget_) || depth >= max_depth || distance(path_.at(a).point, path_.at(b).point) < shortest_span_) {
       if (!f.cubic) {  // no G2 cubic at all: keep G1 with third-chord handles
         const LacPoint pa = path_.at(a), pb = path_.at(b);
         const double h = distance(pa.point, pb.point) / 3.0;
@@ -422,6 +421,7 @@ class SpanWriter {
   const ChainPath& path_;
   double budget_;
   double flat_;
+  double shortest_span_;
   ChainCubics& out_;
   std::vector<Vec2> fine_ = grid_directions(5), all_ = grid_directions(13);
 };
@@ -445,8 +445,8 @@ std::vector<Piece> write_spans(SpanWriter& writer, std::span<const RequiredNode>
 // (its handle along the axis) and the extremum's node goes. Corner and extremum a few units
 // apart left a cubic so short that whole grid steps could only make it straight, against the
 // curvature beyond it.
-void snap_extremum_to_corner(ChainPath& path, double budget, double flat_curvature, std::vector<RequiredNode>& nodes,
-                             SegmentEnd end, bool corner) {
+void snap_extremum_to_corner(ChainPath& path, double budget, double flat_curvature, double shortest_span,
+                             std::vector<RequiredNode>& nodes, SegmentEnd end, bool corner) {
   const std::size_t n = nodes.size();
   if (!corner || n < 3) return;
   const bool start = end == SegmentEnd::start;
@@ -456,7 +456,7 @@ void snap_extremum_to_corner(ChainPath& path, double budget, double flat_curvatu
   const Vec2 axis = *nodes[e].grid_step;
   if (std::abs(turning_angle(path.at(nodes[at].sigma).tangent, axis)) > snap_turn) return;
   ChainCubics trials;  // what the trial fits count is not the chain's
-  SpanWriter writer(path, budget, flat_curvature, trials);  // it reads the path as turned below
+  SpanWriter writer(path, budget, flat_curvature, shortest_span, trials);  // it reads the path as turned below
   const std::array<RequiredNode, 3> kept = start ? std::array{nodes[at], nodes[e], nodes[far]}
                                                  : std::array{nodes[far], nodes[e], nodes[at]};
   const std::size_t before = write_spans(writer, kept, false, path.total()).size();
@@ -477,7 +477,8 @@ void snap_extremum_to_corner(ChainPath& path, double budget, double flat_curvatu
 
 }  // namespace
 
-ChainCubics write_chain_as_cubics(const FairedChain& chain, double budget, double flat_curvature, ChainEnds ends) {
+ChainCubics write_chain_as_cubics(const FairedChain& chain, double budget, double flat_curvature, ChainEnds ends,
+                                  double shortest_span) {
   ChainCubics out;
   ChainPath path(chain);
   const double total = path.total();
@@ -501,10 +502,10 @@ ChainCubics write_chain_as_cubics(const FairedChain& chain, double budget, doubl
   if (chain.closed && distinct.size() == 1) distinct.push_back({distinct.front().sigma + 0.5 * total, std::nullopt});
 
   if (!chain.closed) {
-    snap_extremum_to_corner(path, budget, flat_curvature, distinct, SegmentEnd::start, ends.start_corner);
-    snap_extremum_to_corner(path, budget, flat_curvature, distinct, SegmentEnd::end, ends.end_corner);
+    snap_extremum_to_corner(path, budget, flat_curvature, shortest_span, distinct, SegmentEnd::start, ends.start_corner);
+    snap_extremum_to_corner(path, budget, flat_curvature, shortest_span, distinct, SegmentEnd::end, ends.end_corner);
   }
-  SpanWriter writer(path, budget, flat_curvature, out);
+  SpanWriter writer(path, budget, flat_curvature, shortest_span, out);
   const std::vector<Piece> pieces = write_spans(writer, distinct, chain.closed, total);
   // Nodes: the start of every cubic (and an open chain's last end); a node's grid step is the
   // end step of the cubic before it.

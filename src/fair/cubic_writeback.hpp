@@ -28,8 +28,9 @@ struct ChainEnds {
 };
 
 /// `flat_curvature`: below it a node's curvature counts as zero (a line join), not as a
-/// curvature the grid must set finely.
+/// curvature the grid must set finely. `shortest_span_units`: a span shorter than this is one
+/// cubic, within the budget or not.
 ChainCubics write_chain_as_cubics(const FairedChain& chain, double budget_units, double flat_curvature,
-                                  ChainEnds ends = {});
+                                  ChainEnds ends = {}, double shortest_span_units = 4.0);
 
 }  // namespace gf

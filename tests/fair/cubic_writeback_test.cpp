@@ -1,4 +1,5 @@
-// The cubic writeback of a faired chain: an extremum a few units from a corner.
+// The cubic writeback of a faired chain: an extremum a few units from a corner; the shortest
+// span it halves.
 #include "fair/cubic_writeback.hpp"
 
 #include <gtest/gtest.h>
@@ -45,6 +46,26 @@ TEST(CubicWriteback, AnExtremumNextToACornerIsTheCorner) {
   for (std::size_t k = 1; k < snapped.nodes.size(); ++k) EXPECT_GT(distance(snapped.nodes[k].point, corner.point), 20.0);
   // The end of the chain is no corner: its node stays where the chain ends.
   EXPECT_EQ(snapped.nodes.back().point, kept.nodes.back().point);
+}
+
+// Halving a span that misses the budget stops short of `shortest_span_units`: cubics of two to
+// four units, as the default allows, round onto a few grid points whose whole steps cannot set
+// their curvature (Lato's W had two of four units at its middle apex, κ·UPM 1,333 and 4,000
+// once rounded), so a rounded outline asks for eight (fair/contour_fairing.cpp).
+TEST(CubicWriteback, NoHalfOfASpanIsShorterThanHalfTheShortestSpan) {
+  const FairedChain chain = stroke_leaving_a_corner();
+  ASSERT_EQ(chain.segments.size(), 1u);
+  const double unreachable = 1e-9, flat = 5e-4;
+  const auto shortest_cubic = [](const ChainCubics& c) {
+    double shortest = 1e300;
+    for (std::size_t k = 0; k + 1 < c.nodes.size(); ++k) shortest = std::min(shortest, distance(c.nodes[k].point, c.nodes[k + 1].point));
+    return shortest;
+  };
+  const ChainCubics fine = write_chain_as_cubics(chain, unreachable, flat);
+  const ChainCubics coarse = write_chain_as_cubics(chain, unreachable, flat, {}, 8.0);
+  EXPECT_LT(coarse.nodes.size(), fine.nodes.size());
+  EXPECT_LT(shortest_cubic(fine), 4.0);
+  EXPECT_GE(shortest_cubic(coarse), 4.0 - 1e-6);
 }
 
 }  // namespace
