@@ -175,6 +175,34 @@ bool exactly_collinear(Vec2 arriving, Vec2 leaving) {
   return cross(arriving, leaving) == 0.0 && dot(arriving, leaving) > 0.0;
 }
 
+// The direction the outline arrives in at its last node: along its handle, or its line.
+Vec2 arriving_at_last(const std::vector<OutlineNode>& nodes) {
+  const OutlineNode& last = nodes.back();
+  if (last.in_handle) return last.point - *last.in_handle;
+  return nodes.size() > 1 ? last.point - nodes[nodes.size() - 2].point : Vec2{};
+}
+
+// A run no basis fairs, as the source draws it: its nodes, smooth only where the source is
+// exactly G1, and its cubics recorded as pieces.
+std::vector<OutlineNode> drawn_nodes(const SmoothRun& run, FairedPieces& pieces) {
+  std::vector<OutlineNode> drawn(run.cubics.size() + 1);
+  for (std::size_t k = 0; k < run.cubics.size(); ++k) {
+    const Cubic& c = run.cubics[k];
+    drawn[k].point = c.p[0], drawn[k].out_handle = c.p[1], drawn[k + 1].in_handle = c.p[2];
+    drawn[k].smooth = k > 0 && exactly_collinear(c.p[0] - run.cubics[k - 1].p[2], c.p[1] - c.p[0]);
+    const Segment s = c;
+    const auto frame = [&](SegmentEnd end, Vec2 at) {
+      return LacPoint{at, end_tangent(s, end).value_or(Vec2{}), end_curvature(s, end).curvature.value_or(0.0),
+                      std::nullopt};
+    };
+    pieces.push_back({FairedPieceKind::as_drawn, arc_length_estimate(s), frame(SegmentEnd::start, c.p[0]),
+                      frame(SegmentEnd::end, c.p[3]), std::nullopt, false});
+  }
+  drawn.back().point = run.cubics.back().p[3];
+  drawn.back().smooth = false;
+  return drawn;
+}
+
 // `as_drawn`: an open run that fails is kept as the source draws it instead of failing the
 // contour.
 Attempt fair_with_budgets(const ContourPlan& plan, const FairSettings& settings, Budgets budgets, FairedRuns& cache,
@@ -224,31 +252,12 @@ Attempt fair_with_budgets(const ContourPlan& plan, const FairSettings& settings,
     const SmoothRun& run = std::get<SmoothRun>(plan.pieces[i]);
     const FairedRun& faired = *runs[i];
     if (!faired.ok) {
-      // As drawn: smooth only where the source is exactly G1 (at its ends too), and no corner
-      // of the plan to be made smooth and faired again.
-      std::vector<OutlineNode> drawn(run.cubics.size() + 1);
-      for (std::size_t k = 0; k < run.cubics.size(); ++k) {
-        const Cubic& c = run.cubics[k];
-        drawn[k].point = c.p[0], drawn[k].out_handle = c.p[1], drawn[k + 1].in_handle = c.p[2];
-        drawn[k].smooth = k > 0 && exactly_collinear(c.p[0] - run.cubics[k - 1].p[2], c.p[1] - c.p[0]);
-        const Segment s = c;
-        const auto frame = [&](SegmentEnd end, Vec2 at) {
-          return LacPoint{at, end_tangent(s, end).value_or(Vec2{}), end_curvature(s, end).curvature.value_or(0.0),
-                          std::nullopt};
-        };
-        a.pieces.push_back({FairedPieceKind::as_drawn, arc_length_estimate(s), frame(SegmentEnd::start, c.p[0]),
-                            frame(SegmentEnd::end, c.p[3]), std::nullopt, false});
-      }
-      drawn.back().point = run.cubics.back().p[3];
-      drawn.back().smooth = false;
+      // As drawn, joined smooth only where the source is exactly G1; no corner of the plan
+      // here to be made smooth and faired again.
+      std::vector<OutlineNode> drawn = drawn_nodes(run, a.pieces);
       const std::vector<OutlineNode>& before = assembler.nodes();
-      bool joined = false;
-      if (!before.empty() && distance(before.back().point, drawn.front().point) < 1e-9) {
-        const Vec2 arriving = before.back().in_handle ? before.back().point - *before.back().in_handle
-                              : before.size() > 1     ? before.back().point - before[before.size() - 2].point
-                                                      : Vec2{};
-        joined = exactly_collinear(arriving, *drawn.front().out_handle - drawn.front().point);
-      }
+      const bool joined = !before.empty() && distance(before.back().point, drawn.front().point) < 1e-9 &&
+                          exactly_collinear(arriving_at_last(before), *drawn.front().out_handle - drawn.front().point);
       smooth_before[i] = true;
       starts[i] = drawn.front().point;
       assembler.append(std::move(drawn), joined);
