@@ -170,18 +170,6 @@ void record_chain(const FairedChain& chain, bool smooth_start, FairedPieces& out
 LacPoint faired_start(const FairedRun& run) { return run.chains.front().start_frame(); }
 LacPoint faired_end(const FairedRun& run) { return run.chains.back().end_frame(); }
 
-// Whether a node's two directions run exactly the same way (G1 exact, as on the grid).
-bool exactly_collinear(Vec2 arriving, Vec2 leaving) {
-  return cross(arriving, leaving) == 0.0 && dot(arriving, leaving) > 0.0;
-}
-
-// The direction the outline arrives in at its last node: along its handle, or its line.
-Vec2 arriving_at_last(const std::vector<OutlineNode>& nodes) {
-  const OutlineNode& last = nodes.back();
-  if (last.in_handle) return last.point - *last.in_handle;
-  return nodes.size() > 1 ? last.point - nodes[nodes.size() - 2].point : Vec2{};
-}
-
 // A run no basis fairs, as the source draws it: its nodes, smooth only where the source is
 // exactly G1, and its cubics recorded as pieces.
 std::vector<OutlineNode> drawn_nodes(const SmoothRun& run, FairedPieces& pieces) {
@@ -257,7 +245,7 @@ Attempt fair_with_budgets(const ContourPlan& plan, const FairSettings& settings,
       std::vector<OutlineNode> drawn = drawn_nodes(run, a.pieces);
       const std::vector<OutlineNode>& before = assembler.nodes();
       const bool joined = !before.empty() && distance(before.back().point, drawn.front().point) < 1e-9 &&
-                          exactly_collinear(arriving_at_last(before), *drawn.front().out_handle - drawn.front().point);
+                          exactly_collinear(arriving_direction(before, before.size() - 1), leaving_direction(drawn, 0));
       smooth_before[i] = true;
       starts[i] = drawn.front().point;
       assembler.append(std::move(drawn), joined);
@@ -450,8 +438,8 @@ ContourFairing fair_planned(const Contour& source, const ContourPlan& plan, cons
       ContourFairing again = fair_within_budgets(source, plan, sampled_source, settings, cache, next, kinked);
       if (again.faired) return again;
     }
-  // Last, the runs that fail on the last basis kept as drawn, the rest faired (FreeSerif's W,
-  // EB Garamond's K: one serif's run of a dozen kept the whole contour unfaired).
+  // Last, the runs that fail on the last basis kept as drawn, the rest faired (EB Garamond's t
+  // and K: one cap's or serif's run of a dozen kept the whole contour unfaired).
   ContourFairing partly = fair_within_budgets(source, plan, sampled_source, settings, cache,
                                               text ? RunBasis::own_with_jumps : RunBasis::own, kinked, true);
   return partly.faired ? partly : own;

@@ -69,8 +69,9 @@ std::optional<Choice> collinear_choice(Vec2 point, std::optional<Vec2> in, std::
   Vec2 dir = out ? *out - point : Vec2{};
   if (norm(dir) == 0.0 && in) dir = point - *in;
   if (norm(dir) == 0.0) return std::nullopt;
-  const double shortest = std::min(in ? norm(point - *in) : 1e300, out ? norm(*out - point) : 1e300);
-  const double longest = std::max(in ? norm(point - *in) : 0.0, out ? norm(*out - point) : 0.0);
+  const double in_length = in ? norm(point - *in) : 0.0, out_length = out ? norm(*out - point) : 0.0;
+  const double shortest = std::min(in ? in_length : 1e300, out ? out_length : 1e300);
+  const double longest = std::max(in_length, out_length);
   const bool steep = std::abs(dir.y) > std::abs(dir.x);
   const Vec2 base = nearest_grid_point(point);
   const double most_turn = radians(kink_limit_deg);
@@ -82,7 +83,7 @@ std::optional<Choice> collinear_choice(Vec2 point, std::optional<Vec2> in, std::
   // handle on a 110-unit cubic took (1, 0), and the cubic became an S with κ·UPM 382 at the
   // node; (10, 1) lengthens that handle to 10 units instead; DejaVu Sans's ʑ: a handle
   // lengthened to 6 units on an 11-unit cubic turned it past the vertical).
-  const bool in_shorter = in && (!out || norm(point - *in) <= norm(*out - point));
+  const bool in_shorter = in && (!out || in_length <= out_length);
   const double room = 0.25 * (in_shorter ? chord_in : chord_out);
   const int short_reach = std::clamp(static_cast<int>(shortest), 1, 64);
   const int long_reach = std::clamp(static_cast<int>(std::min(longest, room)), short_reach, 64);
@@ -167,14 +168,6 @@ void resolve_handle_lengths(std::vector<OutlineNode>& nodes, const std::vector<O
 constexpr double collapse_reach = 2.0;
 
 void merge_coincident_nodes(std::vector<OutlineNode>& nodes, bool closed) {
-  const auto arriving = [&](std::size_t k) {
-    const std::size_t n = nodes.size();
-    return nodes[k].in_handle ? nodes[k].point - *nodes[k].in_handle : nodes[k].point - nodes[(k + n - 1) % n].point;
-  };
-  const auto leaving = [&](std::size_t k) {
-    const std::size_t n = nodes.size();
-    return nodes[k].out_handle ? *nodes[k].out_handle - nodes[k].point : nodes[(k + 1) % n].point - nodes[k].point;
-  };
   const auto within = [](const std::optional<Vec2>& h, Vec2 p) { return !h || distance(*h, p) <= collapse_reach; };
   for (std::size_t i = 0; nodes.size() > (closed ? 3u : 2u) && i < nodes.size();) {
     const std::size_t n = nodes.size(), j = (i + 1) % n;
@@ -192,8 +185,7 @@ void merge_coincident_nodes(std::vector<OutlineNode>& nodes, bool closed) {
     const bool was_smooth = a.smooth && b.smooth;
     nodes[keep] = merged;
     nodes.erase(nodes.begin() + static_cast<std::ptrdiff_t>(drop));  // after keep: keep's index stands
-    const Vec2 in = arriving(keep), out = leaving(keep);
-    nodes[keep].smooth = was_smooth && cross(in, out) == 0.0 && dot(in, out) > 0.0;
+    nodes[keep].smooth = was_smooth && exactly_collinear(arriving_direction(nodes, keep), leaving_direction(nodes, keep));
   }
 }
 

@@ -12,6 +12,16 @@ Cubic outline_cubic(const std::vector<OutlineNode>& nodes, std::size_t i) {
   return {a.point, *a.out_handle, *b.in_handle, b.point};
 }
 
+Vec2 arriving_direction(const std::vector<OutlineNode>& nodes, std::size_t k) {
+  const OutlineNode& q = nodes[k];
+  return q.in_handle ? q.point - *q.in_handle : q.point - nodes[(k + nodes.size() - 1) % nodes.size()].point;
+}
+
+Vec2 leaving_direction(const std::vector<OutlineNode>& nodes, std::size_t k) {
+  const OutlineNode& q = nodes[k];
+  return q.out_handle ? *q.out_handle - q.point : nodes[(k + 1) % nodes.size()].point - q.point;
+}
+
 Contour to_contour(const std::vector<OutlineNode>& nodes, bool closed) {
   Contour c;
   c.closed = closed;

@@ -27,6 +27,17 @@ struct OutlineNode {
 /// The cubic from node i to node i + 1 (node 0 after the last): both handles must be present.
 Cubic outline_cubic(const std::vector<OutlineNode>& nodes, std::size_t i);
 
+/// The direction the outline arrives in at node k: from its in-handle, else from the node
+/// before (cyclically; 0 for a lone node).
+Vec2 arriving_direction(const std::vector<OutlineNode>& nodes, std::size_t k);
+
+/// The direction the outline leaves node k in: towards its out-handle, else the node after.
+Vec2 leaving_direction(const std::vector<OutlineNode>& nodes, std::size_t k);
+
+/// Whether two directions run exactly the same way: G1 exact, as a smooth node on the grid
+/// must be.
+inline bool exactly_collinear(Vec2 a, Vec2 b) { return cross(a, b) == 0.0 && dot(a, b) > 0.0; }
+
 /// Node i starts segment i: a cubic when node i has an out-handle and node i + 1 an in-handle,
 /// else a line. A closed contour's last segment returns to node 0.
 Contour to_contour(const std::vector<OutlineNode>& nodes, bool closed);
