@@ -1,7 +1,8 @@
 // Positions on a normalised log-aesthetic curve: C(θ) = ∫_0^θ e^{iψ} ρ(ψ) dψ (lac-math.md
 // §1.2), by the method of §8.2: Gauss–Legendre panels graded toward the singular angle ψ*,
 // and the exact power series on a panel that touches it. About 1e-14 of the arc length
-// everywhere, with 12–36 integrand evaluations for ordinary segments.
+// everywhere, with 12–36 integrand evaluations for ordinary segments and 4 or 6 for the short
+// steps between a segment's samples.
 #pragma once
 
 #include <complex>

@@ -37,6 +37,8 @@ class LogAestheticSegment {
   double scale() const { return std::abs(z_); }
   bool mirrored() const { return mirrored_; }
   bool reversed() const { return reversed_; }
+  /// ln(κ(θ_d)/κ(0)) of the standard curve, ≤ 0 (−∞ for an inflection end).
+  double log_end_ratio() const { return log_end_ratio_; }
 
   double length() const;
   /// The user's P0 and P2 with their exact values.

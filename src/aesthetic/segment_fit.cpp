@@ -92,7 +92,7 @@ double drawable_limit(double alpha, double theta_d) {
   return std::arg(limit);
 }
 
-SegmentFit fit_three_point(Vec2 p0, Vec2 p1, Vec2 p2, double alpha) {
+SegmentFit fit_three_point(Vec2 p0, Vec2 p1, Vec2 p2, double alpha, std::optional<double> near_log_end_ratio) {
   SegmentFit fit;
   if (!std::isfinite(alpha)) {
     fit.reason = "α is not a finite number";
@@ -126,10 +126,30 @@ SegmentFit fit_three_point(Vec2 p0, Vec2 p1, Vec2 p2, double alpha) {
     // would leave the range of double.
     // (Also keeps δ_end^{p+1}, the size of the integral, finite: |(1−α)(p+1)| = |α|.)
     const double x_min = -700.0 / std::max({std::abs(1.0 - alpha), std::abs(alpha), 1.0});
-    double lo = -1.0, hi = 0.0, f_lo = excess(lo), f_hi = target - 0.5 * td;  // E(0) = θ_d/2: the arc
+    const double f_arc = target - 0.5 * td;  // E(0) = θ_d/2: the arc
+    // The excess rises with x. A bracket grown from [−1, 0], or outwards from a nearby fit's x
+    // in steps from a millionth of it (the G2 solve's finite differences move x by about that).
+    const bool near = near_log_end_ratio && *near_log_end_ratio < 0.0 && *near_log_end_ratio > x_min;
+    double lo = near ? *near_log_end_ratio : -1.0, hi = 0.0, f_lo = excess(lo), f_hi = f_arc;
+    double step = near ? 1e-6 * std::max(1.0, -lo) : 0.0;
+    if (near && f_lo > 0.0) {
+      hi = lo, f_hi = f_lo;
+      lo = std::max(hi - step, x_min), f_lo = excess(lo);
+    } else if (near && f_lo < 0.0) {
+      while (true) {
+        const double up = std::min(lo + step, 0.0);
+        const double f_up = up == 0.0 ? f_arc : excess(up);
+        if (f_up >= 0.0) {
+          hi = up, f_hi = f_up;
+          break;
+        }
+        lo = up, f_lo = f_up, step *= 8.0;
+      }
+    }
     while (f_lo > 0.0) {
       hi = lo, f_hi = f_lo;
-      lo = std::max(2.0 * lo, x_min);
+      step = near ? step * 8.0 : -lo;
+      lo = std::max(lo - step, x_min);
       if (hi == x_min) {
         fit.reason = "too close to the edge of α's drawable region: the end curvature ratio would be below 1e-300";
         return fit;

@@ -20,7 +20,11 @@ struct SegmentFit {
 /// The LAC segment of slope α from P0 to P2, tangent to P0P1 at P0 and to P1P2 at P2. No
 /// solution when the triangle is degenerate, turns by π or more, lies outside α's drawable
 /// region (§2.2), or is so close to its edge that the end curvature ratio falls below 1e-300.
-SegmentFit fit_three_point(Vec2 p0, Vec2 p1, Vec2 p2, double alpha);
+/// `near_log_end_ratio`: that of a fit to nearly the same points (LogAestheticSegment::
+/// log_end_ratio), where the search for this one starts; the answer does not depend on it
+/// beyond the solve's accuracy.
+SegmentFit fit_three_point(Vec2 p0, Vec2 p1, Vec2 p2, double alpha,
+                           std::optional<double> near_log_end_ratio = std::nullopt);
 
 /// The LAC segment with κ = 0 at P0 (an inflection) through P2 with the same tangents; α < 0
 /// is solved so that all match. Needs |P0P1| > |P1P2| (the angle at P0 below half the turning).

@@ -12,7 +12,7 @@ namespace detail {
 
 template <typename Curve>
 std::complex<double> gauss_legendre_12_in_s(const Curve& curve, double a, double b) {
-  return gauss_legendre_12([&](double s) { return std::polar(1.0, curve.theta(s)); }, a, b);
+  return gauss_legendre([&](double s) { return std::polar(1.0, curve.theta(s)); }, a, b);
 }
 
 template <typename Curve>

@@ -42,9 +42,11 @@ struct AroundJunction {
   std::size_t before, after;  ///< segment indices
   LogAestheticSegment into, out_of;
 };
-std::optional<AroundJunction> segments_around(const LacChain& chain, std::size_t j) {
+std::optional<AroundJunction> segments_around(const LacChain& chain, std::size_t j,
+                                              std::span<const LogAestheticSegment> near = {}) {
   const std::size_t n = chain.segment_count(), before = (j + n - 1) % n, after = j % n;
-  SegmentFit a = build_chain_segment(chain, before), b = build_chain_segment(chain, after);
+  SegmentFit a = build_chain_segment(chain, before, near.empty() ? nullptr : &near[before]);
+  SegmentFit b = build_chain_segment(chain, after, near.empty() ? nullptr : &near[after]);
   if (!a.ok() || !b.ok()) return std::nullopt;
   return AroundJunction{before, after, std::move(*a.segment), std::move(*b.segment)};
 }
@@ -114,7 +116,7 @@ bool tangents_meet_in_front(const LacChain& chain, std::size_t i) {
       .has_value();
 }
 
-SegmentFit build_chain_segment(const LacChain& chain, std::size_t i) {
+SegmentFit build_chain_segment(const LacChain& chain, std::size_t i, const LogAestheticSegment* near) {
   const std::size_t n = chain.points.size();
   const std::size_t j = (i + 1) % n;
   const Vec2 q0 = chain.points[i], q1 = chain.points[j];
@@ -128,7 +130,8 @@ SegmentFit build_chain_segment(const LacChain& chain, std::size_t i) {
     if (fit.ok()) fit.segment = fit.segment->reversed_direction();
     return fit;
   }
-  SegmentFit fit = fit_three_point(q0, *p1, q1, chain.alphas[i]);
+  SegmentFit fit = fit_three_point(q0, *p1, q1, chain.alphas[i],
+                                   near ? std::optional<double>(near->log_end_ratio()) : std::nullopt);
   // Near the edge of the drawable region one end's curvature runs off towards 0 or ∞: a
   // segment no glyph wants, and one that is slow and ill-conditioned to evaluate.
   if (fit.ok()) {
@@ -139,12 +142,12 @@ SegmentFit build_chain_segment(const LacChain& chain, std::size_t i) {
   return fit;
 }
 
-ChainSegments build_chain(const LacChain& chain) {
+ChainSegments build_chain(const LacChain& chain, std::span<const LogAestheticSegment> near) {
   ChainSegments out;
   const std::size_t count = chain.segment_count();
   out.segments.reserve(count);
   for (std::size_t i = 0; i < count; ++i) {
-    SegmentFit fit = build_chain_segment(chain, i);
+    SegmentFit fit = build_chain_segment(chain, i, near.empty() ? nullptr : &near[i]);
     if (!fit.ok()) {
       out.segments.clear();
       out.reason = "segment " + std::to_string(i) + ": " + fit.reason;
@@ -186,7 +189,7 @@ G2Result make_g2(LacChain chain, G2Tolerance tolerance_spec, int max_iterations)
       const std::size_t j = first + static_cast<std::size_t>(c);
       LacChain moved = chain;
       moved.tangent_angles[j] += h;
-      std::optional<AroundJunction> around = segments_around(moved, j);
+      std::optional<AroundJunction> around = segments_around(moved, j, built.segments);
       if (!around) {
         result.reason = "junction " + std::to_string(j) + " sits at the edge of its feasible range";
         break;

@@ -1,6 +1,7 @@
 #include "geom/polyline_distance.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -56,7 +57,13 @@ double directed_hausdorff(std::span<const Vec2> from, std::span<const Vec2> to_p
   // direction stops where the box of every segment left that way is no nearer than the
   // nearest found. Pieces between extrema run monotone in x and y, where those boxes are tight.
   const std::size_t segments = to_polyline.size() - 1;
-  std::vector<Box> before(segments), after(segments);  // segments 0..i and i..end
+  // Boxes of segments 0..i and i..end; on the stack for the short polylines of the rounding's
+  // cubic checks (three calls per candidate), where two heap blocks cost as much as the search.
+  constexpr std::size_t on_stack = 32;
+  std::array<Box, 2 * on_stack> stack_boxes;
+  std::vector<Box> heap_boxes(segments > on_stack ? 2 * segments : 0);
+  Box* const boxes = segments > on_stack ? heap_boxes.data() : stack_boxes.data();
+  const std::span<Box> before(boxes, segments), after(boxes + segments, segments);
   before[0] = Box::of(to_polyline[0], to_polyline[1]);
   for (std::size_t i = 1; i < segments; ++i) before[i] = before[i - 1].with(to_polyline[i + 1]);
   after[segments - 1] = Box::of(to_polyline[segments - 1], to_polyline[segments]);

@@ -41,6 +41,28 @@ TEST(ThreePoint, MatchesTheReferenceTable) {
   }
 }
 
+// A nearby fit's log end ratio only starts the search: from the fit itself, from one of
+// nearly the same triangle (the G2 solve's finite differences) and from those of other
+// triangles, the reference values are met as without it.
+TEST(ThreePoint, ANearbyFitOnlyStartsTheSearch) {
+  for (const Reference& r : triangle_table) {
+    const SegmentFit plain = fit_three_point(P0, P1, P2, r.alpha);
+    const SegmentFit nudged = fit_three_point(P0, P1 + Vec2{0.0, 1e-7}, P2, r.alpha);
+    // Its curvature falls more steeply (x of −2.6 for α = −2, against −0.89) and less so (−0.09).
+    const SegmentFit steeper = fit_three_point(P0, {0.9, 0.05}, P2, r.alpha);
+    const SegmentFit flatter = fit_three_point(P0, {1.2, -0.05}, P2, r.alpha);
+    ASSERT_TRUE(plain.ok() && nudged.ok() && steeper.ok() && flatter.ok()) << r.alpha;
+    for (const SegmentFit* near : {&plain, &nudged, &steeper, &flatter}) {
+      const SegmentFit fit = fit_three_point(P0, P1, P2, r.alpha, near->segment->log_end_ratio());
+      ASSERT_TRUE(fit.ok()) << r.alpha << ": " << fit.reason;
+      EXPECT_NEAR(fit.segment->lambda(), r.lambda, 1e-12 * r.lambda) << r.alpha;
+      EXPECT_NEAR(fit.segment->start().curvature, r.k0, 1e-12) << r.alpha;
+      EXPECT_NEAR(fit.segment->end().curvature, r.k2, 1e-12) << r.alpha;
+      EXPECT_NEAR(cross(fit.segment->end().tangent, Vec2{1, 0.8} / std::hypot(1.0, 0.8)), 0.0, 1e-14) << r.alpha;
+    }
+  }
+}
+
 TEST(ThreePoint, EndPointsAndTangentsAreMetToMachinePrecision) {
   for (const double alpha : {-2.0, -1.0, -0.5, 0.0, 0.5, 1.0, 1.5, 2.0, 3.0}) {
     for (const auto& [a, b, c] : {std::tuple{P0, P1, P2}, std::tuple{P2, P1, P0}, std::tuple{Vec2{0, 0}, Vec2{1, 0}, Vec2{2, -0.8}},
