@@ -18,6 +18,10 @@ inline Vec2 end_point(const Segment& s) {
 inline Vec2 point_at(const Segment& s, double t) {
   return std::visit([t](const auto& b) { return b.point_at(t); }, s);
 }
+/// C′(t), from the hodograph.
+inline Vec2 derivative_at(const Segment& s, double t) {
+  return std::visit([t](const auto& b) { return b.hodograph().point_at(t); }, s);
+}
 inline int degree_of(const Segment& s) {
   return std::visit([](const auto& b) { return b.degree; }, s);
 }
