@@ -29,6 +29,15 @@ TEST(ArcLength, CubicWithCuspConverges) {
   EXPECT_NEAR(arc_length(c, 0.0, 0.5).length, 0.5 * whole.length, 1e-11);
 }
 
+TEST(ArcLength, TheEstimateMeetsTheParabolaAndItsCubicElevation) {
+  const Quad parabola{{{0, 0}, {1, 0}, {2, 4}}};  // y = x², x ∈ [0, 2]; C′(t) = (2, 8t)
+  EXPECT_EQ(derivative_at(parabola, 0.25), (Vec2{2, 2}));
+  EXPECT_EQ(derivative_at(to_cubic(parabola), 0.25), (Vec2{2, 2}));
+  EXPECT_NEAR(arc_length_estimate(parabola), parabola_length(2.0), 1e-7 * parabola_length(2.0));
+  EXPECT_NEAR(arc_length_estimate(to_cubic(parabola), 0.0, 0.5), parabola_length(1.0), 1e-7);
+  EXPECT_DOUBLE_EQ(arc_length_estimate(Line{{{0, 0}, {3, 4}}}, 0.0, 0.5), 2.5);
+}
+
 TEST(ArcLength, QuadraticAndItsCubicElevationAgree) {
   const Quad q{{{0, 0}, {50, 120}, {200, 10}}};
   EXPECT_NEAR(arc_length(q).length, arc_length(to_cubic(q)).length, 1e-10);
