@@ -59,8 +59,9 @@ CurvatureShape curvature_shape(const Cubic& c, double hysteresis) {
   CurvatureShape shape;
   double previous = 0.0, last_signed = 0.0;
   TurnCounter whole;
+  const CurvatureAlong along(c);
   for (int k = 0; k <= 32; ++k) {
-    const double kappa = curvature(derivatives_at(c, k / 32.0)).value_or(0.0);
+    const double kappa = along.at(k / 32.0).value_or(0.0);
     whole.add(kappa, hysteresis);
     if (k <= 16) shape.head[static_cast<std::size_t>(k)] = kappa;
     if (k >= 16) shape.tail.add(kappa, hysteresis);

@@ -23,6 +23,18 @@ std::optional<double> curvature(const Derivatives& d);
 /// dκ/ds; nullopt where the speed vanishes.
 std::optional<double> curvature_derivative(const Derivatives& d);
 
+/// κ at many parameters of one cubic: curvature(derivatives_at(c, t)), its hodographs made
+/// once (the rounding measures every candidate cubic at 33 places).
+class CurvatureAlong {
+ public:
+  explicit CurvatureAlong(const Cubic& c) : d1_(c.hodograph()), d2_(d1_.hodograph()) {}
+  std::optional<double> at(double t) const { return curvature(Derivatives{{}, d1_.point_at(t), d2_.point_at(t), {}}); }
+
+ private:
+  Quad d1_;
+  Line d2_;
+};
+
 enum class SegmentEnd { start, end };
 
 /// Unit tangent in the direction of travel at an end. A retracted handle (coincident control
