@@ -20,6 +20,18 @@ TEST(Curvature, ParabolaMatchesClosedForm) {
   }
 }
 
+// The same parabola raised to a cubic, κ many times along it from its hodographs made once.
+TEST(Curvature, AlongACubicMatchesTheClosedFormAndEachPlaceAlone) {
+  const Cubic parabola = to_cubic(Quad{{{0, 0}, {0.5, 0}, {1, 1}}});
+  const CurvatureAlong along(parabola);
+  for (const double t : {0.0, 0.1, 0.5, 0.77, 1.0}) {
+    const double x = parabola.point_at(t).x;
+    EXPECT_NEAR(*along.at(t), 2.0 / std::pow(1 + 4 * x * x, 1.5), 1e-14);
+    EXPECT_EQ(along.at(t), curvature(derivatives_at(parabola, t)));
+  }
+  EXPECT_FALSE(CurvatureAlong(Cubic{{{0, 0}, {0, 0}, {1, 1}, {2, 0}}}).at(0.0).has_value());  // retracted handle
+}
+
 TEST(Curvature, SignFollowsTheTurn) {
   const Quad left{{{0, 0}, {1, 0}, {1, 1}}};
   const Quad right{{{0, 0}, {1, 0}, {1, -1}}};
