@@ -46,7 +46,8 @@ struct Box {
 
 double directed_hausdorff(std::span<const Vec2> from, std::span<const Vec2> to_polyline, double stop_above) {
   const double stop2 = stop_above * stop_above;
-  if (to_polyline.size() < 2) {
+  // A lone point (or polyline): every segment, without the boxes a search needs.
+  if (to_polyline.size() < 2 || from.size() == 1) {
     double worst = 0.0;
     for (const Vec2 p : from) worst = std::max(worst, squared_distance_to_polyline(p, to_polyline));
     return std::sqrt(worst);

@@ -46,6 +46,9 @@ TEST(PolylineDistance, EarlyExitAndGridMatchTheDefinition) {
     const double exact = test::directed_to_polyline(a, b);
     EXPECT_NEAR(directed_hausdorff(a, b), exact, 1e-12 * (1.0 + exact));
     EXPECT_NEAR(directed_hausdorff(a, PolylineGrid(b, 4.0)), exact, 1e-12 * (1.0 + exact));
+    // One point alone takes every segment without the search's boxes: the same distance.
+    const std::vector<Vec2> middle{a[a.size() / 2]};
+    EXPECT_NEAR(directed_hausdorff(middle, b), test::directed_to_polyline(middle, b), 1e-12 * (1.0 + exact));
   }
 }
 
