@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 
 #include <Eigen/Dense>
 #include <boost/math/tools/toms748_solve.hpp>
@@ -37,7 +38,7 @@ double max_abs(const std::vector<double>& v) {
 }
 
 // The two segments either side of junction j (turning φ_j moves only them); nullopt where one
-// does not exist.
+// does not exist. `near`, when given, the chain's segments before φ_j moved by a little.
 struct AroundJunction {
   std::size_t before, after;  ///< segment indices
   LogAestheticSegment into, out_of;
@@ -45,8 +46,11 @@ struct AroundJunction {
 std::optional<AroundJunction> segments_around(const LacChain& chain, std::size_t j,
                                               std::span<const LogAestheticSegment> near = {}) {
   const std::size_t n = chain.segment_count(), before = (j + n - 1) % n, after = j % n;
-  SegmentFit a = build_chain_segment(chain, before, near.empty() ? nullptr : &near[before]);
-  SegmentFit b = build_chain_segment(chain, after, near.empty() ? nullptr : &near[after]);
+  const auto near_ratio = [&](std::size_t k) {
+    return near.empty() ? std::nullopt : std::optional<double>(near[k].log_end_ratio());
+  };
+  SegmentFit a = build_chain_segment(chain, before, near_ratio(before));
+  SegmentFit b = build_chain_segment(chain, after, near_ratio(after));
   if (!a.ok() || !b.ok()) return std::nullopt;
   return AroundJunction{before, after, std::move(*a.segment), std::move(*b.segment)};
 }
@@ -116,7 +120,7 @@ bool tangents_meet_in_front(const LacChain& chain, std::size_t i) {
       .has_value();
 }
 
-SegmentFit build_chain_segment(const LacChain& chain, std::size_t i, const LogAestheticSegment* near) {
+SegmentFit build_chain_segment(const LacChain& chain, std::size_t i, std::optional<double> near_log_end_ratio) {
   const std::size_t n = chain.points.size();
   const std::size_t j = (i + 1) % n;
   const Vec2 q0 = chain.points[i], q1 = chain.points[j];
@@ -130,8 +134,7 @@ SegmentFit build_chain_segment(const LacChain& chain, std::size_t i, const LogAe
     if (fit.ok()) fit.segment = fit.segment->reversed_direction();
     return fit;
   }
-  SegmentFit fit = fit_three_point(q0, *p1, q1, chain.alphas[i],
-                                   near ? std::optional<double>(near->log_end_ratio()) : std::nullopt);
+  SegmentFit fit = fit_three_point(q0, *p1, q1, chain.alphas[i], near_log_end_ratio);
   // Near the edge of the drawable region one end's curvature runs off towards 0 or ∞: a
   // segment no glyph wants, and one that is slow and ill-conditioned to evaluate.
   if (fit.ok()) {
@@ -142,12 +145,12 @@ SegmentFit build_chain_segment(const LacChain& chain, std::size_t i, const LogAe
   return fit;
 }
 
-ChainSegments build_chain(const LacChain& chain, std::span<const LogAestheticSegment> near) {
+ChainSegments build_chain(const LacChain& chain) {
   ChainSegments out;
   const std::size_t count = chain.segment_count();
   out.segments.reserve(count);
   for (std::size_t i = 0; i < count; ++i) {
-    SegmentFit fit = build_chain_segment(chain, i, near.empty() ? nullptr : &near[i]);
+    SegmentFit fit = build_chain_segment(chain, i);
     if (!fit.ok()) {
       out.segments.clear();
       out.reason = "segment " + std::to_string(i) + ": " + fit.reason;

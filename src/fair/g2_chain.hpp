@@ -9,7 +9,6 @@
 #pragma once
 
 #include <optional>
-#include <span>
 #include <string>
 #include <vector>
 
@@ -42,12 +41,12 @@ struct ChainSegments {
 /// Whether segment i's end tangents meet in front of both its ends (its control triangle exists).
 bool tangents_meet_in_front(const LacChain& chain, std::size_t i);
 
-/// Segment i of the chain alone. `near`: a fit to nearly the same points, where the solve
-/// starts (fit_three_point's `near_log_end_ratio`).
-SegmentFit build_chain_segment(const LacChain& chain, std::size_t i, const LogAestheticSegment* near = nullptr);
+/// Segment i of the chain alone; `near_log_end_ratio` as fit_three_point's (that of the
+/// segment's fit to nearly the same points, where the solve starts).
+SegmentFit build_chain_segment(const LacChain& chain, std::size_t i,
+                               std::optional<double> near_log_end_ratio = std::nullopt);
 
-/// Every segment of the chain; `near`, when not empty, the segments of a chain nearly the same.
-ChainSegments build_chain(const LacChain& chain, std::span<const LogAestheticSegment> near = {});
+ChainSegments build_chain(const LacChain& chain);
 
 /// D_j at the free junctions, in the order of LacChain::first_free_junction().
 std::vector<double> curvature_mismatch(const LacChain& chain, const std::vector<LogAestheticSegment>& segments);

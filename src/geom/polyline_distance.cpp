@@ -59,7 +59,7 @@ double directed_hausdorff(std::span<const Vec2> from, std::span<const Vec2> to_p
   // nearest found. Pieces between extrema run monotone in x and y, where those boxes are tight.
   const std::size_t segments = to_polyline.size() - 1;
   // Boxes of segments 0..i and i..end; on the stack for the short polylines of the rounding's
-  // cubic checks (three calls per candidate), where two heap blocks cost as much as the search.
+  // cubic checks (two calls per candidate), where two heap blocks cost as much as the search.
   constexpr std::size_t on_stack = 32;
   std::array<Box, 2 * on_stack> stack_boxes;
   std::vector<Box> heap_boxes(segments > on_stack ? 2 * segments : 0);
