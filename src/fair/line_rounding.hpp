@@ -35,7 +35,9 @@ namespace gf {
 /// what the line has left of the tolerance (`limits.allowance_at`) of it, both ways where it
 /// slid back past its handle. Ends slide
 /// where a handle on a line of long step strays (moves by more than a quarter of its length
-/// and its curve's allowance) or reaches past three quarters of its curve's chord.
+/// and its curve's allowance) or reaches past three quarters of its curve's chord. An end not
+/// slid goes to its nearest grid point or a neighbour of it: any neighbour, or with
+/// `limits.any_grid_neighbour` false only those within its allowance.
 void place_lines_on_grid(const std::vector<OutlineNode>& exact, std::vector<OutlineNode>& rounded,
                          std::vector<std::optional<Vec2>>& steps, bool closed, const HandleStepLimits& limits);
 
