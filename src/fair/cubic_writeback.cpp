@@ -122,11 +122,13 @@ class ChainPath {
   const PathPiece& piece(std::size_t i) const { return pieces_[i]; }
 
   /// At a junction both sides agree: point and tangent (G1), curvature by with_mean_curvature.
-  /// An open chain's end whose tangent was turned (turn_end) has that tangent.
+  /// An open chain's end whose tangent was turned (turn_end) has that tangent and κ = 0: it is
+  /// a corner, which no G2 binds, and the path's own κ with the turned tangent left no cubic
+  /// that fitted (Kristi's H: seven cubics for an 84-unit span within a budget of 7 units).
   LacPoint at(double sigma) const {
     LacPoint p = along(sigma);
     const std::optional<Vec2>& turned = sigma <= 0.0 ? start_tangent_ : end_tangent_;
-    if (!closed_ && (sigma <= 0.0 || sigma >= total_) && turned) p.tangent = *turned;
+    if (!closed_ && (sigma <= 0.0 || sigma >= total_) && turned) p.tangent = *turned, p.curvature = 0.0;
     return p;
   }
 

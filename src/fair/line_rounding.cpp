@@ -346,8 +346,18 @@ class RunPlacement {
     for (std::size_t t = 0; t < run_.size(); ++t) {
       const LineOnGrid& l = run_[t];
       const LinePlacement& p = placed_[t];
-      rounded[l.i].point = place(t).point;
-      rounded[l.j].point = place(t + 1).point;
+      // A corner with an extremum on it (cubic_writeback's snap: its curve's handle along an
+      // axis) moves its handles with it, so the extremum stays on the node.
+      const auto move_node = [&](std::size_t k, Vec2 to) {
+        const Vec2 by = to - rounded[k].point;
+        if (!exact_[k].smooth && exact_[k].grid_step) {
+          if (rounded[k].in_handle) *rounded[k].in_handle = *rounded[k].in_handle + by;
+          if (rounded[k].out_handle) *rounded[k].out_handle = *rounded[k].out_handle + by;
+        }
+        rounded[k].point = to;
+      };
+      move_node(l.i, place(t).point);
+      move_node(l.j, place(t + 1).point);
       if (p.in_handle) rounded[l.i].in_handle = p.in_handle, steps[l.i] = p.step;
       if (p.out_handle) rounded[l.j].out_handle = p.out_handle, steps[l.j] = p.step;
     }

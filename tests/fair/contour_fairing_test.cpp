@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 
+#include "check/contour_checks.hpp"
 #include "fair/contour_plan.hpp"
 #include "fair/cubic_change.hpp"
 #include "geom/curvature.hpp"
@@ -598,6 +599,64 @@ TEST(ContourFairing, ARunNoChainFairsIsKeptAsDrawnAndTheRestFaired) {
     if (is_line(s) || std::find(std::begin(cap), std::end(cap), s) != std::end(cap)) continue;
     EXPECT_EQ(std::find(t.segments.begin(), t.segments.end(), s), t.segments.end()) << "a source curve left unfaired";
   }
+}
+
+// Kristi's H (Birgit Pulk, OFL; Debian fonts-kristi; UPM 2048, handwriting, tolerance 24.6):
+// two stroke ends where a curve turns down to a vertical extremum a few units above a corner
+// that leaves it 6° off the vertical. The extremum's node and the corner are 10 units apart:
+// whole grid steps could only make the cubic between them straight, against the curvature of
+// the curve above (κ·UPM −24 and −45 into 0: two g2-jumps). The corner now takes the extremum
+// (cubic_writeback's snap) with the curve arriving straight, κ = 0, as it may at a corner, where
+// it had to keep the path's κ and no span fitted; the corner's handle then moves with the
+// corner where rounding moves it along its line, so the extremum stays on the node (Because We
+// Learn's M had a missing extremum without that).
+TEST(ContourFairing, AnExtremumBesideAStrokeEndsCornerIsTheCorner) {
+  using P = Vec2;
+  const auto l = [](P a, P b) { return Segment{Line{{a, b}}}; };
+  const auto q = [](P a, P b, P c) { return Segment{Quad{{a, b, c}}}; };
+  Contour h;
+  h.segments = {
+      l({803, 1208}, {669, 684}), l({669, 684}, {718, 684}),
+      q({718, 684}, {753, 685}, {771, 685}), q({771, 685}, {794, 685}, {805, 636}),
+      q({805, 636}, {807, 624}, {807, 616}), q({807, 616}, {806, 594}, {756, 593.5}),
+      q({756, 593.5}, {706, 593}, {643, 589}), l({643, 589}, {601, 435}),
+      q({601, 435}, {511, 122}, {511.5, -83.5}), q({511.5, -83.5}, {512, -289}, {599, -366}),
+      q({599, -366}, {616, -378}, {617, -386}), q({617, -386}, {615, -396}, {600, -396.5}),
+      q({600, -396.5}, {585, -397}, {569, -387}), q({569, -387}, {483, -340}, {441, -186}),
+      q({441, -186}, {420, -108}, {420, -37}), q({420, -37}, {420, 147}, {507, 485}),
+      l({507, 485}, {531, 580}), l({531, 580}, {367, 562}),
+      q({367, 562}, {248, 86}, {221, 19}), q({221, 19}, {194, -48}, {170, -92}),
+      q({170, -92}, {146, -136}, {91.5, -184}), q({91.5, -184}, {37, -232}, {13, -231}),
+      q({13, -231}, {-11, -230}, {-12, -221}), q({-12, -221}, {-12, -212}, {0, -194}),
+      q({0, -194}, {134, 10}, {217, 392}), l({217, 392}, {257, 555}),
+      l({257, 555}, {254, 555}), q({254, 555}, {48, 555}, {14.5, 561}),
+      q({14.5, 561}, {-19, 567}, {-31, 586.5}), q({-31, 586.5}, {-43, 606}, {-44, 619}),
+      q({-44, 619}, {-44, 634}, {-25, 637}), q({-25, 637}, {-22, 637}, {-21, 638}),
+      l({-21, 638}, {284, 665}), l({284, 665}, {385, 1075}),
+      q({385, 1075}, {389, 1090}, {395.5, 1124}), q({395.5, 1124}, {402, 1158}, {417, 1170}),
+      q({417, 1170}, {432, 1182}, {481, 1182}), q({481, 1182}, {510, 1180}, {511, 1155}),
+      q({511, 1155}, {511, 1144}, {510, 1138}), l({510, 1138}, {394, 673}),
+      q({394, 673}, {506, 679}, {558, 681}), l({558, 681}, {678, 1146}),
+      q({678, 1146}, {682, 1161}, {687.5, 1195.5}), q({687.5, 1195.5}, {693, 1230}, {708.5, 1241.5}),
+      q({708.5, 1241.5}, {724, 1253}, {774, 1253}), q({774, 1253}, {803, 1251}, {804, 1224}),
+      q({804, 1224}, {804, 1214}, {803, 1208})};
+  h.nodes.assign(h.segments.size(), NodeFlags{});
+  const double upm = 2048.0;
+  const FairSettings settings = resolve_settings(options_for(FairProfile::handwriting, Rounding::integers), upm);
+  const ContourFairing r = fair_contour(h, settings);
+  ASSERT_TRUE(r.faired) << r.reason;
+  EXPECT_FALSE(has_fraction(Outline{{r.contour}}));
+  EXPECT_LE(brute_force_hausdorff(h, r.contour), settings.tolerance_units);
+  EXPECT_EQ(g2_jumps(Outline{{r.contour}}, upm), 0);
+
+  // Because We Learn's M: rounding slides the corner at the foot of its left stroke 2 units
+  // along the stem; its handle, left behind, put the extremum back inside the cubic.
+  const FairedGlyph m = fair_named(test::because_we_learn, "M", options_for(FairProfile::handwriting, Rounding::integers));
+  ASSERT_TRUE(m.result.kept.empty()) << m.result.kept.front();
+  FontInfo font;
+  font.units_per_em = m.upm;
+  const GlyphReport report = check_glyph(m.result.glyph, font, *check_profile("handwriting"));
+  for (const Finding& f : report.findings) EXPECT_NE(f.check, "missing-extremum") << f.message;
 }
 
 // A text run whose G2 solve stalls is tried on its smoothing guide before its chain is kept
