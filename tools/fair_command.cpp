@@ -82,25 +82,22 @@ int FairCommand::run() const {
 
   std::optional<FairedSegmentsOutput> segments;
   if (!segments_.empty()) segments.emplace(name, settings, font.units_per_em);
-  std::size_t glyphs_faired = 0, contours_kept = 0, runs_as_drawn = 0, g1_nodes = 0, guide_stretches = 0, g3_runs = 0, g2_runs = 0,
-              g2_line_joins = 0;
+  std::size_t glyphs_faired = 0, contours_kept = 0, runs_as_drawn = 0, g1_nodes = 0, guide_stretches = 0, g3_runs = 0,
+              g2_runs = 0, g2_line_joins = 0;
   double deviation = 0.0, mismatch = 0.0;
   stream_glyphs<GlyphFairing>(
       source, chunk_size, progress, name, [&](const Glyph& g) { return fair_glyph(g, settings); },
       [&](Glyph& original, GlyphFairing& r) {
-        for (const std::string& why : r.kept) {
-          progress.clear();
-          std::cerr << "glyphfair: warning: " << name << ": glyph '" << r.glyph.name << "': " << why << " (kept unfaired)\n";
-        }
-        for (const std::string& why : r.runs_as_drawn) {
-          progress.clear();
-          std::cerr << "glyphfair: warning: " << name << ": glyph '" << r.glyph.name << "': " << why
-                    << " (the rest of the contour faired)\n";
-        }
-        for (const std::string& why : r.g3_shortfalls) {
-          progress.clear();
-          std::cerr << "glyphfair: note: " << name << ": glyph '" << r.glyph.name << "': " << why << " (kept G2)\n";
-        }
+        const auto tell = [&](const char* level, const std::vector<std::string>& whys, const char* outcome) {
+          for (const std::string& why : whys) {
+            progress.clear();
+            std::cerr << "glyphfair: " << level << ": " << name << ": glyph '" << r.glyph.name << "': " << why << " ("
+                      << outcome << ")\n";
+          }
+        };
+        tell("warning", r.kept, "kept unfaired");
+        tell("warning", r.runs_as_drawn, "the rest of the contour faired");
+        tell("note", r.g3_shortfalls, "kept G2");
         g3_runs += static_cast<std::size_t>(r.g3_runs);
         g2_line_joins += static_cast<std::size_t>(r.g2_line_joins);
         g2_runs += r.g3_shortfalls.size();
@@ -129,8 +126,8 @@ int FairCommand::run() const {
   }
   std::cerr << "glyphfair: " << name << ": " << glyphs_faired << " glyphs faired, " << contours_kept
             << " contours kept as they were, " << runs_as_drawn
-            << " runs kept as drawn in contours faired otherwise; largest distance from the source " << deviation << " units (tolerance "
-            << settings.tolerance_units << "); largest relative curvature mismatch left by a chain solve " << mismatch
+            << " runs kept as drawn in contours faired otherwise; largest distance from the source " << deviation
+            << " units (tolerance " << settings.tolerance_units << "); largest relative curvature mismatch left by a chain solve " << mismatch
             << "; " << g1_nodes << " smooth nodes G1 only; " << guide_stretches
             << " spans written from the smoothing guide (no G2 log-aesthetic chain within the budget)";
   if (settings.continuity == Continuity::g3)

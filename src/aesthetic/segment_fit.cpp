@@ -148,8 +148,8 @@ SegmentFit fit_three_point(Vec2 p0, Vec2 p1, Vec2 p2, double alpha, std::optiona
     }
     while (f_lo > 0.0) {
       hi = lo, f_hi = f_lo;
-      step = near ? step * 8.0 : -lo;
-      lo = std::max(lo - step, x_min);
+      if (near) step *= 8.0;
+      lo = std::max(near ? lo - step : 2.0 * lo, x_min);
       if (hi == x_min) {
         fit.reason = "too close to the edge of α's drawable region: the end curvature ratio would be below 1e-300";
         return fit;

@@ -29,11 +29,11 @@ constexpr int rounding_retries = 3;  // on half the allowance each, when roundin
 // Cubics shorter than this (units) are merged away before rounding (outline_nodes): 2 took
 // Because We Create's missing extrema 9 → 6, 3 to 12.
 constexpr double tiny_cubic_chord = 2.0;
-// The shortest span the cubic writeback halves, units: rounded, cubics of two to four units
-// land on a few grid points whose whole steps cannot set their curvature (Breip's W and E,
-// Because We Create's d, t and X kept jumps there; halving from eight units leaves no cubic
-// under four).
-constexpr double shortest_rounded_span = 8.0, shortest_span = 4.0;
+// The shortest span the cubic writeback halves when the outline is rounded, units (else
+// shortest_span_units): cubics of two to four units land on a few grid points whose whole
+// steps cannot set their curvature (Breip's W and E, Because We Create's d, t and X kept jumps
+// there; halving from eight units leaves no cubic under four).
+constexpr double shortest_rounded_span = 8.0;
 
 // Points along a contour, dense enough that chords stay within a small fraction of a unit of
 // the curve for glyph-sized curvature, and for each the segment whose stretch of polyline (to
@@ -271,7 +271,7 @@ Attempt fair_with_budgets(const ContourPlan& plan, const FairSettings& settings,
                            k + 1 == faired.chains.size() && !run.closed && run.end.kind == RunEndKind::corner};
       ChainCubics cubics = write_chain_as_cubics(chain, budgets.cubic, settings.flat_curvature, ends,
                                                  settings.rounding == Rounding::integers ? shortest_rounded_span
-                                                                                         : shortest_span);
+                                                                                         : shortest_span_units);
       a.g1_nodes += cubics.g1_fallbacks;
       const bool join_smooth = k > 0 || start_smooth || previous_ends_smooth;
       record_chain(chain, chain.closed || join_smooth, a.pieces);

@@ -27,10 +27,13 @@ struct ChainEnds {
   bool start_corner = false, end_corner = false;
 };
 
+/// A span shorter than this (units) is one cubic, within the budget or not: halves of it would
+/// round onto the same few grid points.
+inline constexpr double shortest_span_units = 4.0;
+
 /// `flat_curvature`: below it a node's curvature counts as zero (a line join), not as a
-/// curvature the grid must set finely. `shortest_span_units`: a span shorter than this is one
-/// cubic, within the budget or not.
+/// curvature the grid must set finely. `shortest_span`: as shortest_span_units, for this call.
 ChainCubics write_chain_as_cubics(const FairedChain& chain, double budget_units, double flat_curvature,
-                                  ChainEnds ends = {}, double shortest_span_units = 4.0);
+                                  ChainEnds ends = {}, double shortest_span = shortest_span_units);
 
 }  // namespace gf

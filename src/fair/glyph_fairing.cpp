@@ -12,6 +12,7 @@ GlyphFairing fair_glyph(const Glyph& source, const FairSettings& requested) {
   out.glyph.outline.contours.clear();
   for (std::size_t i = 0; i < source.outline.contours.size(); ++i) {
     ContourFairing c = fair_contour(source.outline.contours[i], settings);
+    const std::string contour = "contour " + std::to_string(i) + ": ";
     if (c.faired) {
       ++out.contours_faired;
       out.deviation = std::max(out.deviation, c.deviation);
@@ -20,10 +21,10 @@ GlyphFairing fair_glyph(const Glyph& source, const FairSettings& requested) {
       out.guide_stretches += c.guide_stretches;
       out.g3_runs += c.g3_runs;
       out.g2_line_joins += c.g2_line_joins;
-      for (const std::string& why : c.g3_shortfalls) out.g3_shortfalls.push_back("contour " + std::to_string(i) + ": " + why);
-      for (const std::string& why : c.runs_as_drawn) out.runs_as_drawn.push_back("contour " + std::to_string(i) + ": " + why);
+      for (const std::string& why : c.g3_shortfalls) out.g3_shortfalls.push_back(contour + why);
+      for (const std::string& why : c.runs_as_drawn) out.runs_as_drawn.push_back(contour + why);
     } else {
-      out.kept.push_back("contour " + std::to_string(i) + ": " + c.reason);
+      out.kept.push_back(contour + c.reason);
     }
     out.glyph.outline.contours.push_back(std::move(c.contour));
     out.pieces.push_back(std::move(c.pieces));

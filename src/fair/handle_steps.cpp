@@ -901,10 +901,13 @@ void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<Outl
     for (std::size_t r = 0; r < runs.size(); ++r) again[r] = again[r] && still_jumps(runs[r]);
     if (std::none_of(again.begin(), again.end(), [](bool b) { return b; })) break;
   }
+  // A run is polished while it jumps or turns so (with polish_lone_jumps, one jump at most).
+  const auto wants_polish = [&](std::span<const std::size_t> run) {
+    const int jumps = jumps_in(run);
+    return (jumps > 0 || turns_too_often_in(run)) && (!limits.polish_lone_jumps || jumps <= 1);
+  };
   for (std::size_t r = 0; r < runs.size(); ++r)
-    for (int k = 0; k < limits.polish_rounds && (still_jumps(runs[r]) || turns_too_often_in(runs[r])) &&
-                    (!limits.polish_lone_jumps || jumps_in(runs[r]) <= 1);
-         ++k)
+    for (int k = 0; k < limits.polish_rounds && wants_polish(runs[r]); ++k)
       if (!polish_jumping_run(nodes, ideal, steps, joins, runs[r], cycle, judge, limits.flat_curvature,
                               limits.polish_lone_jumps))
         break;

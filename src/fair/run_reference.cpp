@@ -12,7 +12,7 @@ namespace {
 Vec2 cubic_tangent(const Cubic& c, double t) {
   if (t == 0.0) return *end_tangent(c, SegmentEnd::start);
   if (t == 1.0) return *end_tangent(c, SegmentEnd::end);
-  const Vec2 d = c.hodograph().point_at(t);
+  const Vec2 d = derivative_at(c, t);
   const double n = norm(d);
   return n > 0.0 ? d / n : *end_tangent(c, t < 0.5 ? SegmentEnd::start : SegmentEnd::end);
 }
