@@ -25,6 +25,11 @@ constexpr double alpha_candidates[] = {-2.0, -1.5, -1.0, -0.5, 0.0, 0.5, 1.0, 1.
 constexpr int max_rounds = 10;
 constexpr int fallback_rounds = 4;  // a text run on its guide, after its own outline failed
 constexpr double max_relative_mismatch = 1e-9;  // |Δκ| / max|κ| the G2 solve must reach
+// A stalled chain is kept with its jumps only while none exceeds its largest |κ|: past that a
+// junction's two sides bend opposite ways or one twice the other, and the writeback's mean
+// curvature there became a knot of cubics a few units long (Lato's W, where a stem meets its
+// notch 2° off tangent: κ·UPM 4,000 and six inflections); the run is kept as drawn instead.
+constexpr double max_kept_mismatch = 1.0;
 constexpr int max_g3_rounds = 4;  // of cutting the segments whose G3 spirals stray
 constexpr int max_guide_refinements = 3;  // doublings of a smoothing guide's spans
 constexpr double transition_shift_share = 0.25;  // of the budget, spent where a κ = 0 end leaves its line earlier
@@ -439,7 +444,7 @@ ChainOutcome fair_chain(const ChainSpan& span, const RunReference& ref, PieceAlp
           g2 = std::move(again);
     mismatch = relative(g2);
     if (mismatch > max_relative_mismatch) {
-      if (accept_mismatch && !keep_stalled) return out;
+      if (accept_mismatch && (!keep_stalled || mismatch > max_kept_mismatch)) return out;
       if (!accept_mismatch) {
         // No G2 within reach of these junctions: more freedom next to the worst junction.
         const auto worst = std::max_element(g2.mismatches.begin(), g2.mismatches.end(),

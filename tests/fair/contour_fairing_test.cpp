@@ -659,6 +659,52 @@ TEST(ContourFairing, AnExtremumBesideAStrokeEndsCornerIsTheCorner) {
   for (const Finding& f : report.findings) EXPECT_NE(f.check, "missing-extremum") << f.message;
 }
 
+// Lato's W (Łukasz Dziedzic, OFL; Debian fonts-lato; UPM 2000, text): where each stem meets
+// the notch below it, the line runs 2° off the curve's tangent. No chain through the notch's
+// curve comes G2 from the line's κ = 0, and the stalled chain kept on the last try had κ of
+// opposite signs across its junctions; the writeback's mean curvature there turned it into
+// cubics a unit or two long, κ·UPM 4,000 against the source's 39. A stalled chain left with a
+// jump beyond its own largest |κ| is kept as drawn instead.
+TEST(ContourFairing, AStalledChainJumpingPastItsOwnCurvatureIsKeptAsDrawn) {
+  using P = Vec2;
+  const auto l = [](P a, P b) { return Segment{Line{{a, b}}}; };
+  const auto q = [](P a, P b, P c) { return Segment{Quad{{a, b, c}}}; };
+  Contour w;
+  w.segments = {
+      l({31, 1433}, {192, 1433}), q({192, 1433}, {218, 1433}, {235.5, 1420}),
+      q({235.5, 1420}, {253, 1407}, {258, 1387}), l({258, 1387}, {554, 391}),
+      q({554, 391}, {561, 364}, {567.5, 333}), q({567.5, 333}, {574, 302}, {580, 268}),
+      q({580, 268}, {587, 302}, {594.5, 333.5}), q({594.5, 333.5}, {602, 365}, {611, 391}),
+      l({611, 391}, {948, 1387}), q({948, 1387}, {954, 1404}, {971.5, 1418.5}),
+      q({971.5, 1418.5}, {989, 1433}, {1014, 1433}), l({1014, 1433}, {1070, 1433}),
+      q({1070, 1433}, {1096, 1433}, {1112, 1420}), q({1112, 1420}, {1128, 1407}, {1136, 1387}),
+      l({1136, 1387}, {1472, 391}), q({1472, 391}, {1481, 365}, {1488.5, 335}),
+      q({1488.5, 335}, {1496, 305}, {1502, 273}), q({1502, 273}, {1508, 305}, {1514, 335}),
+      q({1514, 335}, {1520, 365}, {1527, 391}), l({1527, 391}, {1824, 1387}),
+      q({1824, 1387}, {1829, 1405}, {1846.5, 1419}), q({1846.5, 1419}, {1864, 1433}, {1889, 1433}),
+      l({1889, 1433}, {2040, 1433}), l({2040, 1433}, {1593, 0}), l({1593, 0}, {1419, 0}),
+      l({1419, 0}, {1056, 1093}), q({1056, 1093}, {1045, 1124}, {1036, 1165}),
+      q({1036, 1165}, {1031, 1145}, {1026.5, 1126.5}), q({1026.5, 1126.5}, {1022, 1108}, {1017, 1093}),
+      l({1017, 1093}, {652, 0}), l({652, 0}, {478, 0}), l({478, 0}, {31, 1433})};
+  w.nodes.assign(w.segments.size(), NodeFlags{});
+  const double upm = 2000.0;
+  const FairSettings settings = resolve_settings(options_for(FairProfile::text, Rounding::integers), upm);
+  const ContourFairing r = fair_contour(w, settings);
+  ASSERT_TRUE(r.faired) << r.reason;
+  EXPECT_LE(brute_force_hausdorff(w, r.contour), settings.tolerance_units);
+  const auto sharpest = [upm](const Contour& c) {
+    double most = 0.0;
+    for (const Segment& s : c.segments)
+      for (int step = 0; step <= 64; ++step)
+        most = std::max(most, std::abs(curvature(derivatives_at(s, step / 64.0)).value_or(0.0)) * upm);
+    return most;
+  };
+  EXPECT_LE(sharpest(r.contour), 2.0 * sharpest(w));
+  EXPECT_LE(inflections(r.contour, upm), inflections(w, upm) + 1);
+  EXPECT_TRUE(std::any_of(r.pieces.begin(), r.pieces.end(),
+                          [](const FairedPiece& p) { return p.kind == FairedPieceKind::as_drawn; }));
+}
+
 // A text run whose G2 solve stalls is tried on its smoothing guide before its chain is kept
 // with the curvature jumps the stall left (fair/run_fairing.hpp, RunBasis): Inconsolata's Q,
 // r, Z and z were kept so, with |Δκ| of up to 160 per em at their junctions, and DejaVu's ℀
