@@ -776,8 +776,16 @@ bool turns_too_often(const std::vector<OutlineNode>& nodes, const OutlineJoins& 
   return judge.turns_too_often(h, judge.traits(h, outline_cubic(nodes, h)), i, judge.traits(i, outline_cubic(nodes, i)));
 }
 
+// Whether node + sign·m·d (sign +1 towards a join after the node, −1 before it) lies exactly on
+// the line through `join` along `line_dir` for some whole m ≥ 1.
+bool lands_on_line(Vec2 node, Vec2 d, bool join_after, Vec2 join, Vec2 line_dir) {
+  const std::optional<double> m = steps_to_line(node, d, join_after ? 1.0 : -1.0, join, line_dir);
+  return m && *m >= 1.0 && *m == std::round(*m);
+}
+
 // Where a run still jumps once the passes end, or turns where it should not (turns_too_often):
-// each node at a jump, or next to one (unless `lone`), or turning so, moved to
+// each node at a jump, or next to one (unless `lone`: then only the far node of a line join
+// that jumps, and only where its handle lands on the line), or turning so, moved to
 // the grid points next to it and turned to the primitive directions near its tangent (its
 // handles as many steps long as they were), with the handles of the cubics around it chosen
 // again for each place (choose_window), so that a move which needs its neighbours' handles to
@@ -791,9 +799,17 @@ bool polish_jumping_run(std::vector<OutlineNode>& nodes, const std::vector<Outli
   for (std::size_t q = 0; q < cubics.size(); ++q) {
     const std::size_t i = cubics[q];
     if (!joins.joins_cubics(i) || !steps[i]) continue;
-    const bool beside = !lone && (join_jump(joins, (i + 1) % n, flat) > target_jump ||
-                                  join_jump(joins, (i + n - 1) % n, flat) > target_jump);
-    if (join_jump(joins, i, flat) <= target_jump && !beside && !turns_too_often(nodes, joins, judge, i)) continue;
+    // Beside a jump; when `lone`, only beside a line join that jumps, and then only to where
+    // its handle lands on the line (the join itself, κ = 0 wanted where the curve leaves the
+    // line, is no node to move: its far node is).
+    const std::size_t next = (i + 1) % n, prev = (i + n - 1) % n;
+    const bool beside = !lone && (join_jump(joins, next, flat) > target_jump || join_jump(joins, prev, flat) > target_jump);
+    std::optional<std::size_t> line_join;
+    for (const std::size_t k : {next, prev})
+      if (lone && joins.meets_line(k) && steps[k] && join_jump(joins, k, flat) > target_jump) line_join = k;
+    const bool own = join_jump(joins, i, flat) > target_jump || turns_too_often(nodes, joins, judge, i);
+    if (!own && !beside && !line_join) continue;
+    const bool only_on_line = !own && !beside;
     const RunWindow window = window_around(cubics, cycle, q);
     const RunSteps now = choose_window(nodes, steps, joins, window, judge, flat, i);
     double best_cost = now.best.cost;
@@ -810,6 +826,7 @@ bool polish_jumping_run(std::vector<OutlineNode>& nodes, const std::vector<Outli
       const double m_out = std::max(1.0, whole_steps(from.point, *from.out_handle, d, 1.0));
       for (const Vec2 p : node_places(kept.point, ideal[i].point)) {
         if (p == kept.point && d == kept_step) continue;
+        if (only_on_line && !lands_on_line(p, d, *line_join == next, nodes[*line_join].point, *steps[*line_join])) continue;
         nodes[i].point = p;
         nodes[i].in_handle = p - d * m_in;
         nodes[i].out_handle = p + d * m_out;

@@ -32,7 +32,8 @@ struct HandleStepLimits {
   /// instructions again for three; whole DejaVu Sans 78 s instead of 53 for one).
   int polish_rounds = 0;
   /// Polish only a run left with a single jump, and only the node at it (not those beside
-  /// it): the few isolated jumps of a professional outline, at a fraction of the cost. Whole
+  /// it, but for a line join's far node, at the places where its handle lands exactly on the
+  /// line): the few isolated jumps of a professional outline, at a fraction of the cost. Whole
   /// DejaVu Sans, one round: g2-jumps 1,357 → 1,315 for 4–5 % more time; every jumping run
   /// polished, 1,242 for 15 % more.
   bool polish_lone_jumps = false;

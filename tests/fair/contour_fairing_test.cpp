@@ -705,6 +705,42 @@ TEST(ContourFairing, AStalledChainJumpingPastItsOwnCurvatureIsKeptAsDrawn) {
                           [](const FairedPiece& p) { return p.kind == FairedPieceKind::as_drawn; }));
 }
 
+// DejaVu Sans Bold's s (Bitstream Vera licence; UPM 2048, text): the spine's upper line, on the
+// grid (7, −1), takes the curve from the top bowl with κ = 0 only where the curve's far handle
+// lies exactly on it, which the far node's (1, −2) crosses at no whole step from where it was
+// rounded. The polish of a run left with one jump (the text fonts' case) moved only a node at
+// a jump, and a line join is none; it now tries the line join's far node too, at the places
+// where its handle lands on the line: one unit over, 23 steps (κ·UPM 0.099 into the line → 0).
+TEST(ContourFairing, ALineJoinsFarNodeMovesWhereItsHandleLandsOnTheLine) {
+  using P = Vec2;
+  const auto l = [](P a, P b) { return Segment{Line{{a, b}}}; };
+  const auto q = [](P a, P b, P c) { return Segment{Quad{{a, b, c}}}; };
+  Contour s;
+  s.segments = {
+      l({1047, 1085}, {1047, 813}), q({1047, 813}, {932, 861}, {825, 885}),
+      q({825, 885}, {718, 909}, {623, 909}), q({623, 909}, {521, 909}, {471.5, 883.5}),
+      q({471.5, 883.5}, {422, 858}, {422, 805}), q({422, 805}, {422, 762}, {459.5, 739}),
+      q({459.5, 739}, {497, 716}, {594, 705}), l({594, 705}, {657, 696}),
+      q({657, 696}, {932, 661}, {1027, 581}), q({1027, 581}, {1122, 501}, {1122, 330}),
+      q({1122, 330}, {1122, 151}, {990, 61}), q({990, 61}, {858, -29}, {596, -29}),
+      q({596, -29}, {485, -29}, {366.5, -11.5}), q({366.5, -11.5}, {248, 6}, {123, 41}),
+      l({123, 41}, {123, 313}), q({123, 313}, {230, 261}, {342.5, 235}),
+      q({342.5, 235}, {455, 209}, {571, 209}), q({571, 209}, {676, 209}, {729, 238}),
+      q({729, 238}, {782, 267}, {782, 324}), q({782, 324}, {782, 372}, {745.5, 395.5}),
+      q({745.5, 395.5}, {709, 419}, {600, 432}), l({600, 432}, {537, 440}),
+      q({537, 440}, {298, 470}, {202, 551}), q({202, 551}, {106, 632}, {106, 797}),
+      q({106, 797}, {106, 975}, {228, 1061}), q({228, 1061}, {350, 1147}, {602, 1147}),
+      q({602, 1147}, {701, 1147}, {810, 1132}), q({810, 1132}, {919, 1117}, {1047, 1085})};
+  s.nodes.assign(s.segments.size(), NodeFlags{});
+  const double upm = 2048.0;
+  const FairSettings settings = resolve_settings(options_for(FairProfile::text, Rounding::integers), upm);
+  const ContourFairing r = fair_contour(s, settings);
+  ASSERT_TRUE(r.faired) << r.reason;
+  EXPECT_FALSE(has_fraction(Outline{{r.contour}}));
+  EXPECT_LE(brute_force_hausdorff(s, r.contour), settings.tolerance_units);
+  EXPECT_EQ(g2_jumps(Outline{{r.contour}}, upm), 0);
+}
+
 // A text run whose G2 solve stalls is tried on its smoothing guide before its chain is kept
 // with the curvature jumps the stall left (fair/run_fairing.hpp, RunBasis): Inconsolata's Q,
 // r, Z and z were kept so, with |Δκ| of up to 160 per em at their junctions, and DejaVu's ℀
