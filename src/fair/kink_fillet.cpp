@@ -1,8 +1,12 @@
 #include "fair/kink_fillet.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <optional>
+#include <span>
+#include <variant>
 #include <vector>
 
 #include "fair/contour_plan.hpp"
@@ -95,25 +99,158 @@ int neighbour_bend(const Contour& contour, const std::vector<std::optional<Join>
   return 0;
 }
 
-}  // namespace
-
-Contour fillet_line_kinks(const Contour& contour, double allowance_units, bool integer_grid) {
+// Node k joins segment k − 1 to segment k: the kinks between two lines that a fillet may take,
+// where it bends the way its neighbours do.
+std::vector<bool> kinks_to_fillet(const Contour& contour, const std::vector<std::optional<Join>>& join_at) {
   const std::size_t n = contour.segments.size();
-  const auto line = [&](std::size_t i) { return std::get_if<Line>(&contour.segments[i % n]); };
-  std::vector<std::optional<Join>> join_at(contour.node_count());
-  for (const Join& j : joins_of(contour)) join_at[j.node] = j;
-  // Node k joins segment k − 1 to segment k; filleted only where the fillet bends the way its
-  // neighbours do.
+  const auto is_line_at = [&](std::size_t i) { return std::holds_alternative<Line>(contour.segments[i % n]); };
   std::vector<bool> kink(contour.node_count(), false);
   for (std::size_t k = 0; k < n; ++k) {
     const std::optional<Join>& j = join_at[k];
-    if (!j || !small_kink(*j) || !line(k + n - 1) || !line(k)) continue;
+    if (!j || !small_kink(*j) || !is_line_at(k + n - 1) || !is_line_at(k)) continue;
     kink[k] = true;
     for (const int step : {-1, 1}) {
       const int other = neighbour_bend(contour, join_at, k, step);
       if (other != 0 && other != way(*j)) kink[k] = false;
     }
   }
+  return kink;
+}
+
+// Where a kink's lines leave no whole legs on the grid, its vertex moved: the fillet's handles
+// at a grid point V near where the kink is (or, for two kinks with a line between them, where
+// the outer lines meet), each outer line redrawn from its far end to V, and the fillet's ends
+// at grid points of those (the far end to V a whole number of steps, two at least). `path`:
+// the stretch replaced, from the first line's far end to the last line's.
+struct MovedVertex {
+  Vec2 start, vertex, end;
+};
+
+// Points along a polyline at most a unit apart, its corners included.
+std::vector<Vec2> densely(std::span<const Vec2> polyline) {
+  std::vector<Vec2> out{polyline.front()};
+  for (std::size_t i = 1; i < polyline.size(); ++i) {
+    const int steps = std::max(1, static_cast<int>(std::ceil(distance(polyline[i - 1], polyline[i]))));
+    for (int k = 1; k <= steps; ++k) out.push_back(polyline[i - 1] + (polyline[i] - polyline[i - 1]) * (double(k) / steps));
+  }
+  return out;
+}
+
+// The two-sided distance between the stretch as drawn and as redrawn with the fillet.
+double redrawn_deviation(std::span<const Vec2> path, const MovedVertex& m) {
+  std::vector<Vec2> redrawn{path.front()};
+  const Cubic fillet{m.start, m.vertex, m.vertex, m.end};
+  for (int k = 0; k <= 32; ++k) redrawn.push_back(fillet.point_at(double(k) / 32.0));
+  redrawn.push_back(path.back());
+  const std::vector<Vec2> a = densely(redrawn), b = densely(path);
+  return std::max(directed_hausdorff(a, path), directed_hausdorff(b, redrawn));
+}
+
+std::optional<MovedVertex> moved_vertex_fillet(std::span<const Vec2> path, Vec2 near, int turn, double allowance) {
+  const Vec2 from = path.front(), to = path.back();
+  std::optional<MovedVertex> best;
+  double best_short = 0.0, best_sum = std::numeric_limits<double>::infinity();
+  const double reach = std::min(2.0 * allowance, 4.0);
+  for (double dx = std::floor(near.x - reach); dx <= near.x + reach; dx += 1.0)
+    for (double dy = std::floor(near.y - reach); dy <= near.y + reach; dy += 1.0) {
+      const Vec2 v{dx, dy};
+      if (distance(v, near) > reach) continue;
+      const double c = cross(v - from, to - v);
+      if ((c > 0.0 ? 1 : c < 0.0 ? -1 : 0) != turn) continue;  // the kink's way, or it would bend against it
+      const std::optional<Vec2> back = primitive_step(from - v), on = primitive_step(to - v);
+      if (!back || !on) continue;
+      // Each leg at most half its redrawn line: the fillet rounds the kink, the lines stay lines.
+      for (const Vec2 b : leg_choices(*back, 0.5 * norm(from - v), true))
+        for (const Vec2 o : leg_choices(*on, 0.5 * norm(to - v), true)) {
+          // The longest shorter leg, then the least of the lines taken: a stem stays a line.
+          const double shorter = std::min(norm(b), norm(o)), sum = norm(b) + norm(o);
+          if (shorter < best_short || (shorter == best_short && sum >= best_sum)) continue;
+          const MovedVertex m{v + b, v, v + o};
+          if (redrawn_deviation(path, m) > allowance) continue;
+          best = m, best_short = shorter, best_sum = sum;
+        }
+    }
+  return best;
+}
+
+// Where the lines through a0–a1 and b0–b1 meet; none where they run parallel.
+std::optional<Vec2> lines_meet(Vec2 a0, Vec2 a1, Vec2 b0, Vec2 b1) {
+  const Vec2 da = a1 - a0, db = b1 - b0;
+  const double c = cross(da, db);
+  if (std::abs(c) < 1e-12 * norm(da) * norm(db)) return std::nullopt;
+  return a0 + da * (cross(b0 - a0, db) / c);
+}
+
+}  // namespace
+
+Contour fillet_kinks_at_moved_vertices(const Contour& contour, double allowance) {
+  const std::size_t n = contour.segments.size();
+  if (n < 3 || !contour.closed) return contour;
+  const auto line = [&](std::size_t i) { return std::get_if<Line>(&contour.segments[i % n]); };
+  std::vector<std::optional<Join>> join_at(n);
+  for (const Join& j : joins_of(contour)) join_at[j.node % n] = j;
+  const auto corner = [&](std::size_t k) {
+    const std::optional<Join>& j = join_at[k % n];
+    return j && j->kind == JoinKind::corner;
+  };
+  const std::vector<bool> kink = kinks_to_fillet(contour, join_at);
+  // Each replacement: the first line it takes and how many, and the fillet.
+  struct Replacement {
+    std::size_t first, lines;
+    MovedVertex fillet;
+  };
+  std::vector<Replacement> done;
+  std::vector<bool> taken(n, false);
+  for (std::size_t k = 0; k < n; ++k) {
+    if (!kink[k] || taken[(k + n - 1) % n] || taken[k]) continue;
+    const bool pair = kink[(k + 1) % n] && !taken[(k + 1) % n] && way(*join_at[(k + 1) % n]) == way(*join_at[k]);
+    const std::size_t first = (k + n - 1) % n, lines = pair ? 3 : 2, last = first + lines - 1;
+    // Not across the contour's seam, whose first node stays where it was.
+    if (last >= n || !corner(first) || !corner((last + 1) % n)) continue;
+    std::vector<Vec2> path;
+    for (std::size_t i = 0; i < lines; ++i) path.push_back(line(first + i)->start());
+    path.push_back(line(last)->end());
+    const std::optional<Vec2> near = pair ? lines_meet(path[0], path[1], path[2], path[3]) : path[1];
+    if (!near) continue;
+    const std::optional<MovedVertex> m = moved_vertex_fillet(path, *near, way(*join_at[k]), allowance);
+    if (!m) continue;
+    for (std::size_t i = 0; i < lines; ++i) taken[(first + i) % n] = true;
+    done.push_back({first, lines, *m});
+  }
+  if (done.empty()) return contour;
+  std::vector<std::optional<std::size_t>> starts_here(n);
+  for (std::size_t r = 0; r < done.size(); ++r) starts_here[done[r].first] = r;
+  Contour out;
+  out.closed = true;
+  const NodeFlags smooth{false, true};
+  for (std::size_t i = 0; i < n; ++i) {
+    if (taken[i] && !starts_here[i]) continue;
+    if (!starts_here[i]) {
+      out.segments.push_back(contour.segments[i]);
+      out.nodes.push_back(contour.nodes[i]);
+      continue;
+    }
+    const Replacement& r = done[*starts_here[i]];
+    const Vec2 from = line(r.first)->start(), to = line(r.first + r.lines - 1)->end();
+    out.segments.push_back(Line{{from, r.fillet.start}});
+    out.nodes.push_back(contour.nodes[i]);
+    out.segments.push_back(Cubic{{r.fillet.start, r.fillet.vertex, r.fillet.vertex, r.fillet.end}});
+    out.nodes.push_back(smooth);
+    out.segments.push_back(Line{{r.fillet.end, to}});
+    out.nodes.push_back(smooth);
+  }
+  return out;
+}
+
+namespace {
+
+// The kinks whose lines have whole legs for a fillet, filleted.
+Contour fillet_with_whole_legs(const Contour& contour, double allowance_units, bool integer_grid) {
+  const std::size_t n = contour.segments.size();
+  const auto line = [&](std::size_t i) { return std::get_if<Line>(&contour.segments[i % n]); };
+  std::vector<std::optional<Join>> join_at(contour.node_count());
+  for (const Join& j : joins_of(contour)) join_at[j.node] = j;
+  const std::vector<bool> kink = kinks_to_fillet(contour, join_at);
   // A line with a kink at both ends gives each fillet half of it; else the whole.
   const auto most = [&](std::size_t i, std::size_t other_end) {
     const Line& l = *line(i);
@@ -153,6 +290,13 @@ Contour fillet_line_kinks(const Contour& contour, double allowance_units, bool i
   }
   if (!contour.closed) out.nodes.push_back(contour.nodes.back());
   return out;
+}
+
+}  // namespace
+
+Contour fillet_line_kinks(const Contour& contour, double allowance_units, bool integer_grid) {
+  const Contour filleted = fillet_with_whole_legs(contour, allowance_units, integer_grid);
+  return integer_grid ? fillet_kinks_at_moved_vertices(filleted, allowance_units) : filleted;
 }
 
 }  // namespace gf

@@ -16,6 +16,19 @@ namespace gf {
 /// line's primitive steps (P0 and P3 on the grid). A kink whose fillet would bend against the
 /// curve or kink next to it along the contour (an inflection the kink did not count as) stays.
 /// Contours with no such kink come back unchanged.
+/// On `integer_grid`, a kink left so (no whole legs within the allowance: a line's primitive
+/// step longer than the leg may be) is then tried as fillet_kinks_at_moved_vertices does.
 Contour fillet_line_kinks(const Contour& contour, double allowance_units, bool integer_grid);
+
+/// The kinks of a closed contour on the integer grid between two lines whose far ends are
+/// corners, each, or two turning the same way with a line between them (Liberation Sans's N:
+/// (5, −97) and (5, −167) either side of a 1.2° kink, a stem's taper), filleted at a vertex
+/// moved to a grid point within twice `allowance_units` (and four units) of the kink, or of where the
+/// outer lines meet: each outer line redrawn from its far corner to that vertex, which turns
+/// the corner by a fraction of a degree, and the fillet (P0, V, V, P3) from a grid point of one
+/// to a grid point of the other, each leg at most half its line, the shorter as long as the
+/// allowance lets the whole stretch stay within it of the lines as drawn. None across the
+/// contour's seam; contours with no such kink come back unchanged.
+Contour fillet_kinks_at_moved_vertices(const Contour& contour, double allowance_units);
 
 }  // namespace gf

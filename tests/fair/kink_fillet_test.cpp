@@ -62,6 +62,43 @@ TEST(KinkFillet, AKinkAgainstItsNeighboursStays) {
   EXPECT_EQ(out.segments.size(), source.segments.size());
 }
 
+// Liberation Sans's N: its left stem tapers, (5, −97) then (5, −167), kinks of 1.2° and 1.7°
+// with no whole step of either line short enough for a leg. And its w: 1.9° between (31, 139)
+// and (205, 794), each line a single step. Each is filleted at a vertex moved on the grid (for
+// the N where its outer lines meet, the middle line taken), the outer lines redrawn to it from
+// their corners, which turn by a fraction of a degree.
+TEST(KinkFillet, KinksWithoutWholeLegsAreFilletedAtAMovedVertex) {
+  const std::vector<std::vector<Vec2>> shapes = {{{168, 0}, {168, 1409}, {328, 1200}, {333, 1103}, {338, 936}, {338, 0}},
+                                                 {{1000, 0}, {1072, 149}, {1103, 288}, {1308, 1082}, {1200, 1082}}};
+  const double allowance = 2.3;
+  for (const std::vector<Vec2>& shape : shapes) {
+    const Contour source = polygon(shape);
+    EXPECT_EQ(fillet_line_kinks(source, 0.2, true).segments.size(), source.segments.size()) << "no fillet within 0.2";
+    const Contour out = fillet_kinks_at_moved_vertices(source, allowance);
+    ASSERT_EQ(out.segments.size(), out.nodes.size());
+    int cubics = 0;
+    for (std::size_t i = 0; i < out.segments.size(); ++i) {
+      const Segment& s = out.segments[i];
+      for_each_point(s, [](Vec2 p) { EXPECT_TRUE(p.x == std::round(p.x) && p.y == std::round(p.y)); });
+      const Segment& next = out.segments[(i + 1) % out.segments.size()];
+      const double turn = degrees(*end_tangent(s, SegmentEnd::end), *end_tangent(next, SegmentEnd::start));
+      EXPECT_TRUE(turn == 0.0 || turn >= 3.0) << "join " << i << " turns " << turn << "°";
+      if (is_line(s)) continue;
+      ++cubics;
+      EXPECT_EQ(*end_curvature(s, SegmentEnd::start).curvature, 0.0);
+      EXPECT_EQ(*end_curvature(s, SegmentEnd::end).curvature, 0.0);
+      // Each leg at most half its line: the lines stay lines beside the fillet.
+      const Segment& before = out.segments[(i + out.segments.size() - 1) % out.segments.size()];
+      const Vec2 vertex = std::get<Cubic>(s).p[1];
+      EXPECT_GE(norm(end_point(before) - start_point(before)), distance(start_point(s), vertex));
+      EXPECT_GE(norm(end_point(next) - start_point(next)), distance(end_point(s), vertex));
+    }
+    EXPECT_EQ(cubics, 1);
+    EXPECT_LE(test::directed_to_polyline(dense(out), dense(source)), allowance);
+    EXPECT_LE(test::directed_to_polyline(dense(source), dense(out)), allowance);
+  }
+}
+
 TEST(KinkFillet, WithoutAKinkTheContourComesBackAsItWas) {
   const Contour square = polygon({{0, 0}, {100, 0}, {100, 100}, {0, 100}});
   EXPECT_EQ(fillet_line_kinks(square, 1.0, true).segments.size(), 4u);
