@@ -117,11 +117,7 @@ std::vector<bool> kinks_to_fillet(const Contour& contour, const std::vector<std:
   return kink;
 }
 
-// Where a kink's lines leave no whole legs on the grid, its vertex moved: the fillet's handles
-// at a grid point V near where the kink is (or, for two kinks with a line between them, where
-// the outer lines meet), each outer line redrawn from its far end to V, and the fillet's ends
-// at grid points of those (the far end to V a whole number of steps, two at least). `path`:
-// the stretch replaced, from the first line's far end to the last line's.
+// A fillet at a moved vertex: (start, vertex, vertex, end), the lines redrawn to the vertex.
 struct MovedVertex {
   Vec2 start, vertex, end;
 };
@@ -146,6 +142,12 @@ double redrawn_deviation(std::span<const Vec2> path, const MovedVertex& m) {
   return std::max(directed_hausdorff(a, path), directed_hausdorff(b, redrawn));
 }
 
+// Where a kink's lines leave no whole legs on the grid, its vertex moved: the fillet's handles
+// at a grid point V near `near` (the kink, or for two kinks with a line between them where the
+// outer lines meet), each outer line redrawn from its far end to V, and the fillet's ends at
+// grid points of those (each leg a whole number of the redrawn line's steps, at most half of
+// it). `path`: the stretch replaced, from the first line's far end to the last line's; `turn`:
+// the way it turns (+1 left), which V must keep.
 std::optional<MovedVertex> moved_vertex_fillet(std::span<const Vec2> path, Vec2 near, int turn, double allowance) {
   const Vec2 from = path.front(), to = path.back();
   std::optional<MovedVertex> best;

@@ -25,10 +25,11 @@ constexpr double alpha_candidates[] = {-2.0, -1.5, -1.0, -0.5, 0.0, 0.5, 1.0, 1.
 constexpr int max_rounds = 10;
 constexpr int fallback_rounds = 4;  // a text run on its guide, after its own outline failed
 constexpr double max_relative_mismatch = 1e-9;  // |Δκ| / max|κ| the G2 solve must reach
-// A stalled chain is kept with its jumps only while none exceeds its largest |κ|: past that a
-// junction's two sides bend opposite ways or one twice the other, and the writeback's mean
-// curvature there became a knot of cubics a few units long (Lato's W, where a stem meets its
-// notch 2° off tangent: κ·UPM 4,000 and six inflections); the run is kept as drawn instead.
+// A stalled chain is kept with its jumps only while none exceeds the largest |κ| its segments'
+// ends had before the solve (G2Result::curvature_scale): past that the solve has bent its
+// junctions beyond anything the run draws (Lato's W, where a stem meets its notch 2° off
+// tangent: κ of opposite signs across them), and the writeback's mean curvature there became a
+// knot of cubics a few units long (κ·UPM 4,000, six inflections); the run is kept as drawn.
 constexpr double max_kept_mismatch = 1.0;
 constexpr int max_g3_rounds = 4;  // of cutting the segments whose G3 spirals stray
 constexpr int max_guide_refinements = 3;  // doublings of a smoothing guide's spans

@@ -65,10 +65,10 @@ struct FairedRun {
 /// fails the run; then, for a contour that could not be faired so, its smoothing guide; last,
 /// for one that could not be faired on its guides either, its own outline again, a stalled
 /// chain kept with the curvature jumps its junctions have left (the cubic writeback meets their
-/// mean) while none exceeds the chain's largest |κ|. Kept with its jumps at the first try, a
-/// stalled chain had left whole DejaVu Sans 2,253 g2-jumps and 275 smooth nodes G1 only; Open
-/// Sans's k and v turned a 1.7° kink into ten segments of jumps. Handwriting is always faired
-/// on its guide.
+/// mean) while none exceeds the largest |κ| its segments' ends had before the solve. Kept with
+/// its jumps at the first try, a stalled chain had left whole DejaVu Sans 2,253 g2-jumps and
+/// 275 smooth nodes G1 only; Open Sans's k and v turned a 1.7° kink into ten segments of jumps.
+/// Handwriting is always faired on its guide.
 enum class RunBasis { own, guide, own_with_jumps };
 
 /// The run faired within `budget_units` on `basis`.

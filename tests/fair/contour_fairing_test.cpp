@@ -307,6 +307,30 @@ bool has_fraction(const Outline& o) {
   return any;
 }
 
+// Segments of an outline embedded below, as a TrueType or CFF source has them.
+Segment line_of(Vec2 a, Vec2 b) { return Line{{a, b}}; }
+Segment quad_of(Vec2 a, Vec2 b, Vec2 c) { return Quad{{a, b, c}}; }
+Segment cubic_of(Vec2 a, Vec2 b, Vec2 c, Vec2 d) { return Cubic{{a, b, c, d}}; }
+
+// A contour from its segments, no node flagged (the source had no smooth flags).
+Contour unflagged(std::vector<Segment> segments) {
+  Contour c;
+  c.segments = std::move(segments);
+  c.nodes.assign(c.segments.size(), NodeFlags{});
+  return c;
+}
+
+// The contour faired on the integer grid with the profile's defaults for `upm`: faired, every
+// point whole, within the tolerance of the source.
+ContourFairing faired_on_grid(const Contour& c, FairProfile profile, double upm) {
+  const FairSettings settings = resolve_settings(options_for(profile, Rounding::integers), upm);
+  ContourFairing r = fair_contour(c, settings);
+  EXPECT_TRUE(r.faired) << r.reason;
+  EXPECT_FALSE(has_fraction(Outline{{r.contour}}));
+  EXPECT_LE(brute_force_hausdorff(c, r.contour), settings.tolerance_units);
+  return r;
+}
+
 // A smooth node a unit off a nearly straight stroke, its tangent a degree off the axis: rounded
 // along the axis, the cubic from the stroke has to come back to it and turns into an S (Inter's
 // b and p: one inflection the source lacks; its g: κ −31 per em against +0.25 there). The
@@ -489,21 +513,19 @@ TEST(ContourFairing, RoundingPutsNoExtremumInsideACubicOfACurl) {
 // was kept unfaired. A retry now keeps the lines' ends within what the tolerance leaves
 // (HandleStepLimits::any_grid_neighbour).
 TEST(ContourFairing, RoundingMovesNoCornerPastTheTolerance) {
-  const auto q = [](Vec2 a, Vec2 b, Vec2 c) { return Segment{Quad{{a, b, c}}}; };
-  const auto l = [](Vec2 a, Vec2 b) { return Segment{Line{{a, b}}}; };
   Contour c;
   c.closed = true;
-  c.segments = {l({691, 662}, {691, 643}),         q({691, 643}, {654, 641}, {638.5, 625}),
-                q({638.5, 625}, {623, 609}, {599, 550}), l({599, 550}, {377, -11}),
-                l({377, -11}, {362, -11}),         l({362, -11}, {116, 538}),
-                q({116, 538}, {87, 604}, {67.5, 622.5}), q({67.5, 622.5}, {48, 641}, {10, 643}),
-                l({10, 643}, {10, 662}),           l({10, 662}, {276, 662}),
-                l({276, 662}, {276, 643}),         q({276, 643}, {248, 641}, {247, 641}),
-                q({247, 641}, {201, 638}, {201, 610}), q({201, 610}, {201, 590}, {242, 499}),
-                l({242, 499}, {393, 161}),         l({393, 161}, {540, 528}),
-                q({540, 528}, {559, 576}, {559, 601}), q({559, 601}, {559, 622}, {543, 631.5}),
-                q({543, 631.5}, {527, 641}, {486, 643}), l({486, 643}, {486, 662}),
-                l({486, 662}, {691, 662})};
+  c.segments = {line_of({691, 662}, {691, 643}),         quad_of({691, 643}, {654, 641}, {638.5, 625}),
+                quad_of({638.5, 625}, {623, 609}, {599, 550}), line_of({599, 550}, {377, -11}),
+                line_of({377, -11}, {362, -11}),         line_of({362, -11}, {116, 538}),
+                quad_of({116, 538}, {87, 604}, {67.5, 622.5}), quad_of({67.5, 622.5}, {48, 641}, {10, 643}),
+                line_of({10, 643}, {10, 662}),           line_of({10, 662}, {276, 662}),
+                line_of({276, 662}, {276, 643}),         quad_of({276, 643}, {248, 641}, {247, 641}),
+                quad_of({247, 641}, {201, 638}, {201, 610}), quad_of({201, 610}, {201, 590}, {242, 499}),
+                line_of({242, 499}, {393, 161}),         line_of({393, 161}, {540, 528}),
+                quad_of({540, 528}, {559, 576}, {559, 601}), quad_of({559, 601}, {559, 622}, {543, 631.5}),
+                quad_of({543, 631.5}, {527, 641}, {486, 643}), line_of({486, 643}, {486, 662}),
+                line_of({486, 662}, {691, 662})};
   c.nodes.assign(c.segments.size(), NodeFlags{});
   FairOptions options;
   options.rounding = Rounding::integers;  // as its font's glyphs are, their implied midpoints aside
@@ -525,22 +547,19 @@ TEST(ContourFairing, RoundingMovesNoCornerPastTheTolerance) {
 // jump is now polished as handwriting's are (HandleStepLimits::polish_lone_jumps): the node at
 // it tried at its grid neighbours and directions, the cubics around it chosen again for each.
 TEST(ContourFairing, ALoneJumpInATextRunIsPolishedAway) {
-  using P = Vec2;
-  const auto c = [](P a, P b, P d, P e) { return Segment{Cubic{{a, b, d, e}}}; };
-  const auto l = [](P a, P b) { return Segment{Line{{a, b}}}; };
   Contour s, S;
-  s.segments = {c({229, -10}, {348, -10}, {421, 46}, {421, 135}), c({421, 135}, {421, 312}, {133, 246}, {133, 355}),
-                c({133, 355}, {133, 397}, {178, 424}, {250, 424}), c({250, 424}, {291, 424}, {339, 415}, {380, 401}),
-                l({380, 401}, {399, 466}), c({399, 466}, {358, 483}, {309, 492}, {258, 492}),
-                c({258, 492}, {133, 492}, {53, 437}, {53, 346}), c({53, 346}, {53, 173}, {340, 245}, {340, 127}),
-                c({340, 127}, {340, 83}, {301, 58}, {235, 58}), c({235, 58}, {184, 58}, {116, 72}, {65, 94}),
-                l({65, 94}, {46, 29}), c({46, 29}, {101, 4}, {168, -10}, {229, -10})};
-  S.segments = {c({263, -10}, {418, -10}, {519, 69}, {519, 191}), c({519, 191}, {519, 437}, {130, 339}, {130, 518}),
-                c({130, 518}, {130, 591}, {189, 631}, {295, 631}), c({295, 631}, {354, 631}, {418, 619}, {468, 598}),
-                l({468, 598}, {493, 663}), c({493, 663}, {434, 689}, {367, 703}, {301, 703}),
-                c({301, 703}, {146, 703}, {45, 626}, {45, 505}), c({45, 505}, {45, 267}, {433, 356}, {433, 179}),
-                c({433, 179}, {433, 109}, {373, 64}, {268, 64}), c({268, 64}, {205, 64}, {127, 81}, {59, 109}),
-                l({59, 109}, {34, 44}), c({34, 44}, {111, 9}, {189, -10}, {263, -10})};
+  s.segments = {cubic_of({229, -10}, {348, -10}, {421, 46}, {421, 135}), cubic_of({421, 135}, {421, 312}, {133, 246}, {133, 355}),
+                cubic_of({133, 355}, {133, 397}, {178, 424}, {250, 424}), cubic_of({250, 424}, {291, 424}, {339, 415}, {380, 401}),
+                line_of({380, 401}, {399, 466}), cubic_of({399, 466}, {358, 483}, {309, 492}, {258, 492}),
+                cubic_of({258, 492}, {133, 492}, {53, 437}, {53, 346}), cubic_of({53, 346}, {53, 173}, {340, 245}, {340, 127}),
+                cubic_of({340, 127}, {340, 83}, {301, 58}, {235, 58}), cubic_of({235, 58}, {184, 58}, {116, 72}, {65, 94}),
+                line_of({65, 94}, {46, 29}), cubic_of({46, 29}, {101, 4}, {168, -10}, {229, -10})};
+  S.segments = {cubic_of({263, -10}, {418, -10}, {519, 69}, {519, 191}), cubic_of({519, 191}, {519, 437}, {130, 339}, {130, 518}),
+                cubic_of({130, 518}, {130, 591}, {189, 631}, {295, 631}), cubic_of({295, 631}, {354, 631}, {418, 619}, {468, 598}),
+                line_of({468, 598}, {493, 663}), cubic_of({493, 663}, {434, 689}, {367, 703}, {301, 703}),
+                cubic_of({301, 703}, {146, 703}, {45, 626}, {45, 505}), cubic_of({45, 505}, {45, 267}, {433, 356}, {433, 179}),
+                cubic_of({433, 179}, {433, 109}, {373, 64}, {268, 64}), cubic_of({268, 64}, {205, 64}, {127, 81}, {59, 109}),
+                line_of({59, 109}, {34, 44}), cubic_of({34, 44}, {111, 9}, {189, -10}, {263, -10})};
   constexpr double upm = 1000.0;
   const FairSettings settings = resolve_settings(FairOptions{}, upm);
   for (Contour* contour : {&s, &S}) {
@@ -560,21 +579,18 @@ TEST(ContourFairing, ALoneJumpInATextRunIsPolishedAway) {
 // cap reaches 10 units past the lines' ends, where a stalled chain is drawable or not by the
 // last bits of the solves; drawn 8 units out (handles of 6 to 18 alike), none is.
 TEST(ContourFairing, ARunNoChainFairsIsKeptAsDrawnAndTheRestFaired) {
-  using P = Vec2;
-  const auto c = [](P a, P b, P d, P e) { return Segment{Cubic{{a, b, d, e}}}; };
-  const auto l = [](P a, P b) { return Segment{Line{{a, b}}}; };
-  const Segment cap[] = {c({294, 352}, {298, 352}, {302, 364}, {302, 376}), c({302, 376}, {302, 388}, {298, 400}, {294, 400})};
+  const Segment cap[] = {cubic_of({294, 352}, {298, 352}, {302, 364}, {302, 376}), cubic_of({302, 376}, {302, 388}, {298, 400}, {294, 400})};
   Contour t;
-  t.segments = {c({189, -14}, {250, -14}, {306, 36}, {306, 47}), c({306, 47}, {306, 55}, {302, 64}, {296, 60}),
-                c({296, 60}, {280, 48}, {260, 41}, {221, 41}),   c({221, 41}, {190, 41}, {155, 61}, {155, 135}),
-                l({155, 135}, {155, 324}),                       c({155, 324}, {155, 351}, {161, 352}, {195, 352}),
-                l({195, 352}, {294, 352}),                       cap[0],
-                cap[1],                                          l({294, 400}, {180, 400}),
-                c({180, 400}, {167, 400}, {153, 405}, {155, 414}), l({155, 414}, {163, 458}),
-                c({163, 458}, {164, 467}, {152, 468}, {146, 468}), c({146, 468}, {136, 468}, {93, 394}, {40, 379}),
-                c({40, 379}, {38, 378}, {35, 375}, {35, 372}),   c({35, 372}, {35, 365}, {43, 352}, {47, 352}),
-                c({47, 352}, {78, 352}, {85, 349}, {85, 337}),   l({85, 337}, {85, 105}),
-                c({85, 105}, {85, 22}, {127, -14}, {189, -14})};
+  t.segments = {cubic_of({189, -14}, {250, -14}, {306, 36}, {306, 47}), cubic_of({306, 47}, {306, 55}, {302, 64}, {296, 60}),
+                cubic_of({296, 60}, {280, 48}, {260, 41}, {221, 41}),   cubic_of({221, 41}, {190, 41}, {155, 61}, {155, 135}),
+                line_of({155, 135}, {155, 324}),                       cubic_of({155, 324}, {155, 351}, {161, 352}, {195, 352}),
+                line_of({195, 352}, {294, 352}),                       cap[0],
+                cap[1],                                          line_of({294, 400}, {180, 400}),
+                cubic_of({180, 400}, {167, 400}, {153, 405}, {155, 414}), line_of({155, 414}, {163, 458}),
+                cubic_of({163, 458}, {164, 467}, {152, 468}, {146, 468}), cubic_of({146, 468}, {136, 468}, {93, 394}, {40, 379}),
+                cubic_of({40, 379}, {38, 378}, {35, 375}, {35, 372}),   cubic_of({35, 372}, {35, 365}, {43, 352}, {47, 352}),
+                cubic_of({47, 352}, {78, 352}, {85, 349}, {85, 337}),   line_of({85, 337}, {85, 105}),
+                cubic_of({85, 105}, {85, 22}, {127, -14}, {189, -14})};
   t.nodes.assign(t.segments.size(), NodeFlags{});
   const FairSettings settings = resolve_settings(FairOptions{}, 1000.0);
   const ContourFairing r = fair_contour(t, settings);
@@ -611,42 +627,33 @@ TEST(ContourFairing, ARunNoChainFairsIsKeptAsDrawnAndTheRestFaired) {
 // corner where rounding moves it along its line, so the extremum stays on the node (Because We
 // Learn's M had a missing extremum without that).
 TEST(ContourFairing, AnExtremumBesideAStrokeEndsCornerIsTheCorner) {
-  using P = Vec2;
-  const auto l = [](P a, P b) { return Segment{Line{{a, b}}}; };
-  const auto q = [](P a, P b, P c) { return Segment{Quad{{a, b, c}}}; };
-  Contour h;
-  h.segments = {
-      l({803, 1208}, {669, 684}), l({669, 684}, {718, 684}),
-      q({718, 684}, {753, 685}, {771, 685}), q({771, 685}, {794, 685}, {805, 636}),
-      q({805, 636}, {807, 624}, {807, 616}), q({807, 616}, {806, 594}, {756, 593.5}),
-      q({756, 593.5}, {706, 593}, {643, 589}), l({643, 589}, {601, 435}),
-      q({601, 435}, {511, 122}, {511.5, -83.5}), q({511.5, -83.5}, {512, -289}, {599, -366}),
-      q({599, -366}, {616, -378}, {617, -386}), q({617, -386}, {615, -396}, {600, -396.5}),
-      q({600, -396.5}, {585, -397}, {569, -387}), q({569, -387}, {483, -340}, {441, -186}),
-      q({441, -186}, {420, -108}, {420, -37}), q({420, -37}, {420, 147}, {507, 485}),
-      l({507, 485}, {531, 580}), l({531, 580}, {367, 562}),
-      q({367, 562}, {248, 86}, {221, 19}), q({221, 19}, {194, -48}, {170, -92}),
-      q({170, -92}, {146, -136}, {91.5, -184}), q({91.5, -184}, {37, -232}, {13, -231}),
-      q({13, -231}, {-11, -230}, {-12, -221}), q({-12, -221}, {-12, -212}, {0, -194}),
-      q({0, -194}, {134, 10}, {217, 392}), l({217, 392}, {257, 555}),
-      l({257, 555}, {254, 555}), q({254, 555}, {48, 555}, {14.5, 561}),
-      q({14.5, 561}, {-19, 567}, {-31, 586.5}), q({-31, 586.5}, {-43, 606}, {-44, 619}),
-      q({-44, 619}, {-44, 634}, {-25, 637}), q({-25, 637}, {-22, 637}, {-21, 638}),
-      l({-21, 638}, {284, 665}), l({284, 665}, {385, 1075}),
-      q({385, 1075}, {389, 1090}, {395.5, 1124}), q({395.5, 1124}, {402, 1158}, {417, 1170}),
-      q({417, 1170}, {432, 1182}, {481, 1182}), q({481, 1182}, {510, 1180}, {511, 1155}),
-      q({511, 1155}, {511, 1144}, {510, 1138}), l({510, 1138}, {394, 673}),
-      q({394, 673}, {506, 679}, {558, 681}), l({558, 681}, {678, 1146}),
-      q({678, 1146}, {682, 1161}, {687.5, 1195.5}), q({687.5, 1195.5}, {693, 1230}, {708.5, 1241.5}),
-      q({708.5, 1241.5}, {724, 1253}, {774, 1253}), q({774, 1253}, {803, 1251}, {804, 1224}),
-      q({804, 1224}, {804, 1214}, {803, 1208})};
-  h.nodes.assign(h.segments.size(), NodeFlags{});
+  const Contour h = unflagged({
+      line_of({803, 1208}, {669, 684}), line_of({669, 684}, {718, 684}),
+      quad_of({718, 684}, {753, 685}, {771, 685}), quad_of({771, 685}, {794, 685}, {805, 636}),
+      quad_of({805, 636}, {807, 624}, {807, 616}), quad_of({807, 616}, {806, 594}, {756, 593.5}),
+      quad_of({756, 593.5}, {706, 593}, {643, 589}), line_of({643, 589}, {601, 435}),
+      quad_of({601, 435}, {511, 122}, {511.5, -83.5}), quad_of({511.5, -83.5}, {512, -289}, {599, -366}),
+      quad_of({599, -366}, {616, -378}, {617, -386}), quad_of({617, -386}, {615, -396}, {600, -396.5}),
+      quad_of({600, -396.5}, {585, -397}, {569, -387}), quad_of({569, -387}, {483, -340}, {441, -186}),
+      quad_of({441, -186}, {420, -108}, {420, -37}), quad_of({420, -37}, {420, 147}, {507, 485}),
+      line_of({507, 485}, {531, 580}), line_of({531, 580}, {367, 562}),
+      quad_of({367, 562}, {248, 86}, {221, 19}), quad_of({221, 19}, {194, -48}, {170, -92}),
+      quad_of({170, -92}, {146, -136}, {91.5, -184}), quad_of({91.5, -184}, {37, -232}, {13, -231}),
+      quad_of({13, -231}, {-11, -230}, {-12, -221}), quad_of({-12, -221}, {-12, -212}, {0, -194}),
+      quad_of({0, -194}, {134, 10}, {217, 392}), line_of({217, 392}, {257, 555}),
+      line_of({257, 555}, {254, 555}), quad_of({254, 555}, {48, 555}, {14.5, 561}),
+      quad_of({14.5, 561}, {-19, 567}, {-31, 586.5}), quad_of({-31, 586.5}, {-43, 606}, {-44, 619}),
+      quad_of({-44, 619}, {-44, 634}, {-25, 637}), quad_of({-25, 637}, {-22, 637}, {-21, 638}),
+      line_of({-21, 638}, {284, 665}), line_of({284, 665}, {385, 1075}),
+      quad_of({385, 1075}, {389, 1090}, {395.5, 1124}), quad_of({395.5, 1124}, {402, 1158}, {417, 1170}),
+      quad_of({417, 1170}, {432, 1182}, {481, 1182}), quad_of({481, 1182}, {510, 1180}, {511, 1155}),
+      quad_of({511, 1155}, {511, 1144}, {510, 1138}), line_of({510, 1138}, {394, 673}),
+      quad_of({394, 673}, {506, 679}, {558, 681}), line_of({558, 681}, {678, 1146}),
+      quad_of({678, 1146}, {682, 1161}, {687.5, 1195.5}), quad_of({687.5, 1195.5}, {693, 1230}, {708.5, 1241.5}),
+      quad_of({708.5, 1241.5}, {724, 1253}, {774, 1253}), quad_of({774, 1253}, {803, 1251}, {804, 1224}),
+      quad_of({804, 1224}, {804, 1214}, {803, 1208})});
   const double upm = 2048.0;
-  const FairSettings settings = resolve_settings(options_for(FairProfile::handwriting, Rounding::integers), upm);
-  const ContourFairing r = fair_contour(h, settings);
-  ASSERT_TRUE(r.faired) << r.reason;
-  EXPECT_FALSE(has_fraction(Outline{{r.contour}}));
-  EXPECT_LE(brute_force_hausdorff(h, r.contour), settings.tolerance_units);
+  const ContourFairing r = faired_on_grid(h, FairProfile::handwriting, upm);
   EXPECT_EQ(g2_jumps(Outline{{r.contour}}, upm), 0);
 
   // Because We Learn's M: rounding slides the corner at the foot of its left stroke 2 units
@@ -666,32 +673,24 @@ TEST(ContourFairing, AnExtremumBesideAStrokeEndsCornerIsTheCorner) {
 // cubics a unit or two long, κ·UPM 4,000 against the source's 39. A stalled chain left with a
 // jump beyond its own largest |κ| is kept as drawn instead.
 TEST(ContourFairing, AStalledChainJumpingPastItsOwnCurvatureIsKeptAsDrawn) {
-  using P = Vec2;
-  const auto l = [](P a, P b) { return Segment{Line{{a, b}}}; };
-  const auto q = [](P a, P b, P c) { return Segment{Quad{{a, b, c}}}; };
-  Contour w;
-  w.segments = {
-      l({31, 1433}, {192, 1433}), q({192, 1433}, {218, 1433}, {235.5, 1420}),
-      q({235.5, 1420}, {253, 1407}, {258, 1387}), l({258, 1387}, {554, 391}),
-      q({554, 391}, {561, 364}, {567.5, 333}), q({567.5, 333}, {574, 302}, {580, 268}),
-      q({580, 268}, {587, 302}, {594.5, 333.5}), q({594.5, 333.5}, {602, 365}, {611, 391}),
-      l({611, 391}, {948, 1387}), q({948, 1387}, {954, 1404}, {971.5, 1418.5}),
-      q({971.5, 1418.5}, {989, 1433}, {1014, 1433}), l({1014, 1433}, {1070, 1433}),
-      q({1070, 1433}, {1096, 1433}, {1112, 1420}), q({1112, 1420}, {1128, 1407}, {1136, 1387}),
-      l({1136, 1387}, {1472, 391}), q({1472, 391}, {1481, 365}, {1488.5, 335}),
-      q({1488.5, 335}, {1496, 305}, {1502, 273}), q({1502, 273}, {1508, 305}, {1514, 335}),
-      q({1514, 335}, {1520, 365}, {1527, 391}), l({1527, 391}, {1824, 1387}),
-      q({1824, 1387}, {1829, 1405}, {1846.5, 1419}), q({1846.5, 1419}, {1864, 1433}, {1889, 1433}),
-      l({1889, 1433}, {2040, 1433}), l({2040, 1433}, {1593, 0}), l({1593, 0}, {1419, 0}),
-      l({1419, 0}, {1056, 1093}), q({1056, 1093}, {1045, 1124}, {1036, 1165}),
-      q({1036, 1165}, {1031, 1145}, {1026.5, 1126.5}), q({1026.5, 1126.5}, {1022, 1108}, {1017, 1093}),
-      l({1017, 1093}, {652, 0}), l({652, 0}, {478, 0}), l({478, 0}, {31, 1433})};
-  w.nodes.assign(w.segments.size(), NodeFlags{});
+  const Contour w = unflagged({
+      line_of({31, 1433}, {192, 1433}), quad_of({192, 1433}, {218, 1433}, {235.5, 1420}),
+      quad_of({235.5, 1420}, {253, 1407}, {258, 1387}), line_of({258, 1387}, {554, 391}),
+      quad_of({554, 391}, {561, 364}, {567.5, 333}), quad_of({567.5, 333}, {574, 302}, {580, 268}),
+      quad_of({580, 268}, {587, 302}, {594.5, 333.5}), quad_of({594.5, 333.5}, {602, 365}, {611, 391}),
+      line_of({611, 391}, {948, 1387}), quad_of({948, 1387}, {954, 1404}, {971.5, 1418.5}),
+      quad_of({971.5, 1418.5}, {989, 1433}, {1014, 1433}), line_of({1014, 1433}, {1070, 1433}),
+      quad_of({1070, 1433}, {1096, 1433}, {1112, 1420}), quad_of({1112, 1420}, {1128, 1407}, {1136, 1387}),
+      line_of({1136, 1387}, {1472, 391}), quad_of({1472, 391}, {1481, 365}, {1488.5, 335}),
+      quad_of({1488.5, 335}, {1496, 305}, {1502, 273}), quad_of({1502, 273}, {1508, 305}, {1514, 335}),
+      quad_of({1514, 335}, {1520, 365}, {1527, 391}), line_of({1527, 391}, {1824, 1387}),
+      quad_of({1824, 1387}, {1829, 1405}, {1846.5, 1419}), quad_of({1846.5, 1419}, {1864, 1433}, {1889, 1433}),
+      line_of({1889, 1433}, {2040, 1433}), line_of({2040, 1433}, {1593, 0}), line_of({1593, 0}, {1419, 0}),
+      line_of({1419, 0}, {1056, 1093}), quad_of({1056, 1093}, {1045, 1124}, {1036, 1165}),
+      quad_of({1036, 1165}, {1031, 1145}, {1026.5, 1126.5}), quad_of({1026.5, 1126.5}, {1022, 1108}, {1017, 1093}),
+      line_of({1017, 1093}, {652, 0}), line_of({652, 0}, {478, 0}), line_of({478, 0}, {31, 1433})});
   const double upm = 2000.0;
-  const FairSettings settings = resolve_settings(options_for(FairProfile::text, Rounding::integers), upm);
-  const ContourFairing r = fair_contour(w, settings);
-  ASSERT_TRUE(r.faired) << r.reason;
-  EXPECT_LE(brute_force_hausdorff(w, r.contour), settings.tolerance_units);
+  const ContourFairing r = faired_on_grid(w, FairProfile::text, upm);
   const auto sharpest = [upm](const Contour& c) {
     double most = 0.0;
     for (const Segment& s : c.segments)
@@ -712,32 +711,23 @@ TEST(ContourFairing, AStalledChainJumpingPastItsOwnCurvatureIsKeptAsDrawn) {
 // a jump, and a line join is none; it now tries the line join's far node too, at the places
 // where its handle lands on the line: one unit over, 23 steps (κ·UPM 0.099 into the line → 0).
 TEST(ContourFairing, ALineJoinsFarNodeMovesWhereItsHandleLandsOnTheLine) {
-  using P = Vec2;
-  const auto l = [](P a, P b) { return Segment{Line{{a, b}}}; };
-  const auto q = [](P a, P b, P c) { return Segment{Quad{{a, b, c}}}; };
-  Contour s;
-  s.segments = {
-      l({1047, 1085}, {1047, 813}), q({1047, 813}, {932, 861}, {825, 885}),
-      q({825, 885}, {718, 909}, {623, 909}), q({623, 909}, {521, 909}, {471.5, 883.5}),
-      q({471.5, 883.5}, {422, 858}, {422, 805}), q({422, 805}, {422, 762}, {459.5, 739}),
-      q({459.5, 739}, {497, 716}, {594, 705}), l({594, 705}, {657, 696}),
-      q({657, 696}, {932, 661}, {1027, 581}), q({1027, 581}, {1122, 501}, {1122, 330}),
-      q({1122, 330}, {1122, 151}, {990, 61}), q({990, 61}, {858, -29}, {596, -29}),
-      q({596, -29}, {485, -29}, {366.5, -11.5}), q({366.5, -11.5}, {248, 6}, {123, 41}),
-      l({123, 41}, {123, 313}), q({123, 313}, {230, 261}, {342.5, 235}),
-      q({342.5, 235}, {455, 209}, {571, 209}), q({571, 209}, {676, 209}, {729, 238}),
-      q({729, 238}, {782, 267}, {782, 324}), q({782, 324}, {782, 372}, {745.5, 395.5}),
-      q({745.5, 395.5}, {709, 419}, {600, 432}), l({600, 432}, {537, 440}),
-      q({537, 440}, {298, 470}, {202, 551}), q({202, 551}, {106, 632}, {106, 797}),
-      q({106, 797}, {106, 975}, {228, 1061}), q({228, 1061}, {350, 1147}, {602, 1147}),
-      q({602, 1147}, {701, 1147}, {810, 1132}), q({810, 1132}, {919, 1117}, {1047, 1085})};
-  s.nodes.assign(s.segments.size(), NodeFlags{});
+  const Contour s = unflagged({
+      line_of({1047, 1085}, {1047, 813}), quad_of({1047, 813}, {932, 861}, {825, 885}),
+      quad_of({825, 885}, {718, 909}, {623, 909}), quad_of({623, 909}, {521, 909}, {471.5, 883.5}),
+      quad_of({471.5, 883.5}, {422, 858}, {422, 805}), quad_of({422, 805}, {422, 762}, {459.5, 739}),
+      quad_of({459.5, 739}, {497, 716}, {594, 705}), line_of({594, 705}, {657, 696}),
+      quad_of({657, 696}, {932, 661}, {1027, 581}), quad_of({1027, 581}, {1122, 501}, {1122, 330}),
+      quad_of({1122, 330}, {1122, 151}, {990, 61}), quad_of({990, 61}, {858, -29}, {596, -29}),
+      quad_of({596, -29}, {485, -29}, {366.5, -11.5}), quad_of({366.5, -11.5}, {248, 6}, {123, 41}),
+      line_of({123, 41}, {123, 313}), quad_of({123, 313}, {230, 261}, {342.5, 235}),
+      quad_of({342.5, 235}, {455, 209}, {571, 209}), quad_of({571, 209}, {676, 209}, {729, 238}),
+      quad_of({729, 238}, {782, 267}, {782, 324}), quad_of({782, 324}, {782, 372}, {745.5, 395.5}),
+      quad_of({745.5, 395.5}, {709, 419}, {600, 432}), line_of({600, 432}, {537, 440}),
+      quad_of({537, 440}, {298, 470}, {202, 551}), quad_of({202, 551}, {106, 632}, {106, 797}),
+      quad_of({106, 797}, {106, 975}, {228, 1061}), quad_of({228, 1061}, {350, 1147}, {602, 1147}),
+      quad_of({602, 1147}, {701, 1147}, {810, 1132}), quad_of({810, 1132}, {919, 1117}, {1047, 1085})});
   const double upm = 2048.0;
-  const FairSettings settings = resolve_settings(options_for(FairProfile::text, Rounding::integers), upm);
-  const ContourFairing r = fair_contour(s, settings);
-  ASSERT_TRUE(r.faired) << r.reason;
-  EXPECT_FALSE(has_fraction(Outline{{r.contour}}));
-  EXPECT_LE(brute_force_hausdorff(s, r.contour), settings.tolerance_units);
+  const ContourFairing r = faired_on_grid(s, FairProfile::text, upm);
   EXPECT_EQ(g2_jumps(Outline{{r.contour}}, upm), 0);
 }
 
