@@ -81,5 +81,29 @@ TEST(InnerAxisExtrema, CountByArcLengthFromTheEnds) {
   EXPECT_EQ(inner_axis_extrema(Cubic{{0, 0}, {1, 40}, {-56, 136}, {-126, 136}}), 0);
 }
 
+TEST(InnerAxisExtrema, AgreeWithSamplingWhereTheHandlesRunOneWayOrNot) {
+  // Sign changes of x′ and y′ at 20,000 steps, away from the ends by 1 % of the arc length.
+  const auto sampled = [](const Cubic& c) {
+    constexpr int n = 20000;
+    std::vector<double> s{0.0};
+    for (int k = 1; k <= n; ++k) s.push_back(s.back() + distance(c.point_at((k - 1.0) / n), c.point_at(double(k) / n)));
+    int count = 0;
+    for (int axis = 0; axis < 2; ++axis)
+      for (int k = 1; k < n; ++k) {
+        const Vec2 a = c.point_at((k - 1.0) / n), b = c.point_at(double(k) / n), d = c.point_at((k + 1.0) / n);
+        const double before = axis == 0 ? b.x - a.x : b.y - a.y, after = axis == 0 ? d.x - b.x : d.y - b.y;
+        count += before * after < 0.0 && s[k] > 0.01 * s[n] && s[n] - s[k] > 0.01 * s[n];
+      }
+    return count;
+  };
+  const Cubic cubics[] = {
+      {{0, 0}, {10, 5}, {20, 15}, {30, 30}},    // every handle one way: none
+      {{0, 0}, {0, 10}, {10, 20}, {20, 20}},    // vertical, then horizontal at its ends: none inside
+      {{0, 0}, {10, 10}, {20, 10}, {30, -5}},   // rises, then falls: one
+      {{0, 0}, {40, 30}, {-10, 30}, {30, 0}},   // a loop's worth of both: x turns twice, y once
+  };
+  for (const Cubic& c : cubics) EXPECT_EQ(inner_axis_extrema(c), sampled(c)) << c.p[1].x << ", " << c.p[1].y;
+}
+
 }  // namespace
 }  // namespace gf
