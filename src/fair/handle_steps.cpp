@@ -311,14 +311,21 @@ RunChoice best_run(const std::vector<CubicChoices>& run, const CubicJudge& judge
     std::vector<double> next(cur.states(), infeasible);
     back[k].assign(cur.states(), 0);
     const int unrounded_turns = judge.unrounded_node_turns(prev.start, cur.start);
+    // The states before, cheapest first: a join only adds to a state's cost, so once one costs
+    // more than the best found, none after it can do better. Ties go to the lower state, as in
+    // index order.
+    std::vector<std::size_t> order(prev.states());
+    for (std::size_t s = 0; s < order.size(); ++s) order[s] = s;
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cost[a] < cost[b]; });
     for (std::size_t t = 0; t < cur.states(); ++t) {
       if (cur.cost[t] == infeasible) continue;
-      for (std::size_t s = 0; s < prev.states(); ++s) {
-        if (cost[s] == infeasible) continue;
+      for (const std::size_t s : order) {
+        if (cost[s] == infeasible || cost[s] > next[t]) break;
         const double c = cost[s] + jump_cost(jump(prev.k_end[s], cur.k_start[t], flat));
-        if (c >= next[t]) continue;  // a node's turns only add to it
+        const auto better = [&](double v) { return v < next[t] || (v == next[t] && s < back[k][t]); };
+        if (!better(c)) continue;  // a node's turns only add to it
         const double with_turns = c + judge.node_turn_cost(*prev.traits[s], *cur.traits[t], unrounded_turns);
-        if (with_turns < next[t]) next[t] = with_turns, back[k][t] = s;
+        if (better(with_turns)) next[t] = with_turns, back[k][t] = s;
       }
       next[t] += cur.cost[t];
     }
