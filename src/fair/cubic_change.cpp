@@ -32,8 +32,9 @@ double moved_distance(const Cubic& a, const Cubic& b, double within) {
 namespace {
 
 // Whether x′ (or y′) keeps one sign inside (0, 1): its Bernstein coefficients, 3·(P1 − P0),
-// 3·(P2 − P1) and 3·(P3 − P2), none of the nonzero ones of the other sign (a zero one at an end
-// is a root at that end, which inner_axis_extrema does not count).
+// 3·(P2 − P1) and 3·(P3 − P2), none of the nonzero ones of the other sign. A zero one leaves
+// the sum of the others, one-signed inside; its roots lie at the ends, which
+// inner_axis_extrema does not count.
 bool monotone(double a, double b, double c) {
   return (a >= 0.0 && b >= 0.0 && c >= 0.0) || (a <= 0.0 && b <= 0.0 && c <= 0.0);
 }
@@ -44,7 +45,7 @@ int inner_axis_extrema(const Cubic& c) {
   // Most cubics of an outline run monotone in x and y between nodes at their extrema: no
   // roots to isolate.
   const Vec2 d0 = c.p[1] - c.p[0], d1 = c.p[2] - c.p[1], d2 = c.p[3] - c.p[2];
-  if (monotone(d0.x, d1.x, d2.x) && monotone(d0.y, d1.y, d2.y) && d1.x != 0.0 && d1.y != 0.0) return 0;
+  if (monotone(d0.x, d1.x, d2.x) && monotone(d0.y, d1.y, d2.y)) return 0;
   // By arc length, not t: a long handle crowds the first hundredth of t into a few units.
   const Segment whole(c);
   std::optional<double> length;  // only for a cubic with an extremum inside (0, 1)

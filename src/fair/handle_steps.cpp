@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <numeric>
 #include <numbers>
 
 #include "fair/cubic_change.hpp"
@@ -315,7 +316,7 @@ RunChoice best_run(const std::vector<CubicChoices>& run, const CubicJudge& judge
     // more than the best found, none after it can do better. Ties go to the lower state, as in
     // index order.
     std::vector<std::size_t> order(prev.states());
-    for (std::size_t s = 0; s < order.size(); ++s) order[s] = s;
+    std::iota(order.begin(), order.end(), std::size_t{0});
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cost[a] < cost[b]; });
     for (std::size_t t = 0; t < cur.states(); ++t) {
       if (cur.cost[t] == infeasible) continue;
@@ -810,10 +811,11 @@ bool polish_jumping_run(std::vector<OutlineNode>& nodes, const std::vector<Outli
     // its handle lands on the line (the join itself, κ = 0 wanted where the curve leaves the
     // line, is no node to move: its far node is).
     const std::size_t next = (i + 1) % n, prev = (i + n - 1) % n;
-    const bool beside = !lone && (join_jump(joins, next, flat) > target_jump || join_jump(joins, prev, flat) > target_jump);
+    const bool next_jumps = join_jump(joins, next, flat) > target_jump, prev_jumps = join_jump(joins, prev, flat) > target_jump;
+    const bool beside = !lone && (next_jumps || prev_jumps);
     std::optional<std::size_t> line_join;
-    for (const std::size_t k : {next, prev})
-      if (lone && joins.meets_line(k) && steps[k] && join_jump(joins, k, flat) > target_jump) line_join = k;
+    if (lone && next_jumps && joins.meets_line(next) && steps[next]) line_join = next;
+    if (lone && prev_jumps && joins.meets_line(prev) && steps[prev]) line_join = prev;
     const bool own = join_jump(joins, i, flat) > target_jump || turns_too_often(nodes, joins, judge, i);
     if (!own && !beside && !line_join) continue;
     const bool only_on_line = !own && !beside;
