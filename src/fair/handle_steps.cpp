@@ -139,6 +139,23 @@ int turns_at_node(const CubicTraits& before, const CubicTraits& after, double hy
   return joined.turns - alone.turns;
 }
 
+// The unrounded cubic i with each end that meets a line moved along its tangent as far as
+// rounding moved that end along it (line_rounding slides a curve's end along its line, its
+// handle's tip kept): what a cubic from the slid end should be measured against.
+Cubic along_lines(Cubic c, const std::vector<OutlineNode>& rounded, std::size_t i, const OutlineJoins& joins) {
+  const std::size_t j = (i + 1) % joins.size();
+  auto slide = [](Vec2& end, Vec2 handle, Vec2 to) {
+    const Vec2 t = handle - end;
+    const double length = norm(t);
+    if (length == 0.0) return;
+    const Vec2 u = t / length;
+    end = end + u * dot(u, to - end);
+  };
+  if (joins.meets_line(i)) slide(c.p[0], c.p[1], rounded[i].point);
+  if (joins.meets_line(j)) slide(c.p[3], c.p[2], rounded[j].point);
+  return c;
+}
+
 // Every cubic of the outline against its unrounded self. How far each may move to gain G2 is
 // set once: its allowance, or as far as rounding alone already put it. Each candidate is
 // measured once, however many passes weigh it.
@@ -150,7 +167,7 @@ class CubicJudge {
         inflection_handles_(limits.inflection_handles), node_turns_(limits.node_turns) {
     for (std::size_t i = 0; i < rounded.size(); ++i) {
       if (!joins.is_cubic(i)) continue;
-      unrounded_[i] = outline_cubic(ideal, i);
+      unrounded_[i] = along_lines(outline_cubic(ideal, i), rounded, i, joins);
       const double allowance = limits.allowance_at(i);
       allowed_[i] = std::max(allowance, moved_distance(outline_cubic(rounded, i), unrounded_[i], allowance));
       // κ turns count from 1 % of the outline's largest unrounded |κ|, as the check counts them.

@@ -704,6 +704,29 @@ TEST(ContourFairing, AStalledChainJumpingPastItsOwnCurvatureIsKeptAsDrawn) {
                           [](const FairedPiece& p) { return p.kind == FairedPieceKind::as_drawn; }));
 }
 
+// Lato's Y (OFL; UPM 2000, text): each arm is a line whose nearest grid points leave it no
+// short step, so rounding slides the end the serif's curve meets 10 units back along it, to a
+// step of (10, −17). Each cubic was then measured against its unslid self, and every handle
+// that put its far handle on the line (κ = 0 at the join) counted as an 8.8-unit move: both
+// joins kept κ·UPM up to 4.2 and an inflection each. Measured against itself slid along the
+// line too, the curve meets both arms with κ = 0.
+TEST(ContourFairing, ACurveWhoseEndSlidAlongItsLineStillMeetsItWithZeroCurvature) {
+  const Contour y = unflagged({
+      line_of({721, 571}, {721, 0}), line_of({721, 0}, {527, 0}), line_of({527, 0}, {527, 571}),
+      line_of({527, 571}, {2, 1433}), line_of({2, 1433}, {172, 1433}), quad_of({172, 1433}, {198, 1433}, {213, 1420.5}),
+      quad_of({213, 1420.5}, {228, 1408}, {239, 1388}), line_of({239, 1388}, {567, 831}),
+      quad_of({567, 831}, {585, 796}, {599.5, 765.5}), quad_of({599.5, 765.5}, {614, 735}, {625, 705}),
+      quad_of({625, 705}, {636, 735}, {650, 765.5}), quad_of({650, 765.5}, {664, 796}, {682, 831}),
+      line_of({682, 831}, {1009, 1388}), quad_of({1009, 1388}, {1018, 1405}, {1034, 1419}),
+      quad_of({1034, 1419}, {1050, 1433}, {1075, 1433}), line_of({1075, 1433}, {1246, 1433}),
+      line_of({1246, 1433}, {721, 571})});
+  const double upm = 2000.0;
+  const ContourFairing r = faired_on_grid(y, FairProfile::text, upm);
+  ASSERT_TRUE(r.faired) << r.reason;
+  EXPECT_EQ(g2_jumps(Outline{{r.contour}}, upm), 0);
+  EXPECT_EQ(inflections(r.contour, upm), inflections(y, upm));
+}
+
 // DejaVu Sans Bold's s (Bitstream Vera licence; UPM 2048, text): the spine's upper line, on the
 // grid (7, −1), takes the curve from the top bowl with κ = 0 only where the curve's far handle
 // lies exactly on it, which the far node's (1, −2) crosses at no whole step from where it was
