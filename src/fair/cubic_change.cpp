@@ -90,6 +90,7 @@ CurvatureShape curvature_shape(const Cubic& c, double hysteresis) {
     last_signed = kappa;
   }
   shape.turns = whole.turns;
+  if (shape.sign_changes == 0 && last_signed != 0.0) shape.bend = last_signed > 0.0 ? 1 : -1;
   return shape;
 }
 

@@ -56,6 +56,8 @@ struct TurnCounter {
 /// turns (TurnCounter with `hysteresis`).
 struct CurvatureShape {
   int sign_changes = 0;
+  /// +1 or −1 where κ keeps that sign throughout (zeros aside), else 0.
+  int bend = 0;
   double variation = 0.0, largest = 0.0;
   int turns = 0;
   /// κ over the first half (t = 0, 1/32, …, 1/2) and the counter's state after the second

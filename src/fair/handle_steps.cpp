@@ -37,6 +37,14 @@ constexpr double turn_weight = 3.0, most_turn_cost = 1.9;
 // We Create's brush ends: 3-unit cubics rounded into loops, 14 of its 54 missing extrema.
 constexpr double fold_chord = 16.0;
 constexpr double fold_turn = 0.5 * std::numbers::pi;  // turning beyond the unrounded cubic's
+// A cubic bending wholly the other way from its unrounded self (a nearly straight cubic whose
+// rounded ends tilt it across its chord) puts an inflection at a node between it and its
+// neighbours: weighed under any jump over the target, over every one within it.
+constexpr double flip_weight = 2.0;
+double flip_cost(const CurvatureShape& rounded, const CurvatureShape& unrounded) {
+  return rounded.bend * unrounded.bend < 0 ? flip_weight : 0.0;
+}
+
 double turn_cost(int added) { return std::min(most_turn_cost, turn_weight * std::max(0, added)); }
 
 // The jump between two curvatures, relative to the larger unless both are flat.
@@ -274,6 +282,8 @@ CubicChoices cubic_choices(const std::vector<OutlineNode>& nodes, std::span<cons
         // Where the grid allows only near zero, or a corner's handle moves, the cubic must not
         // bend the other way near its end: an inflection the unrounded cubic does not have.
         if (t.shape.sign_changes > ideal.shape.sign_changes) cost += wrong_way;
+        // Nor bend wholly the other way.
+        cost += flip_cost(t.shape, ideal.shape);
         // Nor turn horizontal or vertical inside: an extremum without a node.
         if (t.extrema > ideal.extrema) cost += wrong_way;
         // Nor fold back on itself past its chord.
@@ -463,8 +473,10 @@ class NodeChange {
   // The curvature extrema both cubics at i add, weighed as the cubic choice weighs them.
   double turns_cost() const {
     double cost = 0.0;
-    for (const std::size_t k : {h_, i_})
-      cost += turn_cost(judge_.traits(k, outline_cubic(nodes_, k)).shape.turns - judge_.unrounded(k).shape.turns);
+    for (const std::size_t k : {h_, i_}) {
+      const CurvatureShape &now = judge_.traits(k, outline_cubic(nodes_, k)).shape, &unrounded = judge_.unrounded(k).shape;
+      cost += turn_cost(now.turns - unrounded.turns) + flip_cost(now, unrounded);
+    }
     return cost;
   }
 

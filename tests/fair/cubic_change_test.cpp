@@ -33,6 +33,20 @@ TEST(CurvatureShape, MonotoneCurvatureAndStraightLinesDoNotTurn) {
   EXPECT_EQ(turns(Cubic{{0, 0}, {1, 1}, {2, 2}, {3, 3}}, 1e-9), 0);
 }
 
+TEST(CurvatureShape, BendIsTheSignCurvatureKeepsAndNoneForAnSOrALine) {
+  // The arch turns clockwise throughout (κ < 0); mirrored, anticlockwise. An S (handles on
+  // opposite sides of its chord) changes sign once, so it bends no one way; nor does a line.
+  const Cubic arch{{0, 0}, {1, 2}, {2, 2}, {3, 0}}, mirrored{{0, 0}, {1, -2}, {2, -2}, {3, 0}};
+  EXPECT_EQ(curvature_shape(arch, 0.0).bend, -1);
+  EXPECT_EQ(curvature_shape(mirrored, 0.0).bend, 1);
+  const CurvatureShape s = curvature_shape(Cubic{{0, 0}, {1, 1}, {2, -1}, {3, 0}}, 0.0);
+  EXPECT_EQ(s.sign_changes, 1);
+  EXPECT_EQ(s.bend, 0);
+  EXPECT_EQ(curvature_shape(Cubic{{0, 0}, {1, 1}, {2, 2}, {3, 3}}, 0.0).bend, 0);
+  // Flat at one end (a curve meeting a line: its far handle on the line) still bends one way.
+  EXPECT_EQ(curvature_shape(Cubic{{0, 0}, {1, 0}, {2, 0}, {3, 1}}, 0.0).bend, 1);
+}
+
 TEST(TurnCounter, ARiseOrFallCountsOnceItPassesTheHysteresis) {
   // Up to 3 with a dip of 0.5 on the way, then down to 0: one turn at 3 when the dip is under
   // the hysteresis, three (1, 0.5, 3) when over it.

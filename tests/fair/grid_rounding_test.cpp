@@ -186,6 +186,32 @@ TEST(GridRounding, ACurveLeavesADiagonalLineWithZeroCurvature) {
   for (std::size_t i = 0; i < nodes.size(); ++i) EXPECT_LE(distance(r[i].point, nodes[i].point), 2.0) << "node " << i;
 }
 
+// Liberation Sans's W, unrounded: the right stroke of its first V, a nearly straight S-free
+// run of two cubics between the corners at its foot and its top (κ·UPM under 0.3 throughout).
+// Rounded, whole steps tilted the node's far handles either way, and one cubic came out
+// bending the other way from its unrounded self: an inflection at the node, which the check
+// counts however flat. A cubic bending wholly the other way now costs more than any choice
+// that keeps the jumps within the target.
+TEST(GridRounding, ANearlyStraightCubicKeepsTheWayItBends) {
+  const std::vector<OutlineNode> nodes{
+      node(Vec2{544.0, 168.0}, std::nullopt, Vec2{590.27, 382.55}, false),
+      node(Vec2{703.13, 790.42}, Vec2{639.31, 562.22}, Vec2{721.93, 857.64}),
+      node(Vec2{877.0, 1409.0}, Vec2{799.55, 1134.8}, std::nullopt, false),
+  };
+  HandleStepLimits limits;
+  limits.flat_curvature = 0.5 / 2048.0;
+  limits.allowance = 1.6;  // Liberation Sans's tolerance of 2.56 units, most of it left
+  const std::vector<OutlineNode> r = round_to_grid(nodes, false, limits);
+
+  ASSERT_EQ(r.size(), nodes.size());
+  for (std::size_t i = 0; i < 2; ++i) {
+    const CurvatureShape before = curvature_shape(outline_cubic(nodes, i), 0.0);
+    const CurvatureShape after = curvature_shape(outline_cubic(r, i), 0.0);
+    ASSERT_NE(before.bend, 0) << "cubic " << i;
+    EXPECT_EQ(after.bend, before.bend) << "cubic " << i;
+  }
+}
+
 // Because We Build's k, unrounded: where the leg leaves the stem the pen turned back within
 // three units, and the last cubic of that hook meets a line of step (−1, 2) a unit from its
 // start. Choosing whole steps for κ = 0 at the line join, pass after pass, grew the handle on
