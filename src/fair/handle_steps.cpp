@@ -32,6 +32,13 @@ constexpr double variation_weight = 3.0;
 // jump over the target (at least 4) and G2 stays first. Measured, a-z A-Z: dkg extrema 0.77 ->
 // 0.70x, Because We Learn 0.79 -> 0.72x; uncapped, Inter's g kept a jump.
 constexpr double turn_weight = 3.0, most_turn_cost = 1.9;
+// A turn of κ at a node the unrounded outline lacks there (a tooth of the comb where whole
+// steps set the node's two ends a few per cent apart; handwriting only): weighed as a jump of
+// 8 % (1 + 100·0.08), so the grid would rather leave a small jump the check barely counts than
+// a tooth it counts as two extrema. Measured, a–z A–Z rounded, 3 → 9: Because We Learn extrema
+// 0.506× → 0.483× (the bar 0.5×; 6 to 20 all come under it), dkg g2-jumps 0.95 → 1.25 % (the
+// bar 2 %).
+constexpr double node_turn_weight = 9.0;
 // A cubic shorter than this (units) is checked for folding into a loop or cusp within its chord
 // (cubic_turning); a longer one that folds reaches past its chord (overreach_length). Because
 // We Create's brush ends: 3-unit cubics rounded into loops, 14 of its 54 missing extrema.
@@ -191,11 +198,11 @@ class CubicJudge {
   /// HandleStepLimits::inflection_handles.
   bool inflection_handles() const { return inflection_handles_; }
   /// The turns of κ at the node between cubics h and i beyond the unrounded outline's there
-  /// (`unrounded_turns`, unrounded_node_turns(h, i)), as an extremum inside a cubic costs;
-  /// none unless HandleStepLimits::node_turns.
+  /// (`unrounded_turns`, unrounded_node_turns(h, i)), each node_turn_weight; none unless
+  /// HandleStepLimits::node_turns.
   double node_turn_cost(const CubicTraits& before, const CubicTraits& after, int unrounded_turns) const {
     if (!node_turns_) return 0.0;
-    return turn_weight * std::max(0, turns_at_node(before, after, hysteresis_) - unrounded_turns);
+    return node_turn_weight * std::max(0, turns_at_node(before, after, hysteresis_) - unrounded_turns);
   }
   int unrounded_node_turns(std::size_t h, std::size_t i) const {
     return node_turns_ ? turns_at_node(ideal_[h], ideal_[i], hysteresis_) : 0;

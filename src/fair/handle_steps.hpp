@@ -44,8 +44,8 @@ struct HandleStepLimits {
   bool inflection_handles = false;
   /// Where the runs are chosen, a turn of κ at a node the unrounded outline has not there (the
   /// end of one cubic and the start of the next bending towards the node's curvature, which
-  /// whole steps set a few per cent off: a tooth of the comb) costs as one inside a cubic
-  /// does, and the polish also takes the runs where a node or cubic turns so. Handwriting
+  /// whole steps set a few per cent off: a tooth of the comb) costs as a jump of 8 % does,
+  /// and the polish also takes the runs where a node or cubic turns so. Handwriting
   /// only, where the check's hysteresis, 1 % of the outline's largest |κ|, is finer than the
   /// grid sets curvature at a short cubic's end. dkg a–z A–Z extrema: the cost 0.605× →
   /// 0.578× (at 1.2 % of the em); with the guide's lobes merged as well, the polish 0.533× →
