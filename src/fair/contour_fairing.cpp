@@ -450,8 +450,9 @@ constexpr int kink_passes = 2;
 
 // The kinks left between two lines (no run passes through them, and merging the lines strays:
 // Inter's Q tail, Cantarell's y) filleted within what the faired contour leaves of the tolerance.
-// On the grid, those whose lines have no whole legs within that are then filleted at a moved
-// vertex, first within the same allowance (fillet_line_kinks), then within nearly the whole
+// On the grid, those whose lines have no whole legs within that are filleted at a moved vertex
+// first (with a same-way neighbour across a line, before that neighbour's own fillet takes half
+// the line), first within the same allowance, then within nearly the whole
 // tolerance: the lines are the source's, and the contour's largest distance lies elsewhere,
 // often a curve's (Liberation Sans's M came 2.26 units from its source at a tolerance of 2.56,
 // which left its stem's kinks 0.28). The smaller allowance first keeps the vertex close: Open
@@ -467,7 +468,10 @@ void fillet_kinks(ContourFairing& out, const Contour& source, const FairSettings
     out.deviation = std::max(out.deviation, d);
   };
   const bool grid = settings.rounding == Rounding::integers;
-  take(fillet_line_kinks(out.contour, 0.95 * (t - out.deviation), grid));
+  const double left = 0.95 * (t - out.deviation);
+  if (grid)
+    for (const double allowance : {left, 0.9 * t}) take(fillet_legless_kinks_at_moved_vertices(out.contour, left, allowance));
+  take(fillet_line_kinks(out.contour, left, grid));
   if (grid) take(fillet_kinks_at_moved_vertices(out.contour, 0.9 * t));
 }
 

@@ -183,14 +183,40 @@ std::optional<Vec2> lines_meet(Vec2 a0, Vec2 a1, Vec2 b0, Vec2 b1) {
   return a0 + da * (cross(b0 - a0, db) / c);
 }
 
-}  // namespace
+// Node k's join, for every node.
+std::vector<std::optional<Join>> joins_by_node(const Contour& contour) {
+  std::vector<std::optional<Join>> join_at(contour.node_count());
+  for (const Join& j : joins_of(contour)) join_at[j.node] = j;
+  return join_at;
+}
 
-Contour fillet_kinks_at_moved_vertices(const Contour& contour, double allowance) {
+// Each kink's legs for a fillet with whole legs at node k, none where no legs do.
+std::vector<std::optional<Legs>> whole_legs(const Contour& contour, const std::vector<bool>& kink,
+                                            double allowance_units, bool integer_grid) {
+  const std::size_t n = contour.segments.size();
+  const auto line = [&](std::size_t i) { return std::get_if<Line>(&contour.segments[i % n]); };
+  // A line with a kink at both ends gives each fillet half of it; else the whole.
+  const auto most = [&](std::size_t i, std::size_t other_end) {
+    const Line& l = *line(i);
+    return norm(l.end() - l.start()) * (other_end < kink.size() && kink[other_end] ? 0.5 : 1.0);
+  };
+  std::vector<std::optional<Legs>> at(kink.size());
+  for (std::size_t k = 0; k < n; ++k) {
+    if (!kink[k]) continue;
+    const std::size_t before = (k + n - 1) % n;
+    at[k] = fillet_legs(*line(before), *line(k), most(before, before), most(k, contour.closed ? (k + 1) % n : k + 1),
+                        allowance_units, integer_grid);
+  }
+  return at;
+}
+
+// fillet_kinks_at_moved_vertices, only at the kinks `wanted` marks (all where it is empty), or
+// at a pair of which it marks either.
+Contour moved_vertex_fillets(const Contour& contour, double allowance, const std::vector<bool>& wanted) {
   const std::size_t n = contour.segments.size();
   if (n < 3 || !contour.closed) return contour;
   const auto line = [&](std::size_t i) { return std::get_if<Line>(&contour.segments[i % n]); };
-  std::vector<std::optional<Join>> join_at(n);
-  for (const Join& j : joins_of(contour)) join_at[j.node % n] = j;
+  const std::vector<std::optional<Join>> join_at = joins_by_node(contour);
   const auto corner = [&](std::size_t k) {
     const std::optional<Join>& j = join_at[k % n];
     return j && j->kind == JoinKind::corner;
@@ -206,6 +232,7 @@ Contour fillet_kinks_at_moved_vertices(const Contour& contour, double allowance)
   for (std::size_t k = 0; k < n; ++k) {
     if (!kink[k] || taken[(k + n - 1) % n] || taken[k]) continue;
     const bool pair = kink[(k + 1) % n] && !taken[(k + 1) % n] && way(*join_at[(k + 1) % n]) == way(*join_at[k]);
+    if (!wanted.empty() && !wanted[k] && !(pair && wanted[(k + 1) % n])) continue;
     const std::size_t first = (k + n - 1) % n, lines = pair ? 3 : 2, last = first + lines - 1;
     // Not across the contour's seam, whose first node stays where it was.
     if (last >= n || !corner(first) || !corner((last + 1) % n)) continue;
@@ -244,30 +271,20 @@ Contour fillet_kinks_at_moved_vertices(const Contour& contour, double allowance)
   return out;
 }
 
+}  // namespace
+
+Contour fillet_kinks_at_moved_vertices(const Contour& contour, double allowance) {
+  return moved_vertex_fillets(contour, allowance, {});
+}
+
 namespace {
 
 // The kinks whose lines have whole legs for a fillet, filleted.
 Contour fillet_with_whole_legs(const Contour& contour, double allowance_units, bool integer_grid) {
   const std::size_t n = contour.segments.size();
-  const auto line = [&](std::size_t i) { return std::get_if<Line>(&contour.segments[i % n]); };
-  std::vector<std::optional<Join>> join_at(contour.node_count());
-  for (const Join& j : joins_of(contour)) join_at[j.node] = j;
-  const std::vector<bool> kink = kinks_to_fillet(contour, join_at);
-  // A line with a kink at both ends gives each fillet half of it; else the whole.
-  const auto most = [&](std::size_t i, std::size_t other_end) {
-    const Line& l = *line(i);
-    return norm(l.end() - l.start()) * (other_end < kink.size() && kink[other_end] ? 0.5 : 1.0);
-  };
-  std::vector<std::optional<Legs>> at(kink.size());
-  bool any = false;
-  for (std::size_t k = 0; k < n; ++k) {
-    if (!kink[k]) continue;
-    const std::size_t before = (k + n - 1) % n;
-    at[k] = fillet_legs(*line(before), *line(k), most(before, before), most(k, contour.closed ? (k + 1) % n : k + 1),
-                        allowance_units, integer_grid);
-    any = any || at[k].has_value();
-  }
-  if (!any) return contour;
+  const std::vector<std::optional<Legs>> at =
+      whole_legs(contour, kinks_to_fillet(contour, joins_by_node(contour)), allowance_units, integer_grid);
+  if (std::none_of(at.begin(), at.end(), [](const std::optional<Legs>& l) { return l.has_value(); })) return contour;
 
   Contour out;
   out.closed = contour.closed;
@@ -299,6 +316,16 @@ Contour fillet_with_whole_legs(const Contour& contour, double allowance_units, b
 Contour fillet_line_kinks(const Contour& contour, double allowance_units, bool integer_grid) {
   const Contour filleted = fillet_with_whole_legs(contour, allowance_units, integer_grid);
   return integer_grid ? fillet_kinks_at_moved_vertices(filleted, allowance_units) : filleted;
+}
+
+Contour fillet_legless_kinks_at_moved_vertices(const Contour& contour, double leg_allowance_units,
+                                               double allowance_units) {
+  const std::vector<bool> kink = kinks_to_fillet(contour, joins_by_node(contour));
+  const std::vector<std::optional<Legs>> legs = whole_legs(contour, kink, leg_allowance_units, true);
+  std::vector<bool> legless(kink.size());
+  for (std::size_t k = 0; k < kink.size(); ++k) legless[k] = kink[k] && !legs[k];
+  if (std::none_of(legless.begin(), legless.end(), [](bool b) { return b; })) return contour;
+  return moved_vertex_fillets(contour, allowance_units, legless);
 }
 
 }  // namespace gf

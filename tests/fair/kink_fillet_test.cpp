@@ -94,6 +94,32 @@ TEST(KinkFillet, KinksWithoutWholeLegsAreFilletedAtAMovedVertex) {
   }
 }
 
+// Liberation Sans's M (OFL): its inner stroke tapers in three lines, 2.79° apart at (420, 960)
+// and 1.53° at (364, 1130), between corners. The first kink's legs would lie on a line of step
+// (−123, 320), none within the 0.29 units the contour leaves; the second has whole legs, and
+// filleted first it took half the line between them, leaving the first between lines whose
+// far ends are no longer both corners: a kink no moved vertex could take. The kinks without
+// whole legs go first, with their same-way neighbour, to a moved vertex.
+TEST(KinkFillet, AKinkWithoutWholeLegsTakesItsNeighbourToAMovedVertex) {
+  const Contour source = polygon({{923, 0}, {789, 0}, {420, 960}, {364, 1130}, {331, 1240}, {338, 0}});
+  const double left = 0.29, most = 2.3;
+  // Whole legs first: the neighbour alone, and the kink stays.
+  const Contour neighbour_first = fillet_kinks_at_moved_vertices(fillet_line_kinks(source, left, true), most);
+  bool kinked = false;
+  for (std::size_t i = 0; i < neighbour_first.segments.size(); ++i) {
+    const double turn = degrees(*end_tangent(neighbour_first.segments[i], SegmentEnd::end),
+                                *end_tangent(neighbour_first.segments[(i + 1) % neighbour_first.segments.size()], SegmentEnd::start));
+    kinked = kinked || (turn > 0.0 && turn < 3.0);
+  }
+  EXPECT_TRUE(kinked);
+  // The kink without whole legs first: one fillet for both, every join smooth or a corner.
+  Contour out = source;
+  for (const double allowance : {left, most}) out = fillet_legless_kinks_at_moved_vertices(out, left, allowance);
+  EXPECT_EQ(fillets_checked(out).size(), 1u);
+  EXPECT_LE(test::directed_to_polyline(dense(out), dense(source)), most);
+  EXPECT_LE(test::directed_to_polyline(dense(source), dense(out)), most);
+}
+
 TEST(KinkFillet, WithoutAKinkTheContourComesBackAsItWas) {
   const Contour square = polygon({{0, 0}, {100, 0}, {100, 100}, {0, 100}});
   EXPECT_EQ(fillet_line_kinks(square, 1.0, true).segments.size(), 4u);
