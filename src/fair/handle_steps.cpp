@@ -156,7 +156,9 @@ int turns_at_node(const CubicTraits& before, const CubicTraits& after, double hy
 
 // The unrounded cubic i with each end that meets a line moved along its tangent as far as
 // rounding moved that end along it (line_rounding slides a curve's end along its line, its
-// handle's tip kept): what a cubic from the slid end should be measured against.
+// handle's tip kept): what a cubic from the slid end should be measured against. What that
+// slide strays line_rounding weighed; the rounded contour is measured whole against the source
+// after all (fair/contour_fairing.cpp rounds again within less where it strays).
 Cubic along_lines(Cubic c, const std::vector<OutlineNode>& rounded, std::size_t i, const OutlineJoins& joins) {
   const std::size_t j = (i + 1) % joins.size();
   auto slide = [](Vec2& end, Vec2 handle, Vec2 to) {
@@ -434,8 +436,8 @@ class NodeChange {
     const std::array<double, 3> j = jumps_now();
     return jump_cost(j[0]) + jump_cost(j[1]) + jump_cost(j[2]);
   }
-  /// What either cubic at i costs for an inflection or a curvature extremum its unrounded self
-  /// lacks, as the cubic choice weighs them (a nearly straight cubic whose rounded ends leave
+  /// What either cubic at i costs for an inflection, a bend the other way or a curvature
+  /// extremum its unrounded self lacks, as the cubic choice weighs them (a nearly straight cubic whose rounded ends leave
   /// its chord outside their tangents can only be an S).
   double bend_cost() const { return wrong_way * inflections_added() + turns_cost(); }
   /// Both.
@@ -477,7 +479,8 @@ class NodeChange {
     return added;
   }
 
-  // The curvature extrema both cubics at i add, weighed as the cubic choice weighs them.
+  // The curvature extrema both cubics at i add, and either's bend the other way, weighed as
+  // the cubic choice weighs them.
   double turns_cost() const {
     double cost = 0.0;
     for (const std::size_t k : {h_, i_}) {
