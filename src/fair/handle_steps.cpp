@@ -966,10 +966,10 @@ void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<Outl
     for (std::size_t r = 0; r < runs.size(); ++r) again[r] = again[r] && still_jumps(runs[r]);
     if (std::none_of(again.begin(), again.end(), [](bool b) { return b; })) break;
   }
-  // A run is polished while it jumps or turns so (with polish_lone_jumps, two jumps at most).
+  // A run is polished while it jumps or turns so (with polish_lone_jumps, one jump at most).
   const auto wants_polish = [&](std::span<const std::size_t> run) {
     const int jumps = jumps_in(run);
-    return (jumps > 0 || turns_too_often_in(run)) && (!limits.polish_lone_jumps || jumps <= 2);
+    return (jumps > 0 || turns_too_often_in(run)) && (!limits.polish_lone_jumps || jumps <= 1);
   };
   for (std::size_t r = 0; r < runs.size(); ++r)
     for (int k = 0; k < limits.polish_rounds && wants_polish(runs[r]); ++k)

@@ -775,21 +775,6 @@ TEST(ContourFairing, ACurveWhoseEndSlidAlongItsLineStillMeetsItWithZeroCurvature
   EXPECT_EQ(inflections(r.contour, upm), inflections(y, upm));
 }
 
-// Liberation Serif's R (OFL; UPM 2048, text): the counter of its bowl, rounded, kept two
-// curvature jumps of 7 % and 30 % at neighbouring nodes on the right (κ·UPM 3.97 | 3.68 and
-// 5.33 | 4.09). The polish of a text run took only runs left with a single jump; it now takes
-// those with two as well (whole DejaVu Sans: g2-jumps 1,050 → 991 for 2.6 % more time).
-TEST(ContourFairing, ATextRunLeftWithTwoJumpsIsPolished) {
-  const Contour counter = unflagged({
-      quad_of({931, 969}, {931, 1122}, {856.5, 1186.5}), quad_of({856.5, 1186.5}, {782, 1251}, {595, 1251}),
-      line_of({595, 1251}, {424, 1251}), line_of({424, 1251}, {424, 678}), line_of({424, 678}, {601, 678}),
-      quad_of({601, 678}, {780, 678}, {855.5, 744.5}), quad_of({855.5, 744.5}, {931, 811}, {931, 969})});
-  const double upm = 2048.0;
-  const ContourFairing r = faired_on_grid(counter, FairProfile::text, upm);
-  ASSERT_TRUE(r.faired) << r.reason;
-  EXPECT_EQ(g2_jumps(Outline{{r.contour}}, upm), 0);
-}
-
 // DejaVu Sans Bold's s (Bitstream Vera licence; UPM 2048, text): the spine's upper line, on the
 // grid (7, −1), takes the curve from the top bowl with κ = 0 only where the curve's far handle
 // lies exactly on it, which the far node's (1, −2) crosses at no whole step from where it was
