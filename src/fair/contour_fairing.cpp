@@ -450,13 +450,13 @@ constexpr int kink_passes = 2;
 
 // The kinks left between two lines (no run passes through them, and merging the lines strays:
 // Inter's Q tail, Cantarell's y) filleted within what the faired contour leaves of the tolerance.
-// On the grid, those whose lines have no whole legs within that are filleted at a moved vertex
-// first (with a same-way neighbour across a line, before that neighbour's own fillet takes half
-// the line), first within the same allowance, then within nearly the whole
-// tolerance: the lines are the source's, and the contour's largest distance lies elsewhere,
-// often a curve's (Liberation Sans's M came 2.26 units from its source at a tolerance of 2.56,
-// which left its stem's kinks 0.28). The smaller allowance first keeps the vertex close: Open
-// Sans's d, filleted at the larger alone, had its stem tilted a unit off the vertical.
+// On the grid, those whose lines have no whole legs within that go to a moved vertex first
+// (with a same-way neighbour across a line, before that neighbour's own fillet takes half the
+// line), within the same allowance, then within nearly the whole tolerance: the lines are the
+// source's, and the contour's largest distance lies elsewhere, often a curve's (Liberation
+// Sans's M came 2.26 units from its source at a tolerance of 2.56, which left its stem's kinks
+// 0.28). The smaller allowance first keeps the vertex close: Open Sans's d, filleted at the
+// larger alone, had its stem tilted a unit off the vertical.
 void fillet_kinks(ContourFairing& out, const Contour& source, const FairSettings& settings) {
   const double t = settings.tolerance_units;
   const auto take = [&](const Contour& filleted) {

@@ -437,8 +437,8 @@ class NodeChange {
     return jump_cost(j[0]) + jump_cost(j[1]) + jump_cost(j[2]);
   }
   /// What either cubic at i costs for an inflection, a bend the other way or a curvature
-  /// extremum its unrounded self lacks, as the cubic choice weighs them (a nearly straight cubic whose rounded ends leave
-  /// its chord outside their tangents can only be an S).
+  /// extremum its unrounded self lacks, as the cubic choice weighs them (a nearly straight
+  /// cubic whose rounded ends leave its chord outside their tangents can only be an S).
   double bend_cost() const { return wrong_way * inflections_added() + turns_cost(); }
   /// Both.
   double cost() const { return jump_costs() + bend_cost(); }

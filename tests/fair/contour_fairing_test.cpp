@@ -239,11 +239,18 @@ TEST(ContourFairing, AHairlineIsFairedWithinHalfItsThickness) {
   EXPECT_LE(brute_force_hausdorff(hairline, r.contour), 1.01 * allowed);
 }
 
-// Sign changes of κ along the smooth stretches of a contour (joins within 3° continue a
-// stretch, as the fairing bars count them), from 64 steps per segment, |κ|·UPM under 1e-6 as 0.
+// Where the smooth stretches of a contour start, by segment: at corners (joins within 3°
+// continue a stretch, as the fairing bars count them), and an open contour's first segment.
+std::vector<bool> stretch_starts(const Contour& c) {
+  std::vector<bool> starts(c.segments.size(), !c.closed);
+  for (const Join& j : joins_of(c)) starts[j.node] = j.kind == JoinKind::corner || j.kind == JoinKind::degenerate;
+  return starts;
+}
+
+// Sign changes of κ along the smooth stretches of a contour, from 64 steps per segment, |κ|·UPM
+// under 1e-6 as 0.
 int inflections(const Contour& c, double upm) {
-  std::vector<bool> breaks(c.segments.size(), !c.closed);
-  for (const Join& j : joins_of(c)) breaks[j.node] = j.kind == JoinKind::corner || j.kind == JoinKind::degenerate;
+  const std::vector<bool> breaks = stretch_starts(c);
   int count = 0, sign = 0;
   for (std::size_t k = 0; k < c.segments.size(); ++k) {
     if (breaks[k]) sign = 0;
@@ -377,9 +384,7 @@ TEST(ContourFairing, RoundedHandwritingJoinsStayG2WhereTheirNeighboursMustFollow
 // of the contour's largest |κ|; a closed smooth contour wraps round to its first sample.
 int curvature_turns(const Contour& c, double upm) {
   const std::size_t n = c.segments.size();
-  std::vector<bool> breaks(n, false);
-  if (!c.closed && n > 0) breaks[0] = true;
-  for (const Join& j : joins_of(c)) breaks[j.node] = j.kind == JoinKind::corner || j.kind == JoinKind::degenerate;
+  const std::vector<bool> breaks = stretch_starts(c);
   const auto first_break = std::find(breaks.begin(), breaks.end(), true);
   const std::size_t start = first_break == breaks.end() ? 0 : static_cast<std::size_t>(first_break - breaks.begin());
   std::vector<std::vector<double>> stretches;
@@ -595,23 +600,31 @@ TEST(ContourFairing, RoundingMovesNoCornerPastTheTolerance) {
 // jump is now polished as handwriting's are (HandleStepLimits::polish_lone_jumps): the node at
 // it tried at its grid neighbours and directions, the cubics around it chosen again for each.
 TEST(ContourFairing, ALoneJumpInATextRunIsPolishedAway) {
-  Contour s, S;
-  s.segments = {cubic_of({229, -10}, {348, -10}, {421, 46}, {421, 135}), cubic_of({421, 135}, {421, 312}, {133, 246}, {133, 355}),
-                cubic_of({133, 355}, {133, 397}, {178, 424}, {250, 424}), cubic_of({250, 424}, {291, 424}, {339, 415}, {380, 401}),
-                line_of({380, 401}, {399, 466}), cubic_of({399, 466}, {358, 483}, {309, 492}, {258, 492}),
-                cubic_of({258, 492}, {133, 492}, {53, 437}, {53, 346}), cubic_of({53, 346}, {53, 173}, {340, 245}, {340, 127}),
-                cubic_of({340, 127}, {340, 83}, {301, 58}, {235, 58}), cubic_of({235, 58}, {184, 58}, {116, 72}, {65, 94}),
-                line_of({65, 94}, {46, 29}), cubic_of({46, 29}, {101, 4}, {168, -10}, {229, -10})};
-  S.segments = {cubic_of({263, -10}, {418, -10}, {519, 69}, {519, 191}), cubic_of({519, 191}, {519, 437}, {130, 339}, {130, 518}),
-                cubic_of({130, 518}, {130, 591}, {189, 631}, {295, 631}), cubic_of({295, 631}, {354, 631}, {418, 619}, {468, 598}),
-                line_of({468, 598}, {493, 663}), cubic_of({493, 663}, {434, 689}, {367, 703}, {301, 703}),
-                cubic_of({301, 703}, {146, 703}, {45, 626}, {45, 505}), cubic_of({45, 505}, {45, 267}, {433, 356}, {433, 179}),
-                cubic_of({433, 179}, {433, 109}, {373, 64}, {268, 64}), cubic_of({268, 64}, {205, 64}, {127, 81}, {59, 109}),
-                line_of({59, 109}, {34, 44}), cubic_of({34, 44}, {111, 9}, {189, -10}, {263, -10})};
+  const Contour s = unflagged({
+      cubic_of({229, -10}, {348, -10}, {421, 46}, {421, 135}),
+      cubic_of({421, 135}, {421, 312}, {133, 246}, {133, 355}),
+      cubic_of({133, 355}, {133, 397}, {178, 424}, {250, 424}),
+      cubic_of({250, 424}, {291, 424}, {339, 415}, {380, 401}), line_of({380, 401}, {399, 466}),
+      cubic_of({399, 466}, {358, 483}, {309, 492}, {258, 492}),
+      cubic_of({258, 492}, {133, 492}, {53, 437}, {53, 346}),
+      cubic_of({53, 346}, {53, 173}, {340, 245}, {340, 127}),
+      cubic_of({340, 127}, {340, 83}, {301, 58}, {235, 58}),
+      cubic_of({235, 58}, {184, 58}, {116, 72}, {65, 94}), line_of({65, 94}, {46, 29}),
+      cubic_of({46, 29}, {101, 4}, {168, -10}, {229, -10})});
+  const Contour S = unflagged({
+      cubic_of({263, -10}, {418, -10}, {519, 69}, {519, 191}),
+      cubic_of({519, 191}, {519, 437}, {130, 339}, {130, 518}),
+      cubic_of({130, 518}, {130, 591}, {189, 631}, {295, 631}),
+      cubic_of({295, 631}, {354, 631}, {418, 619}, {468, 598}), line_of({468, 598}, {493, 663}),
+      cubic_of({493, 663}, {434, 689}, {367, 703}, {301, 703}),
+      cubic_of({301, 703}, {146, 703}, {45, 626}, {45, 505}),
+      cubic_of({45, 505}, {45, 267}, {433, 356}, {433, 179}),
+      cubic_of({433, 179}, {433, 109}, {373, 64}, {268, 64}),
+      cubic_of({268, 64}, {205, 64}, {127, 81}, {59, 109}), line_of({59, 109}, {34, 44}),
+      cubic_of({34, 44}, {111, 9}, {189, -10}, {263, -10})});
   constexpr double upm = 1000.0;
   const FairSettings settings = resolve_settings(FairOptions{}, upm);
-  for (Contour* contour : {&s, &S}) {
-    contour->nodes.assign(contour->segments.size(), NodeFlags{});
+  for (const Contour* contour : {&s, &S}) {
     const ContourFairing r = fair_contour(*contour, settings);
     ASSERT_TRUE(r.faired) << r.reason;
     EXPECT_FALSE(has_fraction(Outline{{r.contour}}));
