@@ -54,6 +54,14 @@ double flip_cost(const CurvatureShape& rounded, const CurvatureShape& unrounded)
 
 double turn_cost(int added) { return std::min(most_turn_cost, turn_weight * std::max(0, added)); }
 
+// The curvature variation a rounded cubic adds inside beyond free_variation of its unrounded
+// largest |κ|: a spike a comb would show (a one-step handle with its far handle a unit off the
+// tangent gives κ = 2/3 a unit, a hundred times what the cubic had).
+double variation_cost(const CurvatureShape& rounded, const CurvatureShape& unrounded, double flat) {
+  const double excess = (rounded.variation - unrounded.variation) / std::max(unrounded.largest, flat);
+  return excess > free_variation ? variation_weight * (excess - free_variation) : 0.0;
+}
+
 // The jump between two curvatures, relative to the larger unless both are flat.
 double jump(double k1, double k2, double flat) {
   return std::abs(k1 - k2) / std::max({std::abs(k1), std::abs(k2), flat});
@@ -267,7 +275,7 @@ CubicChoices cubic_choices(const std::vector<OutlineNode>& nodes, std::span<cons
   const CubicTraits& ideal = judge.unrounded(i);
   // κ = 0 at an end that meets a line, or at a smooth node flat before rounding (an inflection,
   // where asked): the far handles nearest that end's tangent line join the choices
-  // (seat_inflections moves the node itself for them).
+  // (seat_flat_nodes moves the node itself for them).
   const bool inflection = judge.inflection_handles();
   const bool zero_start = line_before || (inflection && nodes[i].smooth && std::abs(ideal.k_start) < flat);
   const bool zero_end = line_after || (inflection && nodes[j].smooth && std::abs(ideal.k_end) < flat);
@@ -302,8 +310,7 @@ CubicChoices cubic_choices(const std::vector<OutlineNode>& nodes, std::span<cons
         // Nor gain a curvature extremum (a wobble of the comb).
         cost += turn_cost(t.shape.turns - ideal.shape.turns);
         // Nor gain curvature variation inside (a spike a comb would show), beyond a little.
-        const double excess = (t.shape.variation - ideal.shape.variation) / std::max(ideal.shape.largest, flat);
-        if (excess > free_variation) cost += variation_weight * (excess - free_variation);
+        cost += variation_cost(t.shape, ideal.shape, flat);
         c.cost.push_back(cost);
       }
   };
@@ -436,10 +443,11 @@ class NodeChange {
     const std::array<double, 3> j = jumps_now();
     return jump_cost(j[0]) + jump_cost(j[1]) + jump_cost(j[2]);
   }
-  /// What either cubic at i costs for an inflection, a bend the other way or a curvature
-  /// extremum its unrounded self lacks, as the cubic choice weighs them (a nearly straight
-  /// cubic whose rounded ends leave its chord outside their tangents can only be an S).
-  double bend_cost() const { return wrong_way * inflections_added() + turns_cost(); }
+  /// What either cubic at i costs for an inflection, a bend the other way, a curvature
+  /// extremum or curvature variation its unrounded self lacks, as the cubic choice weighs them
+  /// (a nearly straight cubic whose rounded ends leave its chord outside their tangents can
+  /// only be an S).
+  double bend_cost() const { return wrong_way * inflections_added() + shape_cost(); }
   /// Both.
   double cost() const { return jump_costs() + bend_cost(); }
   /// cost() where it is under `best` and the outline as it stands is an allowed change: the
@@ -479,13 +487,15 @@ class NodeChange {
     return added;
   }
 
-  // The curvature extrema both cubics at i add, and either's bend the other way, weighed as
-  // the cubic choice weighs them.
-  double turns_cost() const {
+  // The curvature extrema and variation both cubics at i add, and either's bend the other way,
+  // weighed as the cubic choice weighs them: without the variation, a nudge that left every
+  // jump as it was could trade a cubic's κ·UPM of 5 at the node for a spike of 667 (EB
+  // Garamond's P, where its bowl meets the stem).
+  double shape_cost() const {
     double cost = 0.0;
     for (const std::size_t k : {h_, i_}) {
       const CurvatureShape &now = judge_.traits(k, outline_cubic(nodes_, k)).shape, &unrounded = judge_.unrounded(k).shape;
-      cost += turn_cost(now.turns - unrounded.turns) + flip_cost(now, unrounded);
+      cost += turn_cost(now.turns - unrounded.turns) + flip_cost(now, unrounded) + variation_cost(now, unrounded, flat_);
     }
     return cost;
   }
@@ -603,23 +613,36 @@ std::optional<Vec2> handle_on_line(const OutlineNode& node, std::optional<Vec2> 
   return h;
 }
 
-// An inflection node (κ = 0 on both sides before rounding) keeps κ = 0 on the grid only where
-// both far handles lie exactly on its tangent line, and each is a whole number of its own
-// node's steps from that node: the tangent line must cross both their handle lines at whole
-// steps. Where the node still jumps, the grid points next to it and the primitive directions
-// within `turn` of its tangent are tried for one whose line does; the far handles go there and
-// the node's own handles, whose lengths set its neighbours' curvature, a step or three either
-// way. Returns the nodes it moved (its direction changed in `steps`).
-std::vector<std::size_t> seat_inflections(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal,
-                                          std::vector<std::optional<Vec2>>& steps, const OutlineJoins& joins,
-                                          std::span<const std::size_t> candidates, CubicJudge& judge, double flat) {
+// Whether node i (joining cubics h and i) is to be flat on the grid: it was before rounding (an
+// inflection), or rounding left one side of it flat (that cubic's far handle on the node's
+// tangent line) and the other not. A curvature of κ·UPM 5 (UPM 1000) at a 5-unit handle wants
+// its far handle a fifth of a unit off the tangent; whole units give 0 there, and the other
+// side, its far handle a unit off, some multiple of it (EB Garamond a–z A–Z: 221 of its 486
+// jumps were so).
+bool flat_node(const std::vector<OutlineNode>& nodes, const CubicJudge& judge, std::size_t h, std::size_t i,
+               double flat) {
+  if (std::abs(judge.unrounded(h).k_end) < flat && std::abs(judge.unrounded(i).k_start) < flat) return true;
+  const double before = node_curvature(outline_cubic(nodes, h), SegmentEnd::end);
+  const double after = node_curvature(outline_cubic(nodes, i), SegmentEnd::start);
+  return std::min(std::abs(before), std::abs(after)) < flat;
+}
+
+// A flat node (flat_node: an inflection, or a node rounding left flat on one side) keeps κ = 0
+// on the grid only where both far handles lie exactly on its tangent line, and each is a
+// whole number of its own node's steps from that node: the tangent line must cross both their
+// handle lines at whole steps. Where the node still jumps, the grid points next to it and the
+// primitive directions within `turn` of its tangent are tried for one whose line does; the far
+// handles go there and the node's own handles, whose lengths set its neighbours' curvature, a
+// step or three either way. Returns the nodes it moved (its direction changed in `steps`).
+std::vector<std::size_t> seat_flat_nodes(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal,
+                                         std::vector<std::optional<Vec2>>& steps, const OutlineJoins& joins,
+                                         std::span<const std::size_t> candidates, CubicJudge& judge, double flat) {
   const std::size_t n = nodes.size();
   std::vector<std::size_t> seated;
   for (const std::size_t i : candidates) {
     const std::size_t h = (i + n - 1) % n, j = (i + 1) % n;
     if (!joins.joins_cubics(i) || !steps[i]) continue;
-    if (std::abs(judge.unrounded(h).k_end) >= flat || std::abs(judge.unrounded(i).k_start) >= flat) continue;
-    if (join_jump(joins, i, flat) <= target_jump) continue;
+    if (join_jump(joins, i, flat) <= target_jump || !flat_node(nodes, judge, h, i, flat)) continue;
     const NodeChange change(nodes, joins, judge, flat, i);
     const OutlineNode kept = nodes[i], kept_h = nodes[h], kept_j = nodes[j];
     const OutlineNode& target = ideal[i];
@@ -959,7 +982,7 @@ void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<Outl
     std::sort(inside.begin(), inside.end());
     for (const std::size_t i : nudge_jumping_nodes(nodes, ideal, steps, joins, inside, judge, limits.flat_curvature))
       again[run_of[i]] = true;
-    for (const std::size_t i : seat_inflections(nodes, ideal, steps, joins, inside, judge, limits.flat_curvature))
+    for (const std::size_t i : seat_flat_nodes(nodes, ideal, steps, joins, inside, judge, limits.flat_curvature))
       again[run_of[i]] = true;
     for (const std::size_t i : seat_line_joins(nodes, ideal, steps, joins, inside, judge, limits.flat_curvature))
       again[run_of[i]] = true;

@@ -297,6 +297,83 @@ TEST(GridRounding, NodesRoundedOntoOnePointBecomeOne) {
   }
 }
 
+// Whether the curvatures either side of a smooth node meet the check's G2 rule at 1000 UPM:
+// within 5 % of the larger, or within 0.05/UPM of each other where both are under 0.5/UPM.
+bool g2_by_the_check(double k1, double k2) {
+  const double big = std::max(std::abs(k1), std::abs(k2)) * 1000.0;
+  return big >= 0.5 ? std::abs(k1 - k2) * 1000.0 <= 0.05 * big : std::abs(k1 - k2) * 1000.0 <= 0.05;
+}
+
+// EB Garamond's P, unrounded at a tolerance of 1.25 (UPM 1000), where the bowl leaves the stem:
+// κ·UPM 3 to 5 along cubics 10 to 40 units long, whose far handles want to lie a fifth of a
+// unit off their nodes' tangents. Rounding put node 3's in-side far handle on its tangent
+// (κ = 0) and left the other side at −10 (a jump, and an S in the cubic before). Such a node is
+// now seated flat as an inflection is: both far handles on its tangent line.
+TEST(GridRounding, ANodeRoundingLeftFlatOnOneSideIsSeatedFlatOnBoth) {
+  const std::vector<OutlineNode> nodes{
+      node(Vec2{258.23, 272.82}, std::nullopt, Vec2{258.23, 269.46}, false),
+      node(Vec2{268.79, 260.86}, Vec2{260.96, 264.78}, Vec2{282.50, 254.01}, true, Vec2{2.0, -1.0}),
+      node(Vec2{304.13, 254.00}, Vec2{302.89, 254.00}, Vec2{308.33, 254.00}, true, Vec2{1.0, 0.0}),
+      node(Vec2{325.63, 254.80}, Vec2{316.36, 254.14}, Vec2{330.41, 255.14}),
+      node(Vec2{347.03, 257.13}, Vec2{337.96, 255.79}, Vec2{358.68, 258.86}),
+      node(Vec2{388.87, 267.01}, Vec2{373.17, 261.78}, std::nullopt, false),
+  };
+  HandleStepLimits limits;
+  limits.flat_curvature = 0.5 / 1000.0;
+  limits.allowance = 0.45;  // what the unrounded outline leaves of the tolerance
+  const std::vector<OutlineNode> r = round_to_grid(nodes, false, limits);
+
+  ASSERT_EQ(r.size(), nodes.size());
+  for (std::size_t i = 1; i + 1 < r.size(); ++i) {
+    const OutlineNode& n = r[i];
+    EXPECT_EQ(cross(n.point - *n.in_handle, *n.out_handle - n.point), 0.0) << "node " << i;
+    EXPECT_TRUE(g2_by_the_check(node_curvature(outline_cubic(r, i - 1), SegmentEnd::end),
+                                node_curvature(outline_cubic(r, i), SegmentEnd::start)))
+        << "node " << i;
+  }
+  for (std::size_t i = 0; i + 1 < r.size(); ++i)
+    EXPECT_LE(curvature_shape(outline_cubic(r, i), 0.0).sign_changes,
+              curvature_shape(outline_cubic(nodes, i), 0.0).sign_changes)
+        << "cubic " << i;
+}
+
+// Two more stretches of that P: the bowl's right side above the stem join, and its top. Whole
+// steps leave jumps there whatever the handles, and a node's nudge, weighing only the jumps
+// and the cubics' bends, took a one-step handle with its far handle a unit off the tangent:
+// κ·UPM 167 and 667 against at most 10 and 3 before rounding. The nudge now weighs the
+// curvature variation a cubic gains, as the choice of handles does.
+TEST(GridRounding, ANudgeTakesNoCurvatureSpike) {
+  const std::vector<std::vector<OutlineNode>> stretches{
+      {
+          node(Vec2{441.00, 457.32}, std::nullopt, Vec2{441.00, 445.13}, false),
+          node(Vec2{440.33, 432.76}, Vec2{440.42, 434.45}, Vec2{439.74, 422.11}),
+          node(Vec2{438.18, 408.29}, Vec2{438.86, 413.77}, Vec2{435.69, 388.05}),
+          node(Vec2{427.81, 360.34}, Vec2{431.83, 372.40}, Vec2{421.84, 342.44}, true, Vec2{-1.0, -3.0}),
+          node(Vec2{397.39, 308.26}, Vec2{412.50, 323.37}, std::nullopt, false),
+      },
+      {
+          node(Vec2{397.82, 639.54}, std::nullopt, Vec2{380.23, 645.41}, false),
+          node(Vec2{337.37, 653.60}, Vec2{360.11, 650.32}, Vec2{330.62, 654.58}),
+          node(Vec2{299.44, 657.32}, Vec2{316.90, 656.38}, Vec2{291.33, 657.76}),
+          node(Vec2{275.43, 658.00}, Vec2{282.57, 658.00}, Vec2{261.24, 658.00}, true, Vec2{-1.0, 0.0}),
+          node(Vec2{228.57, 655.44}, Vec2{249.09, 657.05}, std::nullopt, false),
+      },
+  };
+  HandleStepLimits limits;
+  limits.flat_curvature = 0.5 / 1000.0;
+  limits.allowance = 0.45;
+  for (std::size_t s = 0; s < stretches.size(); ++s) {
+    const std::vector<OutlineNode>& nodes = stretches[s];
+    double largest = 0.0;
+    for (std::size_t i = 0; i + 1 < nodes.size(); ++i)
+      largest = std::max(largest, curvature_shape(outline_cubic(nodes, i), 0.0).largest);
+    const std::vector<OutlineNode> r = round_to_grid(nodes, false, limits);
+    ASSERT_EQ(r.size(), nodes.size());
+    for (std::size_t i = 0; i + 1 < r.size(); ++i)
+      EXPECT_LE(curvature_shape(outline_cubic(r, i), 0.0).largest, 10.0 * largest) << "stretch " << s << ", cubic " << i;
+  }
+}
+
 TEST(OutlineNodes, CubicsUnderTwoUnitsMergeIntoOneNode) {
   // Because We Create's P: a vertical extremum 1.5 units from the next smooth node, between
   // two corners. One node stays, the extremum; it leaves along its own tangent with the
