@@ -1,7 +1,8 @@
 // A faired chain of log-aesthetic segments written back as cubic Béziers: on-curve nodes at
 // the chain's ends (corners, inflections, line joins) and at every horizontal and vertical
 // extremum; between them as few cubics as the budget allows, each the G2 Hermite cubic of its
-// ends (geom/g2_hermite.hpp), so curvature matches on both sides of every node. A span whose
+// ends (geom/g2_hermite.hpp), so curvature matches on both sides of every node (at a corner,
+// whose curvature binds nothing, only the other end's is met). A span whose
 // best cubic strays too far becomes the fewest cubics whose inner nodes sit where the tangent
 // runs along a short grid direction (a shortest path over those places), and among as few the
 // ones whose coarsest node rounding can set finest, span ends included.
@@ -19,10 +20,12 @@ struct ChainCubics {
   int g1_fallbacks = 0;            ///< spans where no G2 Hermite cubic existed within the depth limit
 };
 
-/// Which ends of an open chain are corners, whose tangent the writeback may turn a little: an
-/// extremum a few units from a corner (a stroke's end a degree off the vertical) would leave
-/// a cubic too short for the grid to set its curvature, so the corner's tangent is turned onto
-/// the axis instead and the extremum is the corner (where that takes no more cubics).
+/// Which ends of an open chain are corners. A corner's curvature binds nothing, so a span from
+/// one need only meet the curvature at its other end (fewer cubics where the G2 Hermite cubic
+/// strays). And its tangent the writeback may turn a little: an extremum a few units from a
+/// corner (a stroke's end a degree off the vertical) would leave a cubic too short for the
+/// grid to set its curvature, so the corner's tangent is turned onto the axis instead and the
+/// extremum is the corner (where that takes no more cubics).
 struct ChainEnds {
   bool start_corner = false, end_corner = false;
 };

@@ -42,4 +42,21 @@ std::vector<Cubic> g2_hermite_cubics(const HermiteEnd& start, const HermiteEnd& 
   return out;
 }
 
+std::optional<Cubic> g2_hermite_cubic_with_free_end(const HermiteEnd& start, const HermiteEnd& end, SegmentEnd free,
+                                                    double free_handle, double max_handle) {
+  const Vec2 d = end.point - start.point;
+  const double chord = norm(d);
+  if (!(chord > 0.0) || !(free_handle > 0.0)) return std::nullopt;
+  if (!(max_handle > 0.0)) max_handle = 2.0 * chord;
+  const double c = cross(start.tangent, end.tangent);
+  // κ3 b² = 2/3 (D × T3 − a c) for a free start; κ0 a² = 2/3 (T0 × D − b c) for a free end.
+  const bool free_start = free == SegmentEnd::start;
+  const double kappa = free_start ? end.curvature : start.curvature;
+  const double rhs = (2.0 / 3.0) * ((free_start ? cross(d, end.tangent) : cross(start.tangent, d)) - free_handle * c);
+  if (kappa == 0.0 || !(rhs / kappa > 0.0)) return std::nullopt;
+  const double other = std::sqrt(rhs / kappa);
+  if (other > max_handle) return std::nullopt;
+  return free_start ? with_handles(start, end, free_handle, other) : with_handles(start, end, other, free_handle);
+}
+
 }  // namespace gf

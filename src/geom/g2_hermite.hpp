@@ -5,9 +5,11 @@
 // so the handle lengths a, b > 0 solve a quartic; there may be none, one or several.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "geom/bezier.hpp"
+#include "geom/curvature.hpp"
 
 namespace gf {
 
@@ -20,5 +22,13 @@ struct HermiteEnd {
 /// Every cubic with both handle lengths in (0, max_handle] that meets the ends with their
 /// tangents and curvatures; empty when there is none. max_handle defaults to 2 |P3 − P0|.
 std::vector<Cubic> g2_hermite_cubics(const HermiteEnd& start, const HermiteEnd& end, double max_handle = 0.0);
+
+/// The cubic that meets both ends with their tangents and the curvature of the end that is not
+/// `free` (a corner's curvature binds nothing), its handle at `free` `free_handle` long. With a
+/// free start, b = √(2/3 · (D × T3 − a c) / κ3) from the equation for κ3 above; a free end
+/// likewise from κ0. None where no positive handle gives that curvature (a flat one gives none)
+/// or it passes max_handle (default 2 |P3 − P0|).
+std::optional<Cubic> g2_hermite_cubic_with_free_end(const HermiteEnd& start, const HermiteEnd& end, SegmentEnd free,
+                                                    double free_handle, double max_handle = 0.0);
 
 }  // namespace gf

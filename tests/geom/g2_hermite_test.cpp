@@ -71,5 +71,33 @@ TEST(G2Hermite, NoSolutionWhenCurvatureHasTheWrongSign) {
   EXPECT_TRUE(g2_hermite_cubics(s, e).empty());
 }
 
+// With one end free (a corner), its handle is given and the other end's curvature met: on a
+// circle, a free start with the symmetric solution's handle gives back that solution, and any
+// other handle length still meets the end's tangent and curvature; a handle the curvature
+// cannot follow (the far end turning the wrong way) gives none.
+TEST(G2Hermite, OneFreeEndMeetsTheOtherEndsCurvature) {
+  const double R = 250.0, span = 1.0;
+  const HermiteEnd s{{R, 0.0}, {0.0, 1.0}, 1.0 / R};
+  const HermiteEnd e{{R * std::cos(span), R * std::sin(span)}, {-std::sin(span), std::cos(span)}, 1.0 / R};
+  const double symmetric = R * (-std::sin(span) + std::sqrt(std::sin(span) * std::sin(span) + 6 * (1 - std::cos(span)))) / 3;
+  for (const SegmentEnd free : {SegmentEnd::start, SegmentEnd::end}) {
+    const std::optional<Cubic> same = g2_hermite_cubic_with_free_end(s, e, free, symmetric);
+    ASSERT_TRUE(same);
+    expect_meets(*same, s, e);
+    for (const double handle : {0.3 * symmetric, 1.4 * symmetric}) {
+      const std::optional<Cubic> c = g2_hermite_cubic_with_free_end(s, e, free, handle);
+      ASSERT_TRUE(c) << handle;
+      const bool free_start = free == SegmentEnd::start;
+      EXPECT_NEAR(distance(c->p[free_start ? 0 : 3], c->p[free_start ? 1 : 2]), handle, 1e-9 * R);
+      EXPECT_NEAR(cross(*end_tangent(*c, SegmentEnd::start), s.tangent), 0.0, 1e-12);
+      EXPECT_NEAR(cross(*end_tangent(*c, SegmentEnd::end), e.tangent), 0.0, 1e-12);
+      const double met = *end_curvature(*c, free_start ? SegmentEnd::end : SegmentEnd::start).curvature;
+      EXPECT_NEAR(met, 1.0 / R, 1e-9 / R) << handle;
+    }
+  }
+  const HermiteEnd wrong{e.point, e.tangent, -1.0 / R};
+  EXPECT_FALSE(g2_hermite_cubic_with_free_end(s, wrong, SegmentEnd::start, symmetric));
+}
+
 }  // namespace
 }  // namespace gf
