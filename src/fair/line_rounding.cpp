@@ -158,7 +158,7 @@ class LinePlacer {
                       double bound = std::numeric_limits<double>::infinity()) const {
     LinePlacement out;
     const std::optional<Vec2> step = primitive_step(b.point - a.point);
-    if (!step || turns_too_far(line, b.point - a.point)) return out;
+    if (!step || turns_too_far(line, b.point - a.point) || leaves_its_axis(line, a.point, b.point)) return out;
     out.step = *step;
     // A line no curve meets tangentially needs no short step, and its ends' moves only break
     // ties: the lines beside it that a curve does meet decide where they go.
@@ -195,6 +195,17 @@ class LinePlacer {
 
  private:
   std::size_t previous(std::size_t k) const { return (k + exact_.size() - 1) % exact_.size(); }
+
+  // Whether a line that is horizontal or vertical on the grid (a baseline, an x-height, a
+  // stem's side) would leave that very line with its ends at a and b. Such a line stays put
+  // across itself, its ends sliding only along it: a corner moved to a neighbour for a
+  // shorter step of the line beside it had tilted Open Sans's baseline under the w by 2 units
+  // and Lato's A crossbar by 1, and put corners 1 or 2 units off the baseline and x-height.
+  bool leaves_its_axis(const LineOnGrid& line, Vec2 a, Vec2 b) const {
+    const Vec2 from = exact_[line.i].point, to = exact_[line.j].point;
+    const auto kept = [](double exact, double u, double v) { return u == v && (u == exact || exact != std::round(exact)); };
+    return (from.x == to.x && !kept(from.x, a.x, b.x)) || (from.y == to.y && !kept(from.y, a.y, b.y));
+  }
 
   // Whether a line placed along `placed` turns from its exact direction by more than a node may
   // turn on the grid, or than its nearest grid points turn it (a 4-unit line of dkg Bold's n,

@@ -31,14 +31,15 @@ namespace gf {
 /// far handle cannot give it κ = 0 at the join (|κ| within a twentieth of
 /// `limits.flat_curvature`: what the line leaves of the tolerance, at least a unit) and more
 /// again where the curve would gain an H/V extremum; no line turns by more than 0.1 rad or
-/// what its nearest grid points turn it; the run's least total wins. A slid end stays within
-/// what the line has left of the tolerance (`limits.allowance_at`) of it, both ways where it
-/// slid back past its handle. Ends slide
-/// where a handle on a line of long step strays (moves by more than a quarter of its length
-/// and its curve's allowance) or reaches past three quarters of its curve's chord. An end not
-/// slid goes to its nearest grid point or a neighbour of it: any neighbour, or with
-/// `limits.any_grid_neighbour` false only those within its allowance. A corner with an
-/// extremum on it (a grid step, though not smooth) takes its curve's handle along.
+/// what its nearest grid points turn it, and a line horizontal or vertical on the grid keeps
+/// its y or x (a baseline, a cap height, a stem's side); the run's least total wins. A slid
+/// end stays within what the line has left of the tolerance (`limits.allowance_at`) of it,
+/// both ways where it slid back past its handle. Ends slide where a handle on a line of long
+/// step strays (moves by more than a quarter of its length and its curve's allowance) or
+/// reaches past three quarters of its curve's chord. An end not slid goes to its nearest grid
+/// point or a neighbour of it: any neighbour, or with `limits.any_grid_neighbour` false only
+/// those within its allowance. A corner with an extremum on it (a grid step, though not
+/// smooth) takes its curve's handle along.
 void place_lines_on_grid(const std::vector<OutlineNode>& exact, std::vector<OutlineNode>& rounded,
                          std::vector<std::optional<Vec2>>& steps, bool closed, const HandleStepLimits& limits);
 

@@ -374,6 +374,32 @@ TEST(GridRounding, ANudgeTakesNoCurvatureSpike) {
   }
 }
 
+// Open Sans's w, unrounded, where its right foot leaves the baseline: a baseline line, a corner,
+// a diagonal of primitive step (−201, 643) up to a curve. Its corners on the baseline went to
+// grid neighbours off it, (1267, −1) and (1072, 1), for a diagonal of step (−102, 323): the
+// baseline tilted. A line horizontal on the grid now stays on its y, its ends sliding along it
+// only; the curve still leaves the diagonal with G1 exact.
+TEST(GridRounding, ALineOnTheBaselineStaysOnIt) {
+  const std::vector<OutlineNode> nodes{
+      node(Vec2{1268.0, 0.0}, std::nullopt, std::nullopt, false),
+      node(Vec2{1071.0, 0.0}, std::nullopt, std::nullopt, false),
+      node(Vec2{870.0, 643.0}, std::nullopt, Vec2{863.43, 664.02}),
+      node(Vec2{799.0, 911.0}, Vec2{848.83, 710.73}, std::nullopt, false),
+      node(Vec2{791.0, 911.0}, std::nullopt, std::nullopt, false),
+  };
+  HandleStepLimits limits;
+  limits.flat_curvature = 0.5 / 2048.0;
+  limits.allowance = 1.0;
+  const std::vector<OutlineNode> r = round_to_grid(nodes, false, limits);
+
+  ASSERT_EQ(r.size(), nodes.size());
+  EXPECT_EQ(r[0].point.y, 0.0);
+  EXPECT_EQ(r[1].point.y, 0.0);
+  EXPECT_EQ(r[3].point, nodes[3].point);
+  EXPECT_EQ(r[4].point, nodes[4].point);
+  EXPECT_EQ(cross(r[2].point - r[1].point, *r[2].out_handle - r[2].point), 0.0);
+}
+
 TEST(OutlineNodes, CubicsUnderTwoUnitsMergeIntoOneNode) {
   // Because We Create's P: a vertical extremum 1.5 units from the next smooth node, between
   // two corners. One node stays, the extremum; it leaves along its own tangent with the
