@@ -30,8 +30,8 @@ constexpr double fold_margin = 0.5 * std::numbers::pi;  // a cubic may turn beyo
 constexpr double edge_margin = 0.05;  // no grid node within this share of a span's turning or length of its ends
 constexpr double snap_turn = radians(10.0);  // a corner's tangent may turn onto a nearby extremum's axis
 constexpr double snap_reach = 64.0;   // units along the chain: farther, the cubic between is long enough for the grid
-// A corner's handle lengths tried for a span from it, as shares of the span's chord: from
-// below min_handle_fraction to the whole chord, evenly in their logarithm.
+// A corner's handle lengths tried for a span from it, as shares of the span's chord: from just
+// over min_handle_fraction to the whole chord, evenly in their logarithm.
 constexpr int corner_handles = 24;
 constexpr double shortest_corner_handle = 0.04, longest_corner_handle = 1.0;
 
