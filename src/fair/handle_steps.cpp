@@ -62,6 +62,15 @@ double variation_cost(const CurvatureShape& rounded, const CurvatureShape& unrou
   return excess > free_variation ? variation_weight * (excess - free_variation) : 0.0;
 }
 
+// What a rounded cubic's curvature costs beyond its unrounded self's, short of an inflection
+// inside it: bending wholly the other way, curvature extrema it gains (a wobble of the comb),
+// and curvature variation it gains beyond a little (a spike a comb would show). The choice of
+// handles and a node's nudge weigh it alike.
+double shape_cost(const CurvatureShape& rounded, const CurvatureShape& unrounded, double flat) {
+  return flip_cost(rounded, unrounded) + turn_cost(rounded.turns - unrounded.turns) +
+         variation_cost(rounded, unrounded, flat);
+}
+
 // The jump between two curvatures, relative to the larger unless both are flat.
 double jump(double k1, double k2, double flat) {
   return std::abs(k1 - k2) / std::max({std::abs(k1), std::abs(k2), flat});
@@ -299,18 +308,14 @@ CubicChoices cubic_choices(const std::vector<OutlineNode>& nodes, std::span<cons
         // Where the grid allows only near zero, or a corner's handle moves, the cubic must not
         // bend the other way near its end: an inflection the unrounded cubic does not have.
         if (t.shape.sign_changes > ideal.shape.sign_changes) cost += wrong_way;
-        // Nor bend wholly the other way.
-        cost += flip_cost(t.shape, ideal.shape);
         // Nor turn horizontal or vertical inside: an extremum without a node.
         if (t.extrema > ideal.extrema) cost += wrong_way;
         // Nor fold back on itself past its chord.
         if (t.overreach > ideal.overreach) cost += wrong_way * (1.0 + t.overreach);
         // Nor, short, loop or cusp within it.
         if (t.turning > ideal.turning + fold_turn) cost += wrong_way;
-        // Nor gain a curvature extremum (a wobble of the comb).
-        cost += turn_cost(t.shape.turns - ideal.shape.turns);
-        // Nor gain curvature variation inside (a spike a comb would show), beyond a little.
-        cost += variation_cost(t.shape, ideal.shape, flat);
+        // Nor bend wholly the other way, gain a curvature extremum or a spike.
+        cost += shape_cost(t.shape, ideal.shape, flat);
         c.cost.push_back(cost);
       }
   };
@@ -447,7 +452,7 @@ class NodeChange {
   /// extremum or curvature variation its unrounded self lacks, as the cubic choice weighs them
   /// (a nearly straight cubic whose rounded ends leave its chord outside their tangents can
   /// only be an S).
-  double bend_cost() const { return wrong_way * inflections_added() + shape_cost(); }
+  double bend_cost() const { return wrong_way * inflections_added() + shapes_cost(); }
   /// Both.
   double cost() const { return jump_costs() + bend_cost(); }
   /// cost() where it is under `best` and the outline as it stands is an allowed change: the
@@ -487,16 +492,13 @@ class NodeChange {
     return added;
   }
 
-  // The curvature extrema and variation both cubics at i add, and either's bend the other way,
-  // weighed as the cubic choice weighs them: without the variation, a nudge that left every
-  // jump as it was could trade a cubic's κ·UPM of 5 at the node for a spike of 667 (EB
-  // Garamond's P, where its bowl meets the stem).
-  double shape_cost() const {
+  // shape_cost of both cubics at i, as the cubic choice weighs them: without the variation, a
+  // nudge that left every jump as it was could trade a cubic's κ·UPM of 5 at the node for a
+  // spike of 667 (EB Garamond's P, where its bowl meets the stem).
+  double shapes_cost() const {
     double cost = 0.0;
-    for (const std::size_t k : {h_, i_}) {
-      const CurvatureShape &now = judge_.traits(k, outline_cubic(nodes_, k)).shape, &unrounded = judge_.unrounded(k).shape;
-      cost += turn_cost(now.turns - unrounded.turns) + flip_cost(now, unrounded) + variation_cost(now, unrounded, flat_);
-    }
+    for (const std::size_t k : {h_, i_})
+      cost += shape_cost(judge_.traits(k, outline_cubic(nodes_, k)).shape, judge_.unrounded(k).shape, flat_);
     return cost;
   }
 
