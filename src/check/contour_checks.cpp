@@ -249,6 +249,17 @@ struct GlyphChecker {
     }
   }
 
+  // The sign of κ just beside a node, on the side `side` (−1 before it, +1 after): κ's own, or
+  // where κ is zero to rounding there (an inflection on the node itself, as on a spline's knot
+  // at the middle of a symmetric S), the sign dκ/ds gives it a little way in. The residue's
+  // own sign (±1e-15) depends on the machine's last bits.
+  double side_sign(std::optional<double> k, std::optional<double> dk, double side) const {
+    if (!k) return 0.0;
+    if (std::abs(*k) * upm() > 1e-9 || !dk) return *k > 0.0 ? 1.0 : *k < 0.0 ? -1.0 : 0.0;
+    const double ahead = side * *dk;
+    return ahead > 0.0 ? 1.0 : ahead < 0.0 ? -1.0 : 0.0;
+  }
+
   // More than one curvature extremum between two consecutive inflections of a smooth run.
   void check_wobble(int ci, const Contour& c, const std::vector<Join>& joins, const std::vector<CriticalPoints>& critical) {
     struct Event {
@@ -263,7 +274,9 @@ struct GlyphChecker {
     for (const Join& j : joins) {
       const bool smooth = std::abs(j.angle_deg) <= profile.kink_min_deg && j.kind != JoinKind::degenerate;
       if (!smooth) continue;
-      const bool flips = j.curvature_in && j.curvature_out && *j.curvature_in * *j.curvature_out < 0.0;
+      const bool flips = side_sign(j.curvature_in, j.curvature_derivative_in, -1.0) *
+                             side_sign(j.curvature_out, j.curvature_derivative_out, 1.0) <
+                         0.0;
       // dκ/ds changing sign at the node: κ has its extremum there (B-splines put it on a knot).
       const bool turns = j.curvature_derivative_in && j.curvature_derivative_out &&
                          *j.curvature_derivative_in * *j.curvature_derivative_out < 0.0;
