@@ -21,7 +21,9 @@
 //
 // A G3 line join needs κ to rise from 0 with zero slope, which a curve leaving a short line (a
 // straight stretch in the spine of an 's') may only do by sliding off more line than there is:
-// such a run is solved again with its line joins held to G2.
+// such a run is solved again with its line joins held to G2, and then (fair/run_fairing) once
+// more at G3 with the segments at those joins cut in two, a shorter first spiral leaving its
+// line with the room the whole one lacked.
 //
 // Why the junctions move rather than only κ′ being forced on G2 frames: with point, tangent and
 // κ held, a forced κ′ leaves each segment three unknowns for three end conditions, and on

@@ -570,22 +570,37 @@ std::vector<double> distance_by_spiral(const G3Result& g3, const G3Problem& prob
 
 // G3 over the whole run (fair/g3_run.hpp), kept only when it stays within the budget of the
 // source; a log-aesthetic segment whose spirals stray is cut in two, up to `max_g3_rounds`
-// times. Else the run stays G2 and says why.
+// times. Where only holding its line joins to G2 solves the run, the segments at those joins
+// are cut in two for the next round, which tries G3 there again with the room a shorter
+// spiral gives κ to rise from 0 with zero slope; the run held so is kept should no round do
+// better. Else the run stays G2 and says why.
 void reexpress_as_g3(FairedRun& result, const RunReference& source, const SmoothRun& run, double budget) {
   std::vector<int> pieces;
   std::string why;
+  struct Held {
+    G3Problem problem;
+    std::vector<PolynomialSpiral> spirals;
+    double deviation;
+    int g2_line_joins;
+  };
+  std::optional<Held> held;  // the first run solved with its line joins held to G2
+  const auto adopt = [&](const G3Problem& problem, std::vector<PolynomialSpiral> spirals, double deviation,
+                         int g2_line_joins) {
+    adopt_spirals(result.chains, problem, std::move(spirals));
+    result.deviation = deviation;
+    result.g2_line_joins = g2_line_joins;
+  };
   for (int round = 0; round < max_g3_rounds; ++round) {
     std::optional<G3Problem> problem = g3_problem(result.chains, run, pieces);
     if (!problem) {
       if (!result.chains.empty()) result.g3_shortfall = "part of it follows the smoothing guide";
-      return;
+      return;  // so in every round: no round has held a run yet
     }
     pieces.resize(problem->log_aesthetic_segment.back() + 1, 1);
     G3Result g3 = make_g3(problem->nodes, problem->lengths, problem->closed);
     int g2_line_joins = 0;
     // No room on a line for G3 there, perhaps: G2 at the line joins, G3 elsewhere. Every round
-    // tries G3 at the lines first again: after a cut the run may find the room (on DejaVu Sans
-    // a–z A–Z, holding them from the first failure on leaves 12 line joins G2, not 5).
+    // tries G3 at the lines first again: after a cut the run may find the room.
     if (!g3.ok())
       for (G3Node& n : problem->nodes)
         if (n.kind == G3NodeKind::line) n.kind = G3NodeKind::line_g2, ++g2_line_joins;
@@ -595,15 +610,21 @@ void reexpress_as_g3(FairedRun& result, const RunReference& source, const Smooth
     if (g3.ok()) {
       const std::vector<double> d = distance_by_spiral(g3, *problem, source, budget);
       const double worst = *std::max_element(d.begin(), d.end());
-      if (worst <= budget) {
-        adopt_spirals(result.chains, *problem, std::move(g3.spirals));
-        result.deviation = worst;
-        result.g2_line_joins = g2_line_joins;
+      if (worst <= budget && g2_line_joins == 0) {
+        adopt(*problem, std::move(g3.spirals), worst, 0);
         return;
       }
-      why = "the G3 curve strays " + std::to_string(worst) + " units from the source (budget " + std::to_string(budget) + ")";
-      for (std::size_t i = 0; i < d.size(); ++i)
-        if (d[i] > budget) split[problem->log_aesthetic_segment[i]] = true;
+      if (worst <= budget) {
+        if (!held) held = Held{*problem, std::move(g3.spirals), worst, g2_line_joins};
+        const std::size_t last = problem->nodes.size() - 1;
+        if (problem->nodes.front().kind == G3NodeKind::line_g2) split[problem->log_aesthetic_segment.front()] = true;
+        if (problem->nodes[last].kind == G3NodeKind::line_g2) split[problem->log_aesthetic_segment.back()] = true;
+      } else {
+        why = "the G3 curve strays " + std::to_string(worst) + " units from the source (budget " +
+              std::to_string(budget) + ")";
+        for (std::size_t i = 0; i < d.size(); ++i)
+          if (d[i] > budget) split[problem->log_aesthetic_segment[i]] = true;
+      }
     } else {
       // A stall may be a segment too long for one spiral's cubic κ: every one is cut.
       why = g3.reason;
@@ -612,7 +633,8 @@ void reexpress_as_g3(FairedRun& result, const RunReference& source, const Smooth
     for (std::size_t i = 0; i < pieces.size(); ++i)
       if (split[i]) pieces[i] *= 2;
   }
-  result.g3_shortfall = why;
+  if (held) adopt(held->problem, std::move(held->spirals), held->deviation, held->g2_line_joins);
+  else result.g3_shortfall = why;
 }
 
 }  // namespace

@@ -3,7 +3,7 @@
 // --segments` exports) are checked from their own data:
 // each spiral rebuilt from its start frame, length and end κ, κ′ reaches the end it reports
 // and keeps κ monotone, and at every smooth join the two sides agree in point, tangent, κ and
-// κ′ (a line's κ′ being 0), but for the line joins the fairing reports as held to G2.
+// κ′ (a line's κ′ being 0), line joins included.
 #include "fair/glyph_fairing.hpp"
 
 #include <gtest/gtest.h>
@@ -70,7 +70,9 @@ TEST(G3Fairing, EverySmoothJoinOfTheFairedPiecesIsG3) {
       }
     }
     EXPECT_EQ(g2_line_joins, r.g2_line_joins) << name;
-    EXPECT_LT(g2_line_joins, joins / 4) << name;
+    // Where holding the line joins to G2 solved a run first, the segments at them are cut and
+    // tried at G3 again (the S, a, e and s each had one or two line joins G2 only before).
+    EXPECT_EQ(g2_line_joins, 0) << name;
     EXPECT_GT(spirals, 0) << name;
     EXPECT_GT(joins, 0) << name;
   }
