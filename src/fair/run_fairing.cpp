@@ -31,7 +31,7 @@ constexpr double max_relative_mismatch = 1e-9;  // |Δκ| / max|κ| the G2 solve
 // tangent: κ of opposite signs across them), and the writeback's mean curvature there became a
 // knot of cubics a few units long (κ·UPM 4,000, six inflections); the run is kept as drawn.
 constexpr double max_kept_mismatch = 1.0;
-constexpr int max_g3_rounds = 4;  // of cutting the segments whose G3 spirals stray
+constexpr int max_g3_rounds = 6;  // of cutting the segments whose G3 spirals stray or stall
 constexpr int max_guide_refinements = 3;  // doublings of a smoothing guide's spans
 constexpr double transition_shift_share = 0.25;  // of the budget, spent where a κ = 0 end leaves its line earlier
 
