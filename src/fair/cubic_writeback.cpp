@@ -9,6 +9,7 @@
 #include <span>
 
 #include "fair/cubic_change.hpp"
+#include "fair/path_piece.hpp"
 #include "geom/curvature.hpp"
 #include "geom/g2_hermite.hpp"
 #include "geom/polyline_distance.hpp"
@@ -48,65 +49,12 @@ std::vector<Vec2> grid_directions(int longest) {
   return out;
 }
 
-// A stretch of the path that turns one way by less than a half turn: a log-aesthetic segment, a
-// G3 spiral, or a piece of a guide cut where its curvature changes sign and every quarter turn.
-struct PathPiece {
-  double length;
-  std::function<LacPoint(double)> at;           ///< by arc length from the piece's start
-  std::function<std::vector<LacPoint>(int)> sample;  ///< n + 1 points uniform in arc length
-};
-
-template <class Curve>
-std::vector<PathPiece> curve_pieces(const std::vector<Curve>& curves) {
-  std::vector<PathPiece> out;
-  for (const Curve& c : curves)
-    out.push_back({c.length(), [&c](double s) { return c.at(s); }, [&c](int n) { return c.sample(n); }});
-  return out;
-}
-
-// The guide stretch in pieces, its end frames in place of the guide's own at its two ends.
-std::vector<PathPiece> guide_pieces(const GuideStretch& g, bool whole_loop) {
-  const RunReference& ref = *g.guide;
-  const double length = g.s1 - g.s0;
-  const auto frame = [&ref, &g, length, whole_loop](double s) {
-    if (!whole_loop && s <= 0.0) return g.start;
-    if (!whole_loop && s >= length) return g.end;
-    return ref.frame_at(g.s0 + s);
-  };
-  std::vector<double> cuts{0.0};
-  const int steps = std::max(8, static_cast<int>(std::ceil(length)));
-  double last_sign = 0.0;
-  for (int k = 1; k < steps; ++k) {
-    const double s = length * k / steps;
-    const double sign = ref.curvature_at(g.s0 + s) > 0.0 ? 1.0 : -1.0;
-    const bool flips = last_sign != 0.0 && sign != last_sign;
-    const bool quarter = std::abs(ref.theta_at(g.s0 + s) - ref.theta_at(g.s0 + cuts.back())) > std::numbers::pi / 2;
-    if ((flips || quarter) && s - cuts.back() > 1.0) cuts.push_back(s);
-    last_sign = sign;
-  }
-  cuts.push_back(length);
-  std::vector<PathPiece> out;
-  for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
-    const double a = cuts[i], len = cuts[i + 1] - a;
-    out.push_back({len, [frame, a](double s) { return frame(a + s); }, [frame, a, len](int n) {
-                     std::vector<LacPoint> pts;
-                     for (int k = 0; k <= n; ++k) pts.push_back(frame(a + len * k / n));
-                     return pts;
-                   }});
-  }
-  return out;
-}
-
 // The chain as one curve in arc length σ (σ past the end wraps round a closed chain), with a
 // dense table of its points for distances.
 class ChainPath {
  public:
   explicit ChainPath(const FairedChain& chain) : closed_(chain.closed) {
-    if (chain.guide) {
-      pieces_ = guide_pieces(*chain.guide, chain.closed);
-    } else {
-      pieces_ = chain.spirals.empty() ? curve_pieces(chain.segments) : curve_pieces(chain.spirals);
-    }
+    pieces_ = chain_pieces(chain);
     n_ = pieces_.size();
     double start = 0.0;
     for (const PathPiece& piece : pieces_) {

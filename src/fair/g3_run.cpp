@@ -6,6 +6,7 @@
 
 #include <Eigen/Dense>
 
+#include "fair/path_piece.hpp"
 #include "geom/damped_newton.hpp"
 
 namespace gf {
@@ -197,20 +198,33 @@ std::optional<G3Problem> g3_problem(const std::vector<FairedChain>& chains, cons
     const double slid_back = dot(at_start ? source_end - node : node - source_end, e.tangent);
     return std::max(0.99 * e.line_share - std::max(slid_back, 0.0), 0.0);
   };
-  std::vector<const LogAestheticSegment*> segments;
-  std::vector<bool> at_inflection;  // the segment starts where its chain meets the one before at κ = 0
+  // Every chain read as pieces: its log-aesthetic segments, or its guide stretch cut where its
+  // curvature changes sign and every quarter turn (a C2 spline, whose κ′ jumps at its knots:
+  // re-expressed as spirals like any segment, it comes out G3 too).
+  std::vector<PathPiece> segments;
+  // Whether the piece starts at κ = 0: where its chain meets the one before, or where a guide's
+  // curvature changes sign.
+  std::vector<bool> at_inflection;
   for (const FairedChain& c : chains) {
-    if (c.segments.empty()) return std::nullopt;
-    for (const LogAestheticSegment& s : c.segments)
-      segments.push_back(&s), at_inflection.push_back(&s == &c.segments.front() && c.zero_curvature_start);
+    if (c.segments.empty() && !c.guide) return std::nullopt;
+    // A guide's pieces cut at its curvature extrema too, as log-aesthetic segments are: one
+    // spiral's cubic κ(s) with κ′ = 0 at an extremum node follows a peak no piece straddles
+    // (a–z A–Z under G3, Open Sans's inflections 1.33× → 1.17× of the source's).
+    std::vector<PathPiece> own = c.guide ? guide_pieces(*c.guide, c.closed, true) : chain_pieces(c);
+    p.pieces_per_chain.push_back(own.size());
+    for (std::size_t k = 0; k < own.size(); ++k)
+      at_inflection.push_back((k == 0 && c.zero_curvature_start) || own[k].after_sign_change),
+          segments.push_back(std::move(own[k]));
   }
   if (segments.empty()) return std::nullopt;
   const std::size_t m = segments.size();
-  double angle = angle_of(segments.front()->start().tangent);
+  const auto start_of = [](const PathPiece& piece) { return piece.at(0.0); };
+  const auto end_of = [](const PathPiece& piece) { return piece.at(piece.length); };
+  double angle = angle_of(start_of(segments.front()).tangent);
   for (std::size_t i = 0; i < m; ++i) {
-    const LogAestheticSegment& seg = *segments[i];
+    const PathPiece& seg = segments[i];
     const int n = i < pieces.size() ? std::max(pieces[i], 1) : 1;
-    LacPoint last = seg.start();
+    LacPoint last = start_of(seg);
     for (int k = 0; k < n; ++k) {
       G3NodeKind kind = G3NodeKind::smooth;
       double kappa = last.curvature;
@@ -218,18 +232,18 @@ std::optional<G3Problem> g3_problem(const std::vector<FairedChain>& chains, cons
         if (at_inflection[i] && (run.closed || i > 0)) kind = G3NodeKind::inflection;
         if (!run.closed && i == 0) kind = end_kind(run.start.kind);
         // κ: the mean of the two sides (equal once the G2 solve converged).
-        if (i > 0 || run.closed) kappa = 0.5 * (kappa + segments[(i + m - 1) % m]->end().curvature);
+        if (i > 0 || run.closed) kappa = 0.5 * (kappa + end_of(segments[(i + m - 1) % m]).curvature);
       }
       p.nodes.push_back({last.point, angle, kappa, kind, !run.closed && i == 0 && k == 0 ? room(run.start, last.point, true) : 0.0});
-      const LacPoint next = k + 1 == n ? seg.end() : seg.at(seg.length() * (k + 1) / n);
-      p.lengths.push_back(seg.length() / n);
+      const LacPoint next = k + 1 == n ? end_of(seg) : seg.at(seg.length * (k + 1) / n);
+      p.lengths.push_back(seg.length / n);
       p.log_aesthetic_segment.push_back(i);
       angle += turning_angle(last.tangent, next.tangent);
       last = next;
     }
   }
   if (!run.closed) {
-    const LacPoint end = segments.back()->end();
+    const LacPoint end = end_of(segments.back());
     p.nodes.push_back({end.point, angle, end.curvature, end_kind(run.end.kind), room(run.end, end.point, false)});
   }
   return p;
@@ -237,13 +251,15 @@ std::optional<G3Problem> g3_problem(const std::vector<FairedChain>& chains, cons
 
 void adopt_spirals(std::vector<FairedChain>& chains, const G3Problem& problem, std::vector<PolynomialSpiral> spirals) {
   std::size_t next = 0, first_segment = 0;
-  for (FairedChain& c : chains) {
-    const std::size_t end_segment = first_segment + c.segments.size();
-    c.spirals.clear();
+  for (std::size_t c = 0; c < chains.size(); ++c) {
+    FairedChain& chain = chains[c];
+    const std::size_t end_segment = first_segment + problem.pieces_per_chain[c];
+    chain.spirals.clear();
     for (; next < spirals.size() && problem.log_aesthetic_segment[next] < end_segment; ++next)
-      c.spirals.push_back(std::move(spirals[next]));
-    c.segments.clear();
-    c.max_mismatch_relative = 0.0;
+      chain.spirals.push_back(std::move(spirals[next]));
+    chain.segments.clear();
+    chain.guide.reset();
+    chain.max_mismatch_relative = 0.0;
     first_segment = end_segment;
   }
 }

@@ -67,20 +67,21 @@ struct G3Result {
 /// finite-difference Jacobian and a backtracking line search.
 G3Result make_g3(std::span<const G3Node> nodes, std::span<const double> lengths, bool closed);
 
-/// A run's G2 chains as one G3 problem: a node at every segment end, an inflection where two
-/// chains meet, the run's own ends corners or lines.
+/// A run's G2 chains as one G3 problem: a node at every segment end (a guide stretch's pieces
+/// counted as segments, fair/path_piece.hpp), an inflection where two chains meet, the run's
+/// own ends corners or lines.
 struct G3Problem {
   std::vector<G3Node> nodes;
   std::vector<double> lengths;
-  std::vector<std::size_t> log_aesthetic_segment;  ///< per G3 segment, the run's segment it came from
+  std::vector<std::size_t> log_aesthetic_segment;  ///< per G3 segment, the run's segment (or guide piece) it came from
+  std::vector<std::size_t> pieces_per_chain;       ///< the run's segments (or guide pieces) in each chain
   bool closed = false;
 };
 
-/// `pieces[i]`: how many G3 segments the run's log-aesthetic segment i becomes (1 when not
+/// `pieces[i]`: how many G3 segments the run's segment (or guide piece) i becomes (1 when not
 /// given), cut at equal arc lengths with its own point, tangent and κ there: more freedom where
-/// κ′ = 0 at an extremum would otherwise round the curvature's peak too wide. Nullopt when a
-/// chain is a stretch of the smoothing guide (it has no segments to re-express), or there is
-/// no chain at all.
+/// κ′ = 0 at an extremum would otherwise round the curvature's peak too wide. Nullopt when there
+/// is no chain at all.
 std::optional<G3Problem> g3_problem(const std::vector<FairedChain>& chains, const SmoothRun& run,
                                     std::span<const int> pieces = {});
 

@@ -11,6 +11,7 @@
 #include "fair/g3_run.hpp"
 #include "fair/initial_tangents.hpp"
 #include "fair/junctions.hpp"
+#include "fair/path_piece.hpp"
 #include "fair/run_reference.hpp"
 #include "geom/curvature.hpp"
 #include "geom/polyline_distance.hpp"
@@ -568,15 +569,45 @@ std::vector<double> distance_by_spiral(const G3Result& g3, const G3Problem& prob
   return distance_by_piece(PolylineGrid(std::move(faired), 8.0), spiral_of, PolylineGrid(std::move(original), 8.0));
 }
 
+// How often κ changes sign along `pieces` (a run's, in order), from 16 samples a piece; |κ|
+// under `zero` counts as no sign.
+int sign_changes_along(const std::vector<PathPiece>& pieces, double zero) {
+  int count = 0;
+  double last = 0.0;
+  for (const PathPiece& piece : pieces)
+    for (const LacPoint& q : piece.sample(16)) {
+      if (std::abs(q.curvature) < zero) continue;
+      const double sign = q.curvature > 0.0 ? 1.0 : -1.0;
+      count += last != 0.0 && sign != last;
+      last = sign;
+    }
+  return count;
+}
+
+int sign_changes_along(const std::vector<FairedChain>& chains, double zero) {
+  std::vector<PathPiece> pieces;
+  for (const FairedChain& c : chains)
+    for (PathPiece& p : chain_pieces(c)) pieces.push_back(std::move(p));
+  return sign_changes_along(pieces, zero);
+}
+
 // G3 over the whole run (fair/g3_run.hpp), kept only when it stays within the budget of the
-// source; a log-aesthetic segment whose spirals stray is cut in two, up to `max_g3_rounds`
-// times. Where only holding its line joins to G2 solves the run, the segments at those joins
+// source and, where part of it follows the smoothing guide, changes the sign of κ no more often
+// than the G2 run (re-expressed, a guide's nearly straight pieces could swing across zero:
+// Because We Learn's i stem); a log-aesthetic segment whose spirals stray is cut in two, up to
+// `max_g3_rounds` times. Where only holding its line joins to G2 solves the run, the segments at those joins
 // are cut in two for the next round, which tries G3 there again with the room a shorter
 // spiral gives κ to rise from 0 with zero slope; the run held so is kept should no round do
 // better. Else the run stays G2 and says why.
-void reexpress_as_g3(FairedRun& result, const RunReference& source, const SmoothRun& run, double budget) {
+void reexpress_as_g3(FairedRun& result, const RunReference& source, const SmoothRun& run, double budget,
+                     double zero_curvature) {
   std::vector<int> pieces;
   std::string why;
+  // Only a guide stretch is checked so: a log-aesthetic chain's spirals keep their pieces'
+  // monotone curvature, and swing about zero only within the check's noise.
+  const bool guided =
+      std::any_of(result.chains.begin(), result.chains.end(), [](const FairedChain& c) { return c.guide.has_value(); });
+  const int g2_inflections = guided ? sign_changes_along(result.chains, zero_curvature) : 0;
   struct Held {
     G3Problem problem;
     std::vector<PolynomialSpiral> spirals;
@@ -592,10 +623,7 @@ void reexpress_as_g3(FairedRun& result, const RunReference& source, const Smooth
   };
   for (int round = 0; round < max_g3_rounds; ++round) {
     std::optional<G3Problem> problem = g3_problem(result.chains, run, pieces);
-    if (!problem) {
-      if (!result.chains.empty()) result.g3_shortfall = "part of it follows the smoothing guide";
-      return;  // so in every round: no round has held a run yet
-    }
+    if (!problem) return;  // no chain: nothing to re-express
     pieces.resize(problem->log_aesthetic_segment.back() + 1, 1);
     G3Result g3 = make_g3(problem->nodes, problem->lengths, problem->closed);
     int g2_line_joins = 0;
@@ -608,6 +636,12 @@ void reexpress_as_g3(FairedRun& result, const RunReference& source, const Smooth
     // The log-aesthetic segments to cut in two before the next round.
     std::vector<bool> split(pieces.size(), false);
     if (g3.ok()) {
+      const int inflections = guided ? sign_changes_along(curve_pieces(g3.spirals), zero_curvature) : 0;
+      if (guided && inflections > g2_inflections) {
+        why = "the G3 curve changes the sign of its curvature " + std::to_string(inflections) + " times, the G2 one " +
+              std::to_string(g2_inflections);
+        break;  // cutting gives it only more room to swing
+      }
       const std::vector<double> d = distance_by_spiral(g3, *problem, source, budget);
       const double worst = *std::max_element(d.begin(), d.end());
       if (worst <= budget && g2_line_joins == 0) {
@@ -709,7 +743,7 @@ FairedRun fair_run_on(const SmoothRun& run, const RunReference& source, const st
     if (cuts.empty() && drops.empty()) {
       result.ok = true;
       if (settings.continuity == Continuity::g3)
-        reexpress_as_g3(result, source, run, budget);
+        reexpress_as_g3(result, source, run, budget, 2e-6 * settings.flat_curvature);  // the check's |κ|·UPM of 1e-6
       return result;
     }
     for (const double c : cuts) junctions.push_back({c, JunctionKind::split});

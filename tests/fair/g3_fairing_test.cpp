@@ -44,6 +44,7 @@ void expect_g3(const std::string& name, const GlyphFairing& r, const FairSetting
     for (std::size_t i = 0; i < pieces.size(); ++i) {
       const FairedPiece& p = pieces[i];
       EXPECT_NE(p.kind, FairedPieceKind::log_aesthetic) << name << ": a run left G2";
+      EXPECT_NE(p.kind, FairedPieceKind::guide) << name << ": a run left on its smoothing guide";
       if (p.kind == FairedPieceKind::polynomial_spiral) {
         ++spirals;
         const CurvatureEnd start{p.start.point, angle_of(p.start.tangent), p.start.curvature, *p.start.curvature_derivative};
@@ -79,6 +80,15 @@ TEST(G3Fairing, EverySmoothJoinOfTheFairedPiecesIsG3) {
   for (const char* name : {"o", "e", "n", "c", "O", "D", "G", "U", "S", "a", "s"}) {
     FairSettings settings;
     expect_g3(name, fair_g3(name, settings), settings);
+  }
+}
+
+TEST(G3Fairing, ARunAlongTheSmoothingGuideComesOutG3) {
+  // Inter's m and s: a stretch of each has no G2 log-aesthetic chain within the budget and
+  // follows the smoothing guide, a C2 spline; its pieces are re-expressed as spirals too.
+  for (const char* name : {"uni006D", "uni0073"}) {
+    FairSettings settings;
+    expect_g3(name, fair_g3(name, settings, test::inter_variable), settings);
   }
 }
 

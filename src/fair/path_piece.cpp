@@ -1,0 +1,64 @@
+#include "fair/path_piece.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "fair/run_reference.hpp"
+
+namespace gf {
+
+std::vector<PathPiece> guide_pieces(const GuideStretch& g, bool whole_loop, bool at_curvature_extrema) {
+  const RunReference& ref = *g.guide;
+  const double length = g.s1 - g.s0;
+  const auto frame = [&ref, &g, length, whole_loop](double s) {
+    if (!whole_loop && s <= 0.0) return g.start;
+    if (!whole_loop && s >= length) return g.end;
+    return ref.frame_at(g.s0 + s);
+  };
+  std::vector<double> cuts{0.0};
+  std::vector<bool> at_flip{false};
+  const int steps = std::max(8, static_cast<int>(std::ceil(length)));
+  std::vector<double> kappa(static_cast<std::size_t>(steps));
+  double largest = 0.0;
+  for (int k = 1; k < steps; ++k)
+    kappa[static_cast<std::size_t>(k)] = ref.curvature_at(g.s0 + length * k / steps),
+    largest = std::max(largest, std::abs(kappa[static_cast<std::size_t>(k)]));
+  // A turn of κ counts once it has swung back by a hundredth of the stretch's largest |κ|.
+  const double swing = 0.01 * largest;
+  double last_sign = 0.0, anchor = kappa[1];
+  int direction = 0;
+  for (int k = 1; k < steps; ++k) {
+    const double s = length * k / steps, kk = kappa[static_cast<std::size_t>(k)];
+    const double sign = kk > 0.0 ? 1.0 : -1.0;
+    const bool flips = last_sign != 0.0 && sign != last_sign;
+    const bool quarter = std::abs(ref.theta_at(g.s0 + s) - ref.theta_at(g.s0 + cuts.back())) > std::numbers::pi / 2;
+    bool turns = false;
+    if (direction >= 0 && kk < anchor - swing) turns = direction > 0, direction = -1, anchor = kk;
+    else if (direction <= 0 && kk > anchor + swing) turns = direction < 0, direction = 1, anchor = kk;
+    else if ((direction > 0 && kk > anchor) || (direction < 0 && kk < anchor)) anchor = kk;
+    turns = turns && at_curvature_extrema;
+    if ((flips || quarter || turns) && s - cuts.back() > 1.0) cuts.push_back(s), at_flip.push_back(flips);
+    last_sign = sign;
+  }
+  cuts.push_back(length);
+  std::vector<PathPiece> out;
+  for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
+    const double a = cuts[i], len = cuts[i + 1] - a;
+    out.push_back({len, [frame, a](double s) { return frame(a + s); },
+                   [frame, a, len](int n) {
+                     std::vector<LacPoint> pts;
+                     for (int k = 0; k <= n; ++k) pts.push_back(frame(a + len * k / n));
+                     return pts;
+                   },
+                   at_flip[i]});
+  }
+  return out;
+}
+
+std::vector<PathPiece> chain_pieces(const FairedChain& chain) {
+  if (chain.guide) return guide_pieces(*chain.guide, chain.closed, false);
+  return chain.spirals.empty() ? curve_pieces(chain.segments) : curve_pieces(chain.spirals);
+}
+
+}  // namespace gf
