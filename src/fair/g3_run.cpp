@@ -237,7 +237,7 @@ std::optional<G3Problem> g3_problem(const std::vector<FairedChain>& chains, cons
       p.nodes.push_back({last.point, angle, kappa, kind, !run.closed && i == 0 && k == 0 ? room(run.start, last.point, true) : 0.0});
       const LacPoint next = k + 1 == n ? end_of(seg) : seg.at(seg.length * (k + 1) / n);
       p.lengths.push_back(seg.length / n);
-      p.log_aesthetic_segment.push_back(i);
+      p.run_piece.push_back(i);
       angle += turning_angle(last.tangent, next.tangent);
       last = next;
     }
@@ -255,7 +255,7 @@ void adopt_spirals(std::vector<FairedChain>& chains, const G3Problem& problem, s
     FairedChain& chain = chains[c];
     const std::size_t end_segment = first_segment + problem.pieces_per_chain[c];
     chain.spirals.clear();
-    for (; next < spirals.size() && problem.log_aesthetic_segment[next] < end_segment; ++next)
+    for (; next < spirals.size() && problem.run_piece[next] < end_segment; ++next)
       chain.spirals.push_back(std::move(spirals[next]));
     chain.segments.clear();
     chain.guide.reset();

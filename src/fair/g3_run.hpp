@@ -73,8 +73,8 @@ G3Result make_g3(std::span<const G3Node> nodes, std::span<const double> lengths,
 struct G3Problem {
   std::vector<G3Node> nodes;
   std::vector<double> lengths;
-  std::vector<std::size_t> log_aesthetic_segment;  ///< per G3 segment, the run's segment (or guide piece) it came from
-  std::vector<std::size_t> pieces_per_chain;       ///< the run's segments (or guide pieces) in each chain
+  std::vector<std::size_t> run_piece;         ///< per G3 segment, the run's segment or guide piece it came from
+  std::vector<std::size_t> pieces_per_chain;  ///< the run's segments or guide pieces in each chain
   bool closed = false;
 };
 

@@ -7,6 +7,7 @@
 #include <map>
 #include <numeric>
 #include <numbers>
+#include <utility>
 
 #include "fair/cubic_change.hpp"
 #include "geom/curvature.hpp"
@@ -396,12 +397,20 @@ RunChoice best_run(const std::vector<CubicChoices>& run, const CubicJudge& judge
 
 // The curvature jump at node k: between its two cubics, or from zero where it meets a line;
 // none elsewhere.
+// The curvatures at node k of the cubic arriving there and the one leaving it.
+std::pair<double, double> curvatures_at(const std::vector<OutlineNode>& nodes, std::size_t k) {
+  const std::size_t before = (k + nodes.size() - 1) % nodes.size();
+  return {node_curvature(outline_cubic(nodes, before), SegmentEnd::end),
+          node_curvature(outline_cubic(nodes, k), SegmentEnd::start)};
+}
+
 double join_jump(const OutlineJoins& joins, std::size_t k, double flat) {
   const std::vector<OutlineNode>& nodes = joins.nodes;
   const std::size_t n = nodes.size(), before = (k + n - 1) % n;
-  if (joins.joins_cubics(k))
-    return jump(node_curvature(outline_cubic(nodes, before), SegmentEnd::end),
-                node_curvature(outline_cubic(nodes, k), SegmentEnd::start), flat);
+  if (joins.joins_cubics(k)) {
+    const auto [in, out] = curvatures_at(nodes, k);
+    return jump(in, out, flat);
+  }
   if (!joins.meets_line(k)) return 0.0;
   const double kappa = joins.is_cubic(k) ? node_curvature(outline_cubic(nodes, k), SegmentEnd::start)
                                          : node_curvature(outline_cubic(nodes, before), SegmentEnd::end);
@@ -621,12 +630,10 @@ std::optional<Vec2> handle_on_line(const OutlineNode& node, std::optional<Vec2> 
 // its far handle a fifth of a unit off the tangent; whole units give 0 there, and the other
 // side, its far handle a unit off, some multiple of it (EB Garamond a–z A–Z: 221 of its 486
 // jumps were so).
-bool flat_node(const std::vector<OutlineNode>& nodes, const CubicJudge& judge, std::size_t h, std::size_t i,
-               double flat) {
+// `rounded`: its two curvatures on the grid now (curvatures_at).
+bool flat_node(const CubicJudge& judge, std::size_t h, std::size_t i, std::pair<double, double> rounded, double flat) {
   if (std::abs(judge.unrounded(h).k_end) < flat && std::abs(judge.unrounded(i).k_start) < flat) return true;
-  const double before = node_curvature(outline_cubic(nodes, h), SegmentEnd::end);
-  const double after = node_curvature(outline_cubic(nodes, i), SegmentEnd::start);
-  return std::min(std::abs(before), std::abs(after)) < flat;
+  return std::min(std::abs(rounded.first), std::abs(rounded.second)) < flat;
 }
 
 // A flat node (flat_node: an inflection, or a node rounding left flat on one side) keeps κ = 0
@@ -644,7 +651,8 @@ std::vector<std::size_t> seat_flat_nodes(std::vector<OutlineNode>& nodes, const 
   for (const std::size_t i : candidates) {
     const std::size_t h = (i + n - 1) % n, j = (i + 1) % n;
     if (!joins.joins_cubics(i) || !steps[i]) continue;
-    if (join_jump(joins, i, flat) <= target_jump || !flat_node(nodes, judge, h, i, flat)) continue;
+    const std::pair<double, double> rounded = curvatures_at(nodes, i);
+    if (jump(rounded.first, rounded.second, flat) <= target_jump || !flat_node(judge, h, i, rounded, flat)) continue;
     const NodeChange change(nodes, joins, judge, flat, i);
     const OutlineNode kept = nodes[i], kept_h = nodes[h], kept_j = nodes[j];
     const OutlineNode& target = ideal[i];

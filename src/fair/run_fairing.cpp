@@ -629,7 +629,7 @@ void reexpress_as_g3(FairedRun& result, const RunReference& source, const Smooth
   for (int round = 0; round < max_g3_rounds; ++round) {
     std::optional<G3Problem> problem = g3_problem(result.chains, run, pieces);
     if (!problem) return;  // no chain: nothing to re-express
-    pieces.resize(problem->log_aesthetic_segment.back() + 1, 1);
+    pieces.resize(problem->run_piece.back() + 1, 1);
     G3Result g3 = make_g3(problem->nodes, problem->lengths, problem->closed);
     int g2_line_joins = 0;
     // No room on a line for G3 there, perhaps: G2 at the line joins, G3 elsewhere. Every round
@@ -638,7 +638,7 @@ void reexpress_as_g3(FairedRun& result, const RunReference& source, const Smooth
       for (G3Node& n : problem->nodes)
         if (n.kind == G3NodeKind::line) n.kind = G3NodeKind::line_g2, ++g2_line_joins;
     if (!g3.ok() && g2_line_joins > 0) g3 = make_g3(problem->nodes, problem->lengths, problem->closed);
-    // The log-aesthetic segments to cut in two before the next round.
+    // The run's pieces (segments or guide pieces) to cut in two before the next round.
     std::vector<bool> split(pieces.size(), false);
     if (g3.ok()) {
       const int inflections = guided ? sign_changes_along(curve_pieces(g3.spirals), zero_curvature) : 0;
@@ -659,13 +659,13 @@ void reexpress_as_g3(FairedRun& result, const RunReference& source, const Smooth
       if (worst <= budget) {
         if (!held) held = Held{*problem, std::move(g3.spirals), worst, g2_line_joins};
         const std::size_t last = problem->nodes.size() - 1;
-        if (problem->nodes.front().kind == G3NodeKind::line_g2) split[problem->log_aesthetic_segment.front()] = true;
-        if (problem->nodes[last].kind == G3NodeKind::line_g2) split[problem->log_aesthetic_segment.back()] = true;
+        if (problem->nodes.front().kind == G3NodeKind::line_g2) split[problem->run_piece.front()] = true;
+        if (problem->nodes[last].kind == G3NodeKind::line_g2) split[problem->run_piece.back()] = true;
       } else {
         why = "the G3 curve strays " + std::to_string(worst) + " units from the source (budget " +
               std::to_string(budget) + ")";
         for (std::size_t i = 0; i < d.size(); ++i)
-          if (d[i] > budget) split[problem->log_aesthetic_segment[i]] = true;
+          if (d[i] > budget) split[problem->run_piece[i]] = true;
       }
     } else {
       // A stall may be a segment too long for one spiral's cubic κ: every one is cut.

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geom/foot_point.hpp"
+
 namespace gf {
 
 BSplineBasis::BSplineBasis(int spans, bool periodic) : spans_(spans), periodic_(periodic) {
@@ -82,11 +84,8 @@ Vec2 BSplineBasis::point_on_spans(std::span<const Cubic> spans, double u) const 
 double BSplineBasis::foot_parameter(std::span<const Cubic> spans, Vec2 p, double u, int steps) const {
   for (int step = 0; step < steps; ++step) {
     const auto [s, t] = span_at(u, spans_);
-    const Cubic& c = spans[s];
-    const auto h1 = c.hodograph();
-    const Vec2 d = c.point_at(t) - p, d1 = h1.point_at(t), d2 = h1.hodograph().point_at(t);
-    // Newton on (C(t) − p) · C'(t) = 0.
-    const double move = dot(d, d1) / (dot(d1, d1) + dot(d, d2));
+    const FootStep f = foot_step(spans[s], p, t);
+    const double move = f.along / f.slope;
     if (!std::isfinite(move)) break;
     u -= move / spans_;
     u = periodic_ ? u - std::floor(u) : std::clamp(u, 0.0, 1.0);

@@ -6,6 +6,7 @@
 #include <Eigen/Dense>
 
 #include "geom/bspline_basis.hpp"
+#include "geom/foot_point.hpp"
 
 namespace gf {
 
@@ -13,10 +14,8 @@ BSplineFit fit_cubic_bspline(std::span<const Vec2> points, int span_count, bool 
   BSplineFit fit;
   const int m = static_cast<int>(points.size());
   if (span_count < 1 || m < span_count + 3) return fit;
-  std::vector<double> u(points.size(), 0.0);
-  for (int i = 1; i < m; ++i) u[i] = u[i - 1] + distance(points[i], points[i - 1]);
+  std::vector<double> u = chord_length_parameters(points);
   if (u.back() == 0.0) return fit;
-  for (double& v : u) v /= u.back();
 
   const BSplineBasis basis(span_count, false);
   const int n = basis.control_count();

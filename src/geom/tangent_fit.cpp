@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include "geom/foot_point.hpp"
+
 namespace gf {
 
 namespace {
@@ -33,10 +35,8 @@ std::optional<Cubic> fit_cubic_with_end_tangents(Vec2 p0, Vec2 t0, Vec2 p3, Vec2
   const std::size_t n = points.size();
   if (n < 3) return std::nullopt;
   const double chord = distance(p0, p3);
-  std::vector<double> t(n, 0.0);
-  for (std::size_t k = 1; k < n; ++k) t[k] = t[k - 1] + distance(points[k - 1], points[k]);
+  std::vector<double> t = chord_length_parameters(points);
   if (!(t.back() > 0.0) || !(chord > 0.0)) return std::nullopt;
-  for (double& u : t) u /= t.back();
   // B(u) = P0 (B0 + B1) + P3 (B2 + B3) + a B1 T0 − b B2 T3: linear in the handle lengths a, b.
   auto terms = [&](double u, Vec2 q) {
     const double v = 1.0 - u;
@@ -61,14 +61,12 @@ std::optional<Cubic> fit_cubic_with_end_tangents(Vec2 p0, Vec2 t0, Vec2 p3, Vec2
     if (!(a > 0.0) || !(b > 0.0)) return std::nullopt;
     const Cubic c{p0, p0 + t0 * a, p3 - t3 * b, p3};
     const Quad velocity = c.hodograph();
-    const Line acceleration = velocity.hodograph();
     HandleSystem across;
     for (std::size_t k = 0; k < n; ++k) {
       for (int step = 0; step < newton_steps && k > 0 && k + 1 < n; ++step) {
-        const Vec2 off = c.point_at(t[k]) - points[k], d1 = velocity.point_at(t[k]), d2 = acceleration.point_at(t[k]);
-        const double slope = dot(d1, d1) + dot(off, d2);
-        if (!(slope > 0.0)) break;
-        t[k] = std::clamp(t[k] - dot(off, d1) / slope, 0.0, 1.0);
+        const FootStep f = foot_step(c, points[k], t[k]);
+        if (!(f.slope > 0.0)) break;
+        t[k] = std::clamp(t[k] - f.along / f.slope, 0.0, 1.0);
       }
       const Vec2 d1 = velocity.point_at(t[k]);
       const double speed = norm(d1);
