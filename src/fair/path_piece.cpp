@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "fair/cubic_change.hpp"
 #include "fair/run_reference.hpp"
 
 namespace gf {
@@ -26,18 +27,16 @@ std::vector<PathPiece> guide_pieces(const GuideStretch& g, bool whole_loop, bool
     largest = std::max(largest, std::abs(kappa[static_cast<std::size_t>(k)]));
   // A turn of κ counts once it has swung back by a hundredth of the stretch's largest |κ|.
   const double swing = 0.01 * largest;
-  double last_sign = 0.0, anchor = kappa[1];
-  int direction = 0;
+  TurnCounter counter;
+  double last_sign = 0.0;
   for (int k = 1; k < steps; ++k) {
     const double s = length * k / steps, kk = kappa[static_cast<std::size_t>(k)];
     const double sign = kk > 0.0 ? 1.0 : -1.0;
     const bool flips = last_sign != 0.0 && sign != last_sign;
     const bool quarter = std::abs(ref.theta_at(g.s0 + s) - ref.theta_at(g.s0 + cuts.back())) > std::numbers::pi / 2;
-    bool turns = false;
-    if (direction >= 0 && kk < anchor - swing) turns = direction > 0, direction = -1, anchor = kk;
-    else if (direction <= 0 && kk > anchor + swing) turns = direction < 0, direction = 1, anchor = kk;
-    else if ((direction > 0 && kk > anchor) || (direction < 0 && kk < anchor)) anchor = kk;
-    turns = turns && at_curvature_extrema;
+    const int turns_before = counter.turns;
+    counter.add(kk, swing);
+    const bool turns = at_curvature_extrema && counter.turns > turns_before;
     if ((flips || quarter || turns) && s - cuts.back() > 1.0) cuts.push_back(s), at_flip.push_back(flips);
     last_sign = sign;
   }
