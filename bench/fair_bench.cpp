@@ -22,6 +22,21 @@ void fair_every_glyph(benchmark::State& state, const std::string& font, FairProf
     for (const Glyph& g : set.glyphs) benchmark::DoNotOptimize(fair_glyph(g, settings));
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * set.glyphs.size()));
 }
+
+// As `glyphfair fair` does it: a contour that a composite repeats is faired once (the subset's
+// adieresis, eacute, fi, fl …).
+void fair_font_sharing_contours(benchmark::State& state, const std::string& font) {
+  const GlyphSet set = GlyphSource::open(font).load_all();
+  const FairSettings settings = resolve_settings({}, set.font.units_per_em);
+  for (auto _ : state) {
+    FairedContours faired;
+    for (const Glyph& g : set.glyphs) benchmark::DoNotOptimize(fair_glyph(g, settings, faired));
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * set.glyphs.size()));
+}
+BENCHMARK_CAPTURE(fair_font_sharing_contours, dejavu_text,
+                  std::string(GLYPHFAIR_FONTS) + "/DejaVuSans/DejaVuSans-subset.ttf")
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(fair_every_glyph, dejavu_text, std::string(GLYPHFAIR_FONTS) + "/DejaVuSans/DejaVuSans-subset.ttf",
                   FairProfile::text)
     ->Unit(benchmark::kMillisecond);

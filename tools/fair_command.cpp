@@ -85,8 +85,9 @@ int FairCommand::run() const {
   std::size_t glyphs_faired = 0, contours_kept = 0, runs_as_drawn = 0, g1_nodes = 0, guide_stretches = 0, g3_runs = 0,
               g2_runs = 0, g2_line_joins = 0;
   double deviation = 0.0, mismatch = 0.0;
+  FairedContours faired_contours;  // composites repeat their components' contours
   stream_glyphs<GlyphFairing>(
-      source, chunk_size, progress, name, [&](const Glyph& g) { return fair_glyph(g, settings); },
+      source, chunk_size, progress, name, [&](const Glyph& g) { return fair_glyph(g, settings, faired_contours); },
       [&](Glyph& original, GlyphFairing& r) {
         const auto tell = [&](const char* level, const std::vector<std::string>& whys, const char* outcome) {
           for (const std::string& why : whys) {

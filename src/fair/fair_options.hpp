@@ -64,6 +64,7 @@ struct FairSettings {
   /// Handwriting: each chain's free junction tangents start inside the wedge between their
   /// chords (fair/initial_tangents); on text, g2-jumps moved both ways (seven fonts 20 → 21).
   bool tangents_between_chords = false;
+  bool operator==(const FairSettings&) const = default;
 };
 
 FairSettings resolve_settings(const FairOptions& options, double units_per_em);

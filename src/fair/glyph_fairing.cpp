@@ -4,14 +4,14 @@
 
 namespace gf {
 
-GlyphFairing fair_glyph(const Glyph& source, const FairSettings& requested) {
+GlyphFairing fair_glyph(const Glyph& source, const FairSettings& requested, FairedContours& faired) {
   FairSettings settings = requested;
   settings.rounding = resolve_rounding(requested.rounding, source.outline.contours);
   GlyphFairing out;
   out.glyph = source;
   out.glyph.outline.contours.clear();
   for (std::size_t i = 0; i < source.outline.contours.size(); ++i) {
-    ContourFairing c = fair_contour(source.outline.contours[i], settings);
+    ContourFairing c = faired.fair(source.outline.contours[i], settings);
     const std::string contour = "contour " + std::to_string(i) + ": ";
     if (c.faired) {
       ++out.contours_faired;
@@ -30,6 +30,11 @@ GlyphFairing fair_glyph(const Glyph& source, const FairSettings& requested) {
     out.pieces.push_back(std::move(c.pieces));
   }
   return out;
+}
+
+GlyphFairing fair_glyph(const Glyph& source, const FairSettings& settings) {
+  FairedContours none(0);
+  return fair_glyph(source, settings, none);
 }
 
 }  // namespace gf

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "fair/contour_fairing.hpp"
+#include "fair/faired_contours.hpp"
 
 namespace gf {
 
@@ -26,7 +27,11 @@ struct GlyphFairing {
 };
 
 /// `settings.rounding` as_source resolved on the whole glyph: rounded to integers only when
-/// every point of every contour is a whole unit.
+/// every point of every contour is a whole unit. A contour `faired` already holds (another
+/// glyph's component) takes the result it holds.
+GlyphFairing fair_glyph(const Glyph& source, const FairSettings& settings, FairedContours& faired);
+
+/// Each contour faired afresh.
 GlyphFairing fair_glyph(const Glyph& source, const FairSettings& settings);
 
 }  // namespace gf

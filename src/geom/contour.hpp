@@ -16,6 +16,7 @@ struct NodeFlags {
   bool implied = false;
   /// The source's smooth flag (UFO `smooth="yes"`); nullopt when the source has none.
   std::optional<bool> smooth;
+  bool operator==(const NodeFlags&) const = default;
 };
 
 /// A closed or open sequence of segments. Segment i starts at node i. A closed contour has as
@@ -29,6 +30,7 @@ struct Contour {
   Vec2 node_point(std::size_t i) const {
     return i < segments.size() ? start_point(segments[i]) : end_point(segments.back());
   }
+  bool operator==(const Contour&) const = default;
 };
 
 /// The signed area enclosed by a closed contour (exact for Bézier segments);

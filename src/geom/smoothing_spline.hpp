@@ -36,6 +36,7 @@ struct SmoothingEnds {
 struct LobeMerging {
   double least_turning = 0.0;
   double least_curvature = 0.0;
+  bool operator==(const LobeMerging&) const = default;
 };
 
 /// `span_count` uniform spans (reduced when there are too few points). Open: clamped knots,
