@@ -383,7 +383,7 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
       limits.flat_curvature = settings.flat_curvature;
       limits.allowance = 0.95 * (settings.tolerance_units - d);
       limits.polish_rounds = hand ? handwriting_polish_rounds : 1;
-      limits.polish_lone_jumps = !hand;
+      limits.polish_only_at_jumps = !hand;
       limits.inflection_handles = limits.node_turns = hand;
       for (const double e : by_segment) limits.allowance_by_cubic.push_back(0.95 * (settings.tolerance_units - e));
       // Rounding can stray past its allowance where it slides a line's end (line_rounding) and

@@ -633,6 +633,17 @@ TEST(ContourFairing, ALoneJumpInATextRunIsPolishedAway) {
   }
 }
 
+// DejaVu Sans's ₨ (uni20A8): rounded, the spine of its s kept two curvature jumps in one run
+// (κ·UPM 0 against −0.066 where it leaves a line, −4.3 against −3.4 further on), and a text run
+// was polished only when a single jump was left. Every text run that jumps is now polished, at
+// the nodes at its jumps; one of the two goes.
+TEST(ContourFairing, ATextRunWithSeveralJumpsIsPolishedToo) {
+  const FairedGlyph f = fair_named(test::dejavu, "uni20A8", options_for(FairProfile::text, Rounding::integers));
+  ASSERT_TRUE(f.result.kept.empty()) << f.result.kept.front();
+  ASSERT_EQ(f.result.glyph.outline.contours.size(), 2u);
+  EXPECT_LE(g2_jumps(Outline{{f.result.glyph.outline.contours[1]}}, f.upm), 1);
+}
+
 // EB Garamond's t (UPM 1000, tolerance 1.25): the crossbar ends in a cap that turns 180°
 // between two horizontal lines in 48 units. No chain leaves a line with κ = 0 and turns so
 // within the budget, on any basis, and the whole contour was kept unfaired. Such a run is now
