@@ -73,6 +73,40 @@ struct Normal {
   double trace() const { return h.diagonal().sum(); }
 };
 
+// The sparse LDLT of the normal equations, with its fill-reducing ordering (AMD) kept while
+// the pattern stays: the search on λ changes only the values, and ordering anew took most of
+// the factorisations' time (4 % of whole DejaVu Sans's). A factorisation on a kept analysis is
+// what compute() gives, bit for bit.
+class PatternedLdlt {
+ public:
+  using Factor = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>;
+  PatternedLdlt() = default;
+  PatternedLdlt(const PatternedLdlt&) {}  // a copy starts with nothing analysed
+  PatternedLdlt& operator=(const PatternedLdlt&) {
+    outer_.clear(), inner_.clear();
+    return *this;
+  }
+  const Factor& factorize(const Eigen::SparseMatrix<double>& h) {
+    if (!same_pattern(h)) {
+      factor_.analyzePattern(h);
+      outer_.assign(h.outerIndexPtr(), h.outerIndexPtr() + h.outerSize() + 1);
+      inner_.assign(h.innerIndexPtr(), h.innerIndexPtr() + h.nonZeros());
+    }
+    factor_.factorize(h);
+    return factor_;
+  }
+
+ private:
+  bool same_pattern(const Eigen::SparseMatrix<double>& h) const {
+    return h.isCompressed() && static_cast<std::size_t>(h.outerSize()) + 1 == outer_.size() &&
+           static_cast<std::size_t>(h.nonZeros()) == inner_.size() &&
+           std::equal(outer_.begin(), outer_.end(), h.outerIndexPtr()) &&
+           std::equal(inner_.begin(), inner_.end(), h.innerIndexPtr());
+  }
+  Factor factor_;
+  std::vector<int> outer_, inner_;  ///< the pattern analysed, empty before the first
+};
+
 class SmoothingProblem {
  public:
   SmoothingProblem(std::span<const Vec2> points, int spans, bool closed, const SmoothingEnds& ends)
@@ -178,7 +212,7 @@ class SmoothingProblem {
     }
     // Positive definite wherever the points cover every span; should the factorisation still
     // fail, the dense LDLT, which pivots.
-    const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> sparse(h);
+    const PatternedLdlt::Factor& sparse = ldlt_.factorize(h);
     std::optional<Eigen::LDLT<Eigen::MatrixXd>> dense;
     if (sparse.info() != Eigen::Success) dense.emplace(Eigen::MatrixXd(h));
     const auto solve_h = [&](const Eigen::MatrixXd& rhs) -> Eigen::MatrixXd {
@@ -283,6 +317,7 @@ class SmoothingProblem {
   Normal data_{0}, penalty_{0}, bends_{0};
   bool held_bends_ = false;
   double scale_ = 1.0;
+  mutable PatternedLdlt ldlt_;  // a cache: solve() is const in what it answers
 };
 
 // Iteratively reweighted least squares towards Σ|r'''_s|: each span's weight 1/(|r'''_s| + ε),
