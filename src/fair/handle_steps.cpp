@@ -864,8 +864,8 @@ bool lands_on_line(Vec2 node, Vec2 d, bool join_after, Vec2 join, Vec2 line_dir)
 }
 
 // Where a run still jumps once the passes end, or turns where it should not (turns_too_often):
-// each node at a jump, or next to one (unless `only_at_jumps`: then only the far node of a line join
-// that jumps, and only where its handle lands on the line), or turning so, moved to
+// each node at a jump, or next to one (unless `only_at_jumps`: then only the far node of a
+// line join that jumps, and only where its handle lands on the line), or turning so, moved to
 // the grid points next to it and turned to the primitive directions near its tangent (its
 // handles as many steps long as they were), with the handles of the cubics around it chosen
 // again for each place (choose_window), so that a move which needs its neighbours' handles to
@@ -879,9 +879,9 @@ bool polish_jumping_run(std::vector<OutlineNode>& nodes, const std::vector<Outli
   for (std::size_t q = 0; q < cubics.size(); ++q) {
     const std::size_t i = cubics[q];
     if (!joins.joins_cubics(i) || !steps[i]) continue;
-    // Beside a jump; when `only_at_jumps`, only beside a line join that jumps, and then only to where
-    // its handle lands on the line (the join itself, κ = 0 wanted where the curve leaves the
-    // line, is no node to move: its far node is).
+    // Beside a jump; when `only_at_jumps`, only beside a line join that jumps, and then only to
+    // where its handle lands on the line (the join itself, κ = 0 wanted where the curve leaves
+    // the line, is no node to move: its far node is).
     const std::size_t next = (i + 1) % n, prev = (i + n - 1) % n;
     const bool next_jumps = join_jump(joins, next, flat) > target_jump, prev_jumps = join_jump(joins, prev, flat) > target_jump;
     const bool beside = !only_at_jumps && (next_jumps || prev_jumps);
@@ -1000,7 +1000,9 @@ void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<Outl
     if (std::none_of(again.begin(), again.end(), [](bool b) { return b; })) break;
   }
   // A run is polished while it jumps or turns so.
-  const auto wants_polish = [&](std::span<const std::size_t> run) { return jumps_in(run) > 0 || turns_too_often_in(run); };
+  const auto wants_polish = [&](std::span<const std::size_t> run) {
+    return jumps_in(run) > 0 || turns_too_often_in(run);
+  };
   for (std::size_t r = 0; r < runs.size(); ++r)
     for (int k = 0; k < limits.polish_rounds && wants_polish(runs[r]); ++k)
       if (!polish_jumping_run(nodes, ideal, steps, joins, runs[r], cycle, judge, limits.flat_curvature,

@@ -75,7 +75,7 @@ struct Normal {
 
 // The sparse LDLT of the normal equations, with its fill-reducing ordering (AMD) kept while
 // the pattern stays: the search on λ changes only the values, and ordering anew took most of
-// the factorisations' time (4 % of whole DejaVu Sans's). A factorisation on a kept analysis is
+// the factorisations' time (3.5 % of whole DejaVu Sans's). A factorisation on a kept analysis is
 // what compute() gives, bit for bit.
 class PatternedLdlt {
  public:

@@ -66,12 +66,14 @@ TEST(FairedContours, ThreadsSharingItGetWhatEachWouldAlone) {
   std::vector<GlyphFairing> shared(names.size());
   FairedContours faired;
   const auto work = [&](std::size_t from) {
-    for (std::size_t i = from; i < names.size(); i += 2) shared[i] = fair_glyph(font.glyph(names[i]), font.settings, faired);
+    for (std::size_t i = from; i < names.size(); i += 2)
+      shared[i] = fair_glyph(font.glyph(names[i]), font.settings, faired);
   };
   std::thread other(work, 1);
   work(0);
   other.join();
-  for (std::size_t i = 0; i < names.size(); ++i) expect_same_outline(shared[i], fair_glyph(font.glyph(names[i]), font.settings));
+  for (std::size_t i = 0; i < names.size(); ++i)
+    expect_same_outline(shared[i], fair_glyph(font.glyph(names[i]), font.settings));
   EXPECT_EQ(faired.size(), 7u);  // a 2, dots 2, e 2, acute 1
 }
 
