@@ -395,8 +395,6 @@ RunChoice best_run(const std::vector<CubicChoices>& run, const CubicJudge& judge
   return best;
 }
 
-// The curvature jump at node k: between its two cubics, or from zero where it meets a line;
-// none elsewhere.
 // The curvatures at node k of the cubic arriving there and the one leaving it.
 std::pair<double, double> curvatures_at(const std::vector<OutlineNode>& nodes, std::size_t k) {
   const std::size_t before = (k + nodes.size() - 1) % nodes.size();
@@ -404,6 +402,8 @@ std::pair<double, double> curvatures_at(const std::vector<OutlineNode>& nodes, s
           node_curvature(outline_cubic(nodes, k), SegmentEnd::start)};
 }
 
+// The curvature jump at node k: between its two cubics, or from zero where it meets a line;
+// none elsewhere.
 double join_jump(const OutlineJoins& joins, std::size_t k, double flat) {
   const std::vector<OutlineNode>& nodes = joins.nodes;
   const std::size_t n = nodes.size(), before = (k + n - 1) % n;

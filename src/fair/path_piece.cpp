@@ -28,16 +28,17 @@ std::vector<PathPiece> guide_pieces(const GuideStretch& g, bool whole_loop, bool
   // A turn of κ counts once it has swung back by a hundredth of the stretch's largest |κ|.
   const double swing = 0.01 * largest;
   TurnCounter counter;
-  double last_sign = 0.0;
+  double last_sign = 0.0, theta_at_cut = ref.theta_at(g.s0);
   for (int k = 1; k < steps; ++k) {
-    const double s = length * k / steps, kk = kappa[static_cast<std::size_t>(k)];
+    const double s = length * k / steps, kk = kappa[static_cast<std::size_t>(k)], theta = ref.theta_at(g.s0 + s);
     const double sign = kk > 0.0 ? 1.0 : -1.0;
     const bool flips = last_sign != 0.0 && sign != last_sign;
-    const bool quarter = std::abs(ref.theta_at(g.s0 + s) - ref.theta_at(g.s0 + cuts.back())) > std::numbers::pi / 2;
+    const bool quarter = std::abs(theta - theta_at_cut) > std::numbers::pi / 2;
     const int turns_before = counter.turns;
     counter.add(kk, swing);
     const bool turns = at_curvature_extrema && counter.turns > turns_before;
-    if ((flips || quarter || turns) && s - cuts.back() > 1.0) cuts.push_back(s), at_flip.push_back(flips);
+    if ((flips || quarter || turns) && s - cuts.back() > 1.0)
+      cuts.push_back(s), at_flip.push_back(flips), theta_at_cut = theta;
     last_sign = sign;
   }
   cuts.push_back(length);
