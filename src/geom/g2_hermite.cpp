@@ -59,4 +59,19 @@ std::optional<Cubic> g2_hermite_cubic_with_free_end(const HermiteEnd& start, con
   return free_start ? with_handles(start, end, free_handle, other) : with_handles(start, end, other, free_handle);
 }
 
+std::optional<Cubic> g2_hermite_cubic_from_flat_end(const HermiteEnd& start, const HermiteEnd& end, SegmentEnd free,
+                                                    double flat_handle, double max_handle) {
+  const Vec2 d = end.point - start.point;
+  const double chord = norm(d);
+  if (!(chord > 0.0) || !(flat_handle > 0.0)) return std::nullopt;
+  if (!(max_handle > 0.0)) max_handle = 2.0 * chord;
+  const double c = cross(start.tangent, end.tangent);
+  if (std::abs(c) < 1e-12) return std::nullopt;
+  // κ0 = 0 ⇔ T0 × D = b c; κ3 = 0 ⇔ D × T3 = a c (the equations above).
+  const bool free_start = free == SegmentEnd::start;
+  const double fixed = (free_start ? cross(d, end.tangent) : cross(start.tangent, d)) / c;
+  if (!(fixed > 0.0) || fixed > max_handle || flat_handle > max_handle) return std::nullopt;
+  return free_start ? with_handles(start, end, fixed, flat_handle) : with_handles(start, end, flat_handle, fixed);
+}
+
 }  // namespace gf

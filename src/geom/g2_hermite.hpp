@@ -31,4 +31,12 @@ std::vector<Cubic> g2_hermite_cubics(const HermiteEnd& start, const HermiteEnd& 
 std::optional<Cubic> g2_hermite_cubic_with_free_end(const HermiteEnd& start, const HermiteEnd& end, SegmentEnd free,
                                                     double free_handle, double max_handle = 0.0);
 
+/// As g2_hermite_cubic_with_free_end where the bound end is flat (κ = 0, a line join): its
+/// far control point must lie on its tangent line, so the free end's handle is fixed (free end:
+/// b = (T0 × D) / c; free start: a = (D × T3) / c) and the flat end's handle, `flat_handle`,
+/// is the one to choose. None where the tangents are parallel or the fixed handle is not in
+/// (0, max_handle].
+std::optional<Cubic> g2_hermite_cubic_from_flat_end(const HermiteEnd& start, const HermiteEnd& end, SegmentEnd free,
+                                                    double flat_handle, double max_handle = 0.0);
+
 }  // namespace gf

@@ -278,6 +278,19 @@ TEST(ContourFairing, RoundingAddsNoInflection) {
   EXPECT_LE(after, before);
 }
 
+TEST(ContourFairing, AStemsCurveToACornerIsOneCubic) {
+  // Inconsolata's t: its stem curves from κ = 0 to the corner under the crossbar. κ = 0 fixes
+  // the corner's handle, and only the corner's handle lengths were tried, so no cubic met it:
+  // the span was cut in three, with an S between (3 inflections, as many as the source's
+  // wobbly outline has). With the flat end's handle tried instead, one cubic (1 inflection).
+  const FairedGlyph f = fair_named(test::inconsolata, "t", FairOptions{});
+  ASSERT_TRUE(f.result.kept.empty()) << f.result.kept.front();
+  int before = 0, after = 0;
+  for (const Contour& c : f.source.outline.contours) before += inflections(c, f.upm);
+  for (const Contour& c : f.result.glyph.outline.contours) after += inflections(c, f.upm);
+  EXPECT_LT(after, before);
+}
+
 TEST(ContourFairing, HandwritingGlyphsAreFairedWithinTheTolerance) {
   // a, e, s, B, G, R: no chain of log-aesthetic segments fits some of their spans, which are
   // written from the smoothing guide instead (they were kept unfaired before that existed).

@@ -105,5 +105,30 @@ TEST(CubicWriteback, ACornersCurvatureIsFree) {
   EXPECT_LE(test::polyline_hausdorff(written, path), budget + 0.01);
 }
 
+// A curve leaving a line (κ = 0) for a corner is one cubic within the budget, κ = 0 at the
+// line and bending one way. (Where no G2 Hermite cubic of both ends fits, the flat end's
+// handle is tried at lengths, since κ = 0 fixes the corner's: ContourFairing's
+// AStemsCurveToACornerIsOneCubic.)
+TEST(CubicWriteback, ACurveFromALineToACornerIsOneCubic) {
+  const double turn = radians(4.0);
+  const Vec2 p0{0, 0}, p1{0, 250}, p2 = p1 + Vec2{-std::sin(turn), std::cos(turn)} * 120.0;
+  const SegmentFit fit = fit_inflection_start(p0, p1, p2);
+  ASSERT_TRUE(fit.ok());
+  FairedChain chain;
+  chain.segments.push_back(*fit.segment);
+  chain.zero_curvature_start = true;
+  ASSERT_EQ(chain.segments.front().start().curvature, 0.0);
+  const double budget = 0.5, flat = 5e-4;
+  const ChainCubics written = write_chain_as_cubics(chain, budget, flat, {.end_corner = true});
+  ASSERT_EQ(written.nodes.size(), 2u);
+  const Cubic c = outline_cubic(written.nodes, 0);
+  EXPECT_NEAR(*end_curvature(c, SegmentEnd::start).curvature, 0.0, 1e-12);
+  std::vector<Vec2> path, cubic;
+  for (const LacPoint& p : chain.segments.front().sample(2000)) path.push_back(p.point);
+  for (int k = 0; k <= 400; ++k) cubic.push_back(c.point_at(k / 400.0));
+  EXPECT_LE(test::polyline_hausdorff(cubic, path), budget + 0.01);
+  for (int k = 1; k <= 64; ++k) EXPECT_GE(curvature(derivatives_at(c, k / 64.0)).value_or(0.0), 0.0) << k / 64.0;  // turning left throughout
+}
+
 }  // namespace
 }  // namespace gf

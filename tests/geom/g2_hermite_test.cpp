@@ -99,5 +99,38 @@ TEST(G2Hermite, OneFreeEndMeetsTheOtherEndsCurvature) {
   EXPECT_FALSE(g2_hermite_cubic_with_free_end(s, wrong, SegmentEnd::start, symmetric));
 }
 
+// From a flat end (κ = 0) to a free one: the flat end's far control point lies on its tangent
+// line, so the free end's handle is the distance from the free end back to where the two
+// tangent lines cross (the closed form), whatever the flat end's handle; parallel tangents, or
+// lines crossing behind an end, give none.
+TEST(G2Hermite, AFlatEndFixesTheFreeEndsHandle) {
+  const double turn = radians(4.0);
+  const HermiteEnd s{{0.0, 0.0}, {0.0, 1.0}, 0.0};
+  const Vec2 cross_at{0.0, 150.0};  // where the tangent lines meet
+  const Vec2 t3{-std::sin(turn), std::cos(turn)};
+  const HermiteEnd e{cross_at + t3 * 220.0, t3, 0.0};
+  for (const SegmentEnd free : {SegmentEnd::end, SegmentEnd::start}) {
+    const bool free_start = free == SegmentEnd::start;
+    // Walked backwards, the same curve has its flat end last and its free end first.
+    const HermiteEnd a = free_start ? HermiteEnd{e.point, -e.tangent, 0.0} : s;
+    const HermiteEnd b = free_start ? HermiteEnd{s.point, -s.tangent, 0.0} : e;
+    for (const double flat_handle : {20.0, 75.0, 140.0}) {
+      const std::optional<Cubic> c = g2_hermite_cubic_from_flat_end(a, b, free, flat_handle);
+      ASSERT_TRUE(c) << flat_handle;
+      const SegmentEnd flat = free_start ? SegmentEnd::end : SegmentEnd::start;
+      EXPECT_NEAR(*end_curvature(*c, flat).curvature, 0.0, 1e-15);
+      EXPECT_NEAR(distance(c->p[free_start ? 3 : 0], c->p[free_start ? 2 : 1]), flat_handle, 1e-9);
+      EXPECT_NEAR(distance(c->p[free_start ? 0 : 3], c->p[free_start ? 1 : 2]), 220.0, 1e-9);
+      EXPECT_NEAR(cross(*end_tangent(*c, SegmentEnd::start), a.tangent), 0.0, 1e-12);
+      EXPECT_NEAR(cross(*end_tangent(*c, SegmentEnd::end), b.tangent), 0.0, 1e-12);
+    }
+  }
+  const HermiteEnd parallel{{10.0, 300.0}, {0.0, 1.0}, 0.0};
+  EXPECT_FALSE(g2_hermite_cubic_from_flat_end(s, parallel, SegmentEnd::end, 50.0));
+  const HermiteEnd behind{{-20.0, -100.0}, t3, 0.0};  // the lines cross beyond this end
+  EXPECT_FALSE(g2_hermite_cubic_from_flat_end(s, behind, SegmentEnd::end, 50.0));
+}
+
+
 }  // namespace
 }  // namespace gf
