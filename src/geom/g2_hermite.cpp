@@ -42,36 +42,44 @@ std::vector<Cubic> g2_hermite_cubics(const HermiteEnd& start, const HermiteEnd& 
   return out;
 }
 
-std::optional<Cubic> g2_hermite_cubic_with_free_end(const HermiteEnd& start, const HermiteEnd& end, SegmentEnd free,
-                                                    double free_handle, double max_handle) {
+// What a cubic with one free end needs of its ends: the bound end's cross term, T0 × D for a
+// free end or D × T3 for a free start, c = T0 × T3 and the longest handle (2 |D| by default).
+// None where the ends coincide or the given handle is not positive.
+struct OneFreeEnd {
+  double bound_cross, c, max_handle;
+};
+
+std::optional<OneFreeEnd> one_free_end(const HermiteEnd& start, const HermiteEnd& end, SegmentEnd free,
+                                       double given_handle, double max_handle) {
   const Vec2 d = end.point - start.point;
   const double chord = norm(d);
-  if (!(chord > 0.0) || !(free_handle > 0.0)) return std::nullopt;
-  if (!(max_handle > 0.0)) max_handle = 2.0 * chord;
-  const double c = cross(start.tangent, end.tangent);
+  if (!(chord > 0.0) || !(given_handle > 0.0)) return std::nullopt;
+  const double bound_cross = free == SegmentEnd::start ? cross(d, end.tangent) : cross(start.tangent, d);
+  return OneFreeEnd{bound_cross, cross(start.tangent, end.tangent), max_handle > 0.0 ? max_handle : 2.0 * chord};
+}
+
+std::optional<Cubic> g2_hermite_cubic_with_free_end(const HermiteEnd& start, const HermiteEnd& end, SegmentEnd free,
+                                                    double free_handle, double max_handle) {
+  const std::optional<OneFreeEnd> p = one_free_end(start, end, free, free_handle, max_handle);
+  if (!p) return std::nullopt;
   // κ3 b² = 2/3 (D × T3 − a c) for a free start; κ0 a² = 2/3 (T0 × D − b c) for a free end.
   const bool free_start = free == SegmentEnd::start;
   const double kappa = free_start ? end.curvature : start.curvature;
-  const double rhs = (2.0 / 3.0) * ((free_start ? cross(d, end.tangent) : cross(start.tangent, d)) - free_handle * c);
+  const double rhs = (2.0 / 3.0) * (p->bound_cross - free_handle * p->c);
   if (kappa == 0.0 || !(rhs / kappa > 0.0)) return std::nullopt;
   const double other = std::sqrt(rhs / kappa);
-  if (other > max_handle) return std::nullopt;
+  if (other > p->max_handle) return std::nullopt;
   return free_start ? with_handles(start, end, free_handle, other) : with_handles(start, end, other, free_handle);
 }
 
 std::optional<Cubic> g2_hermite_cubic_from_flat_end(const HermiteEnd& start, const HermiteEnd& end, SegmentEnd free,
                                                     double flat_handle, double max_handle) {
-  const Vec2 d = end.point - start.point;
-  const double chord = norm(d);
-  if (!(chord > 0.0) || !(flat_handle > 0.0)) return std::nullopt;
-  if (!(max_handle > 0.0)) max_handle = 2.0 * chord;
-  const double c = cross(start.tangent, end.tangent);
-  if (std::abs(c) < 1e-12) return std::nullopt;
+  const std::optional<OneFreeEnd> p = one_free_end(start, end, free, flat_handle, max_handle);
+  if (!p || std::abs(p->c) < 1e-12) return std::nullopt;
   // κ0 = 0 ⇔ T0 × D = b c; κ3 = 0 ⇔ D × T3 = a c (the equations above).
-  const bool free_start = free == SegmentEnd::start;
-  const double fixed = (free_start ? cross(d, end.tangent) : cross(start.tangent, d)) / c;
-  if (!(fixed > 0.0) || fixed > max_handle || flat_handle > max_handle) return std::nullopt;
-  return free_start ? with_handles(start, end, fixed, flat_handle) : with_handles(start, end, flat_handle, fixed);
+  const double fixed = p->bound_cross / p->c;
+  if (!(fixed > 0.0) || fixed > p->max_handle || flat_handle > p->max_handle) return std::nullopt;
+  return free == SegmentEnd::start ? with_handles(start, end, fixed, flat_handle) : with_handles(start, end, flat_handle, fixed);
 }
 
 }  // namespace gf

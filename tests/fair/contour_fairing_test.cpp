@@ -265,15 +265,19 @@ int inflections(const Contour& c, double upm) {
   return count;
 }
 
+int inflections(const Outline& o, double upm) {
+  int count = 0;
+  for (const Contour& c : o.contours) count += inflections(c, upm);
+  return count;
+}
+
 TEST(ContourFairing, RoundingAddsNoInflection) {
   // Inter's a: rounding turned nearly straight cubics of its bowl into S curves (4 inflections
   // against the source's 2). A node is nudged while either of its cubics bends more ways than
   // before rounding, not only while its curvature jumps.
   const FairedGlyph f = fair_named(test::inter_variable, "uni0061", FairOptions{});
   ASSERT_TRUE(f.result.kept.empty()) << f.result.kept.front();
-  int before = 0, after = 0;
-  for (const Contour& c : f.source.outline.contours) before += inflections(c, f.upm);
-  for (const Contour& c : f.result.glyph.outline.contours) after += inflections(c, f.upm);
+  const int before = inflections(f.source.outline, f.upm), after = inflections(f.result.glyph.outline, f.upm);
   EXPECT_GT(before, 0);
   EXPECT_LE(after, before);
 }
@@ -285,9 +289,7 @@ TEST(ContourFairing, AStemsCurveToACornerIsOneCubic) {
   // wobbly outline has). With the flat end's handle tried instead, one cubic (1 inflection).
   const FairedGlyph f = fair_named(test::inconsolata, "t", FairOptions{});
   ASSERT_TRUE(f.result.kept.empty()) << f.result.kept.front();
-  int before = 0, after = 0;
-  for (const Contour& c : f.source.outline.contours) before += inflections(c, f.upm);
-  for (const Contour& c : f.result.glyph.outline.contours) after += inflections(c, f.upm);
+  const int before = inflections(f.source.outline, f.upm), after = inflections(f.result.glyph.outline, f.upm);
   EXPECT_LT(after, before);
 }
 
@@ -360,9 +362,7 @@ TEST(ContourFairing, RoundedNodeDirectionsKeepTheirCubicsBent) {
     const FairedGlyph f = fair_named(test::inter_variable, name, FairOptions{});
     ASSERT_TRUE(f.result.kept.empty()) << name << ": " << f.result.kept.front();
     EXPECT_FALSE(has_fraction(f.result.glyph.outline)) << name;
-    int before = 0, after = 0;
-    for (const Contour& c : f.source.outline.contours) before += inflections(c, f.upm);
-    for (const Contour& c : f.result.glyph.outline.contours) after += inflections(c, f.upm);
+    const int before = inflections(f.source.outline, f.upm), after = inflections(f.result.glyph.outline, f.upm);
     EXPECT_EQ(before, 0) << name;
     EXPECT_EQ(after, 0) << name;
     EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm), 0) << name;
