@@ -295,9 +295,10 @@ class SpanWriter {
     if (free_start == free_end || std::abs(free_start ? pb.curvature : pa.curvature) >= flat_share * flat_) return out;
     const HermiteEnd start{pa.point, pa.tangent, 0.0}, end{pb.point, pb.tangent, 0.0};
     for (const double h : corner_handle_lengths(distance(pa.point, pb.point))) {
-      // The flat end's handle lies on its line in whole steps of it: a handle of a unit on a
-      // line of long step slid the line's end away when rounded (DejaVu Sans's ☫: a 0.8-unit
-      // handle on a line stepping 496 units, 24 units off, and the contour kept unfaired).
+      // The flat end's handle lies on its line in whole steps of it, so none shorter than the
+      // shortest span: a handle of a unit on a line of long step slid the line's end away when
+      // rounded (DejaVu Sans's ☫: a 0.8-unit handle on a line stepping 496 units, 24 units
+      // off, and the contour kept unfaired).
       if (h < shortest_span_) continue;
       const std::optional<Cubic> c =
           g2_hermite_cubic_from_flat_end(start, end, free_start ? SegmentEnd::start : SegmentEnd::end, h);

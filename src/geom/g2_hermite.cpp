@@ -42,6 +42,8 @@ std::vector<Cubic> g2_hermite_cubics(const HermiteEnd& start, const HermiteEnd& 
   return out;
 }
 
+namespace {
+
 // What a cubic with one free end needs of its ends: the bound end's cross term, T0 × D for a
 // free end or D × T3 for a free start, c = T0 × T3 and the longest handle (2 |D| by default).
 // None where the ends coincide or the given handle is not positive.
@@ -57,6 +59,8 @@ std::optional<OneFreeEnd> one_free_end(const HermiteEnd& start, const HermiteEnd
   const double bound_cross = free == SegmentEnd::start ? cross(d, end.tangent) : cross(start.tangent, d);
   return OneFreeEnd{bound_cross, cross(start.tangent, end.tangent), max_handle > 0.0 ? max_handle : 2.0 * chord};
 }
+
+}  // namespace
 
 std::optional<Cubic> g2_hermite_cubic_with_free_end(const HermiteEnd& start, const HermiteEnd& end, SegmentEnd free,
                                                     double free_handle, double max_handle) {
