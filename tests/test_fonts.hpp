@@ -7,6 +7,7 @@ namespace gf::test {
 
 inline const std::string fonts = GLYPHFAIR_FONTS;
 inline const std::string dejavu = fonts + "/DejaVuSans/DejaVuSans-subset.ttf";
+inline const std::string dejavu_serif = fonts + "/DejaVuSerif/DejaVuSerif-subset.ttf";  // R, s
 inline const std::string because_we_learn = fonts + "/BecauseWeLearn/BecauseWeLearn-Regular-subset.otf";
 inline const std::string inter_variable = fonts + "/Inter/Inter-subset.var.ttf";
 inline const std::string inconsolata = fonts + "/Inconsolata/Inconsolata-subset.otf";

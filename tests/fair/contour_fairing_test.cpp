@@ -353,6 +353,16 @@ ContourFairing faired_on_grid(const Contour& c, FairProfile profile, double upm)
   return r;
 }
 
+TEST(ContourFairing, ACurveMeetsARoundedLineWithZeroCurvature) {
+  // DejaVu Serif's s: rounding turned its spine's line 1.3° onto the short step (3, −1), which
+  // left the upper curve's far handle 2.85 units off the line, farther than rounding may move
+  // it: κ·UPM 2.3 where the curve meets the line. An unseated far handle now costs as much as
+  // the farthest a line's end may move, and the line takes (13, −4), its curves sliding along.
+  expect_faired(test::dejavu_serif, "s", FairProfile::text);
+  const FairedGlyph f = fair_named(test::dejavu_serif, "s", FairOptions{});
+  EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm), 0);
+}
+
 // A smooth node a unit off a nearly straight stroke, its tangent a degree off the axis: rounded
 // along the axis, the cubic from the stroke has to come back to it and turns into an S (Inter's
 // b and p: one inflection the source lacks; its g: κ −31 per em against +0.25 there). The
