@@ -16,16 +16,6 @@ constexpr double off_line = 0.75;        // units a slid end may lie off the lin
 constexpr double slide_weight = 0.02;    // a unit of slide costs this much of a unit moved
 constexpr double step_weight = 0.1;      // a unit of primitive step costs this much
 constexpr double tie_weight = 0.01;      // of a unit moved, at the ends of a line no curve meets
-// A join the curve cannot leave with κ = 0 costs as much as moving an end by what the line has
-// left of the tolerance, and at least as much as the farthest an end may move (3 units): a
-// brush font's 10 units of room go to G2 before a shorter step, and a short step, or an end
-// left where it was, is no better than a curvature jump the check counts. At one unit, DejaVu
-// Serif's s spine turned 1.3° onto (3, −1) and left its curve's far handle 2.85 units off the
-// line (κ·UPM 2.3 at the join); now it takes (13, −4), its curves sliding along it. a–z A–Z:
-// FreeSerif g2-jumps 45 → 35, EB Garamond kinks 45 → 31 (but g2-jumps 368 → 381, curvature
-// variation 0.92× → 0.94× of the source's), Lato inflections 1.04× → 1.0×; at two units only
-// FreeSerif and EB Garamond gained, at four DejaVu Sans Bold lost two.
-constexpr double far_handle_unit = 3.0;
 constexpr double fold_unit = 4.0;        // the cost of a curve the line's step bends into an extremum
 constexpr int curve_samples = 32;
 constexpr int slid_samples = 12;
@@ -35,6 +25,12 @@ constexpr double short_step = 3.0;       // units: no slide gives a shorter step
 constexpr double stray_share = 0.25;     // of its length, a handle on the line may change by
 constexpr double fold_share = 0.75;      // of its curve's chord, a handle on the line may reach
 constexpr int most_room = 3;             // units an end may move beyond its grid neighbours
+// A join the curve cannot leave with κ = 0 costs as much as moving an end by what the line has
+// left of the tolerance, and at least as much as the most an end may move: a brush font's 10
+// units of room go to G2 before a shorter step, and no shorter step or unmoved end is worth a
+// curvature jump (at one unit, DejaVu Serif's s spine took the step (3, −1) and left its curve's
+// far handle 2.85 units off the line; docs/fairing.md, stop 47).
+constexpr double far_handle_unit = most_room;
 constexpr double most_line_turn = 0.1;   // radians, as a node may turn on the grid (handle_steps)
 
 struct EndPlace {
