@@ -39,13 +39,17 @@ constexpr double shortest_corner_handle = 0.04, longest_corner_handle = 1.0;
 // A bound end's curvature under this share of flat_curvature is 0 itself (κ·UPM under 5e-4).
 constexpr double flat_share = 1e-3;
 
-std::vector<double> corner_handle_lengths(double chord) {
-  std::vector<double> out;
+std::array<double, corner_handles> corner_handle_lengths(double chord) {
+  std::array<double, corner_handles> out;
   const double ratio = longest_corner_handle / shortest_corner_handle;
   for (int k = 0; k < corner_handles; ++k)
-    out.push_back(chord * shortest_corner_handle * std::pow(ratio, double(k) / (corner_handles - 1)));
+    out[static_cast<std::size_t>(k)] = chord * shortest_corner_handle * std::pow(ratio, double(k) / (corner_handles - 1));
   return out;
 }
+
+// What the path between two of the writeback's nodes does, so a cubic fitted to it must too:
+// bend one way, and turn horizontal or vertical only at its ends.
+bool bends_as_a_span(const Cubic& c) { return curvature_shape(c, 0.0).sign_changes == 0 && inner_axis_extrema(c) == 0; }
 
 // Short primitive integer directions, |d|² ≤ `longest`: where a span must be cut, the cut goes
 // where the tangent runs along one of them, so rounding keeps the node's handles exactly
@@ -302,7 +306,7 @@ class SpanWriter {
       if (h < shortest_span_) continue;
       const std::optional<Cubic> c =
           g2_hermite_cubic_from_flat_end(start, end, free_start ? SegmentEnd::start : SegmentEnd::end, h);
-      if (c && curvature_shape(*c, 0.0).sign_changes == 0 && inner_axis_extrema(*c) == 0) out.push_back(*c);
+      if (c && bends_as_a_span(*c)) out.push_back(*c);
     }
     return out;
   }
@@ -333,7 +337,7 @@ class SpanWriter {
           free.push_back(*c);
     }
     for (const Cubic& c : free)
-      if (curvature_shape(c, 0.0).sign_changes == 0 && inner_axis_extrema(c) == 0) out.push_back(c);
+      if (bends_as_a_span(c)) out.push_back(c);
     return out;
   }
 

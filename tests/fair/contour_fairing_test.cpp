@@ -73,8 +73,12 @@ FairedGlyph fair_named(const std::string& font, const std::string& glyph, const 
   return out;
 }
 
-void expect_faired(const std::string& font, const std::string& glyph, FairProfile profile) {
-  const FairedGlyph f = fair_named(font, glyph, options_for(profile, Rounding::integers));
+// `faired`, when given, gets the glyph as faired, for a test's own checks.
+void expect_faired(const std::string& font, const std::string& glyph, FairProfile profile,
+                   FairedGlyph* faired = nullptr) {
+  FairedGlyph local;
+  FairedGlyph& f = faired ? *faired : local;
+  f = fair_named(font, glyph, options_for(profile, Rounding::integers));
   const Glyph& g = f.source;
   const FairSettings& settings = f.settings;
   const GlyphFairing& r = f.result;
@@ -358,8 +362,8 @@ TEST(ContourFairing, ACurveMeetsARoundedLineWithZeroCurvature) {
   // left the upper curve's far handle 2.85 units off the line, farther than rounding may move
   // it: κ·UPM 2.3 where the curve meets the line. An unseated far handle now costs as much as
   // the farthest a line's end may move, and the line takes (13, −4), its curves sliding along.
-  expect_faired(test::dejavu_serif, "s", FairProfile::text);
-  const FairedGlyph f = fair_named(test::dejavu_serif, "s", FairOptions{});
+  FairedGlyph f;
+  expect_faired(test::dejavu_serif, "s", FairProfile::text, &f);
   EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm), 0);
 }
 
