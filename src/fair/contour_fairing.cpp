@@ -446,7 +446,10 @@ ContourFairing fair_planned(const Contour& source, const ContourPlan& plan, cons
 }
 
 // How many times corners that came out as kinks are made smooth and the contour faired again.
-constexpr int kink_passes = 2;
+// Lines a pass merges meet their neighbour at a new angle: Breip's F (a curve tangent to a
+// 15-unit vertical line, then three lines 3° apart) takes three passes, the third making the
+// curve's join smooth, which two left a kink of 0.9°.
+constexpr int kink_passes = 8;
 
 // The kinks left between two lines (no run passes through them, and merging the lines strays:
 // Inter's Q tail, Cantarell's y) filleted within what the faired contour leaves of the tolerance.

@@ -359,11 +359,14 @@ class RunPlacement {
     for (std::size_t t = 0; t < run_.size(); ++t) {
       const LineOnGrid& l = run_[t];
       const LinePlacement& p = placed_[t];
-      // A corner with an extremum on it (cubic_writeback's snap: its curve's handle along an
-      // axis) moves its handles with it, so the extremum stays on the node.
+      // A corner moves its curve's handle with it, so the curve leaves it as before: an
+      // extremum on it (cubic_writeback's snap: the handle along an axis) stays there, and a
+      // curve leaving it just off an axis does not turn past it inside (Because We Connect's R:
+      // its stem's line stood upright, its corner 3 units over, and the bowl's curve, its
+      // handle left behind, left the corner leaning back, an x-extremum 7 units up).
       const auto move_node = [&](std::size_t k, Vec2 to) {
         const Vec2 by = to - rounded[k].point;
-        if (!exact_[k].smooth && exact_[k].grid_step) {
+        if (!exact_[k].smooth) {
           if (rounded[k].in_handle) *rounded[k].in_handle = *rounded[k].in_handle + by;
           if (rounded[k].out_handle) *rounded[k].out_handle = *rounded[k].out_handle + by;
         }

@@ -38,8 +38,8 @@ namespace gf {
 /// step strays (moves by more than a quarter of its length and its curve's allowance) or
 /// reaches past three quarters of its curve's chord. An end not slid goes to its nearest grid
 /// point or a neighbour of it: any neighbour, or with `limits.any_grid_neighbour` false only
-/// those within its allowance. A corner with an extremum on it (a grid step, though not
-/// smooth) takes its curve's handle along.
+/// those within its allowance. A corner takes its curve's handle along (an extremum on it
+/// stays there).
 void place_lines_on_grid(const std::vector<OutlineNode>& exact, std::vector<OutlineNode>& rounded,
                          std::vector<std::optional<Vec2>>& steps, bool closed, const HandleStepLimits& limits);
 

@@ -219,6 +219,46 @@ TEST(ContourFairing, AKinkWhoseFilletTakesAWholeLineIsFilleted) {
   for (const Join& j : joins_of(r.contour)) EXPECT_NE(j.kind, JoinKind::kink) << "node " << j.node;
 }
 
+TEST(ContourFairing, LinesMergedPassByPassLeaveNoKink) {
+  // Breip's F, its stem's left side: a curve tangent to a 15-unit vertical line, then lines
+  // turning 3° and 1° from it. Each pass over the kinks merged one more line, and the merged
+  // line, now 2.7° off the vertical, met the curve at a corner: after two passes a 0.9° kink.
+  Contour stem;
+  const auto line = [&](Vec2 a, Vec2 b) { stem.segments.push_back(Line{{a, b}}); };
+  const auto quads = [&](Vec2 from, std::initializer_list<std::pair<Vec2, Vec2>> rest) {
+    for (const auto& [c, to] : rest) stem.segments.push_back(Quad{{from, c, to}}), from = to;
+  };
+  line({64, 713}, {56, 758});
+  quads({56, 758}, {{{57, 766}, {65, 771}}, {{80, 778}, {106, 761}}, {{124, 750}, {137, 750}},
+                    {{188, 751}, {312, 770}}, {{336, 773}, {358, 775}}});
+  line({358, 775}, {545, 792});
+  quads({545, 792}, {{{577, 796}, {606, 804}}, {{623, 809}, {630, 783}}, {{636, 764}, {626, 753}},
+                    {{609, 736}, {562, 734}}, {{545, 732}, {536, 730}}, {{510, 723}, {429, 720}},
+                    {{410, 719}, {394, 717}}});
+  line({394, 717}, {264, 698});
+  quads({264, 698}, {{{254, 697}, {245, 697}}});
+  line({245, 697}, {169, 690});
+  quads({169, 690}, {{{145, 691}, {122, 705}}, {{116, 708}, {117, 695}}});
+  line({117, 695}, {129, 612});
+  quads({129, 612}, {{{130, 591}, {132, 487}}, {{135, 367}, {132, 327}}});
+  line({132, 327}, {126, 210});
+  quads({126, 210}, {{{121, 179}, {112, 147}}, {{91, 76}, {82, 61}}, {{68, 36}, {41, 21}}, {{26, 13}, {25, 36}},
+                    {{25, 40}, {34, 100}}, {{36, 118}, {54, 166}}, {{62, 187}, {64, 206}}, {{73, 289}, {75, 476}},
+                    {{75, 484}, {75, 491}}});
+  line({75, 491}, {68, 617}), line({68, 617}, {64, 712}), line({64, 712}, {64, 713});
+  stem.nodes.assign(stem.segments.size(), NodeFlags{});
+  FairOptions fo;
+  fo.profile = FairProfile::handwriting;
+  for (const Rounding rounding : {Rounding::none, Rounding::integers}) {
+    fo.rounding = rounding;
+    const FairSettings settings = resolve_settings(fo, 1024.0);
+    const ContourFairing r = fair_contour(stem, settings);
+    ASSERT_TRUE(r.faired) << r.reason;
+    EXPECT_LE(brute_force_hausdorff(stem, r.contour), 1.01 * settings.tolerance_units);
+    for (const Join& j : joins_of(r.contour)) EXPECT_NE(j.kind, JoinKind::kink) << "node " << j.node;
+  }
+}
+
 TEST(ContourFairing, AHairlineIsFairedWithinHalfItsThickness) {
   // Because We Create's t: a brush stroke 2 to 4 units wide, faired to half its thickness. The
   // smoothing guide at one span per half feature window could not come that close, and the

@@ -7,6 +7,8 @@
 
 #include <cmath>
 
+#include "fair/cubic_change.hpp"
+
 namespace gf {
 namespace {
 
@@ -65,6 +67,40 @@ TEST(LineRounding, AShortStepNeedsNoSlide) {
   EXPECT_EQ(*steps[1], Vec2(2.0, 5.0));
   EXPECT_LE(distance(r[1].point, nodes[1].point), std::sqrt(2.0));
   EXPECT_EQ(*r[1].out_handle, r[1].point + Vec2(8.0, 20.0));
+}
+
+TEST(LineRounding, ACornerTakesItsCurvesHandleAlong) {
+  // Because We Connect's R: a stem's line 0.7° off the vertical, from a curve's tangent join to
+  // the corner where the bowl's curve leaves it, 8° to the right. The line stands upright and
+  // its corner moves over; with its handle left behind, the curve left the corner straight up
+  // or leaning back (in the font, 3 units over: an x-extremum 7 units up, with no node).
+  std::vector<OutlineNode> nodes(4);
+  nodes[0].point = {140.82, 74.55};
+  nodes[0].out_handle = Vec2{140.82, 86.13};
+  nodes[0].smooth = false;
+  nodes[1].point = {140.17, 142.54};
+  nodes[1].in_handle = Vec2{140.66, 100.55};
+  nodes[2].point = {138.0, 330.0};
+  nodes[2].out_handle = Vec2{139.18, 337.45};
+  nodes[2].smooth = false;
+  nodes[3].point = {143.0, 352.0};
+  nodes[3].in_handle = Vec2{140.85, 344.8};
+  nodes[3].smooth = false;
+  std::vector<OutlineNode> r = nearest_grid_points(nodes);
+  for (OutlineNode& n : r) {
+    if (n.in_handle) n.in_handle = nearest_grid_point(*n.in_handle);
+    if (n.out_handle) n.out_handle = nearest_grid_point(*n.out_handle);
+  }
+  std::vector<std::optional<Vec2>> steps(nodes.size());
+  HandleStepLimits limits;
+  limits.allowance = 5.0;
+  place_lines_on_grid(nodes, r, steps, false, limits);
+  ASSERT_NE(r[2].point, nearest_grid_point(nodes[2].point));  // the corner moved
+  const Cubic exact{nodes[2].point, *nodes[2].out_handle, *nodes[3].in_handle, nodes[3].point};
+  const Cubic rounded{r[2].point, *r[2].out_handle, *r[3].in_handle, r[3].point};
+  EXPECT_EQ(inner_axis_extrema(exact), 0);
+  EXPECT_EQ(inner_axis_extrema(rounded), 0);
+  EXPECT_GT(rounded.p[1].x, rounded.p[0].x);  // it leaves the corner to the right, as it did
 }
 
 }  // namespace
