@@ -41,22 +41,27 @@ bool monotone(double a, double b, double c) {
 
 }  // namespace
 
-int inner_axis_extrema(const Cubic& c) {
+InnerAxisExtrema inner_axis_extrema_of(const Cubic& c) {
   // Most cubics of an outline run monotone in x and y between nodes at their extrema: no
   // roots to isolate.
   const Vec2 d0 = c.p[1] - c.p[0], d1 = c.p[2] - c.p[1], d2 = c.p[3] - c.p[2];
-  if (monotone(d0.x, d1.x, d2.x) && monotone(d0.y, d1.y, d2.y)) return 0;
+  if (monotone(d0.x, d1.x, d2.x) && monotone(d0.y, d1.y, d2.y)) return {};
   // By arc length, not t: a long handle crowds the first hundredth of t into a few units.
   const Segment whole(c);
   std::optional<double> length;  // only for a cubic with an extremum inside (0, 1)
-  int inner = 0;
+  InnerAxisExtrema out;
   for (const AxisExtremum& e : axis_extrema(c)) {
     if (!length) length = arc_length_estimate(whole);
     const double before = arc_length_estimate(whole, 0.0, e.t);
-    inner += before > 0.01 * *length && *length - before > 0.01 * *length;
+    if (before <= 0.01 * *length || *length - before <= 0.01 * *length) continue;
+    ++out.all;
+    const Vec2 at = c.point_at(e.t);
+    out.off_node += std::min(distance(at, c.p[0]), distance(at, c.p[3])) > 0.5;
   }
-  return inner;
+  return out;
 }
+
+int inner_axis_extrema(const Cubic& c) { return inner_axis_extrema_of(c).all; }
 
 double overreach_length(const Cubic& c) {
   const double reach = 2.0 * distance(c.p[0], c.p[3]) + 2.0;

@@ -16,8 +16,17 @@ namespace gf {
 /// only that it is past.
 double moved_distance(const Cubic& a, const Cubic& b, double within);
 
-/// Horizontal and vertical extrema away from the ends: more than 1 % of the cubic's arc length
-/// from both (nearer, they sit on the node).
+/// A cubic's horizontal and vertical extrema away from its ends: `all` those more than 1 % of
+/// its arc length from both (nearer, they sit on the node); `off_node` those of them also more
+/// than half a unit from both, where the check finds no node for them. Rounding cannot keep
+/// an extremum within half a unit of its node, but need not carry it farther.
+struct InnerAxisExtrema {
+  int all = 0;
+  int off_node = 0;
+};
+InnerAxisExtrema inner_axis_extrema_of(const Cubic& c);
+
+/// inner_axis_extrema_of(c).all.
 int inner_axis_extrema(const Cubic& c);
 
 /// How far (units) the longer handle reaches beyond twice the chord and two units, 0 when

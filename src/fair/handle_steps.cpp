@@ -153,7 +153,7 @@ struct CubicTraits {
   double k_start = 0.0, k_end = 0.0;
   double moved = 0.0;  ///< from its unrounded self, as moved_distance measures it within the allowance
   CurvatureShape shape;
-  int extrema = 0;  ///< horizontal or vertical turns inside
+  InnerAxisExtrema extrema;  ///< horizontal or vertical turns inside
   double overreach = 0.0;  ///< how far a handle reaches past the chord (overreach_length)
   double turning = 0.0;  ///< of a cubic shorter than fold_chord (cubic_turning), else 0
 };
@@ -246,7 +246,7 @@ class CubicJudge {
  private:
   CubicTraits measure(std::size_t i, const Cubic& c) const {
     return {node_curvature(c, SegmentEnd::start), node_curvature(c, SegmentEnd::end),
-            moved_distance(c, unrounded_[i], allowed_[i]), curvature_shape(c, hysteresis_), inner_axis_extrema(c),
+            moved_distance(c, unrounded_[i], allowed_[i]), curvature_shape(c, hysteresis_), inner_axis_extrema_of(c),
             overreach_length(c), distance(c.p[0], c.p[3]) < fold_chord ? cubic_turning(c) : 0.0};
   }
 
@@ -310,7 +310,9 @@ CubicChoices cubic_choices(const std::vector<OutlineNode>& nodes, std::span<cons
         // bend the other way near its end: an inflection the unrounded cubic does not have.
         if (t.shape.sign_changes > ideal.shape.sign_changes) cost += wrong_way;
         // Nor turn horizontal or vertical inside: an extremum without a node.
-        if (t.extrema > ideal.extrema) cost += wrong_way;
+        if (t.extrema.all > ideal.extrema.all) cost += wrong_way;
+        // Nor carry one that sat within half a unit of its node farther off it.
+        if (t.extrema.off_node > ideal.extrema.off_node) cost += wrong_way;
         // Nor fold back on itself past its chord.
         if (t.overreach > ideal.overreach) cost += wrong_way * (1.0 + t.overreach);
         // Nor, short, loop or cusp within it.
@@ -441,7 +443,7 @@ class NodeChange {
         j_((i + 1) % nodes.size()) {
     for (const std::size_t k : {h_, i_}) {
       const CubicTraits &a = judge.unrounded(k), &b = judge.traits(k, outline_cubic(nodes, k));
-      most_.push_back({std::max(a.shape.sign_changes, b.shape.sign_changes), std::max(a.extrema, b.extrema),
+      most_.push_back({std::max(a.shape.sign_changes, b.shape.sign_changes), std::max(a.extrema.all, b.extrema.all),
                        std::max(a.overreach, b.overreach), std::max(a.turning, b.turning)});
     }
     // The cubics beyond the neighbours stay as they are: their curvature there, once.
@@ -487,7 +489,7 @@ class NodeChange {
       const std::size_t k = side == 0 ? h_ : i_;
       const CubicTraits& t = judge_.traits(k, outline_cubic(nodes_, k));
       const Most& most = most_[side];
-      if (t.moved > judge_.allowed(k) || t.shape.sign_changes > most.sign_changes || t.extrema > most.extrema ||
+      if (t.moved > judge_.allowed(k) || t.shape.sign_changes > most.sign_changes || t.extrema.all > most.extrema ||
           t.overreach > most.overreach || t.turning > most.turning + fold_turn)
         return false;
     }

@@ -400,6 +400,26 @@ TEST(GridRounding, ALineOnTheBaselineStaysOnIt) {
   EXPECT_EQ(cross(r[2].point - r[1].point, *r[2].out_handle - r[2].point), 0.0);
 }
 
+// Because We Create's s, unrounded: a brush stroke's foot, its lowest point a smooth node with
+// a 1-unit handle, and from there a cubic to a corner whose rightmost point lies 0.4 units
+// from the node (the check counts it there). A 3-unit handle carried it 1.5 units off, an
+// extremum with no node, and no fault the rounding weighed: the cubic had one inside before.
+TEST(GridRounding, AnExtremumBesideItsNodeStaysBesideIt) {
+  const std::vector<OutlineNode> nodes{
+      node(Vec2{147.0, 69.0}, std::nullopt, Vec2{148.926, 66.655}, false),
+      node(Vec2{155.42, 60.035}, Vec2{154.372, 60.035}, Vec2{156.434, 60.035}, true, Vec2{1.0, 0.0}),
+      node(Vec2{142.0, 84.0}, Vec2{153.228, 66.233}, std::nullopt, false),
+  };
+  for (std::size_t i = 0; i < 2; ++i) ASSERT_EQ(inner_axis_extrema_of(outline_cubic(nodes, i)).off_node, 0);
+  HandleStepLimits limits;
+  limits.flat_curvature = 0.5 / 1000.0;
+  limits.allowance = 5.0;  // a handwriting tolerance, most of it left
+  const std::vector<OutlineNode> r = round_to_grid(nodes, false, limits);
+
+  ASSERT_EQ(r.size(), nodes.size());
+  for (std::size_t i = 0; i < 2; ++i) EXPECT_EQ(inner_axis_extrema_of(outline_cubic(r, i)).off_node, 0) << "cubic " << i;
+}
+
 TEST(OutlineNodes, CubicsUnderTwoUnitsMergeIntoOneNode) {
   // Because We Create's P: a vertical extremum 1.5 units from the next smooth node, between
   // two corners. One node stays, the extremum; it leaves along its own tangent with the
