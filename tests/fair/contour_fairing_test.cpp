@@ -259,6 +259,26 @@ TEST(ContourFairing, LinesMergedPassByPassLeaveNoKink) {
   }
 }
 
+TEST(ContourFairing, LinesMeetingAtAKinkBecomeOne) {
+  // Femke Klaver's B: a sliver of lines only, its long side bent 2.5° a sixth of the way along
+  // and again 17 units before its foot. On the grid the side's primitive step is the side
+  // itself, (−26, −593), so no fillet had whole legs, and both kinks stayed.
+  const std::vector<Vec2> corners{{70, 1297}, {70, 1219}, {44, 626}, {44, 609}, {51, 609}, {101, 1314}, {95, 1314}};
+  Contour sliver;
+  for (std::size_t k = 0; k < corners.size(); ++k)
+    sliver.segments.push_back(Line{{corners[k], corners[(k + 1) % corners.size()]}});
+  sliver.nodes.assign(sliver.segments.size(), NodeFlags{});
+  FairOptions fo;
+  fo.profile = FairProfile::handwriting;
+  fo.rounding = Rounding::integers;
+  const FairSettings settings = resolve_settings(fo, 2048.0);
+  const ContourFairing r = fair_contour(sliver, settings);
+  ASSERT_TRUE(r.faired) << r.reason;
+  EXPECT_LE(brute_force_hausdorff(sliver, r.contour), 1.01 * 0.5 * thickness(sliver));
+  EXPECT_EQ(signed_area(r.contour) > 0.0, signed_area(sliver) > 0.0);
+  for (const Join& j : joins_of(r.contour)) EXPECT_NE(j.kind, JoinKind::kink) << "node " << j.node;
+}
+
 TEST(ContourFairing, AHairlineIsFairedWithinHalfItsThickness) {
   // Because We Create's t: a brush stroke 2 to 4 units wide, faired to half its thickness. The
   // smoothing guide at one span per half feature window could not come that close, and the
