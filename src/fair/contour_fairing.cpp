@@ -16,7 +16,6 @@
 #include "fair/tight_turn.hpp"
 #include "geom/arc_length.hpp"
 #include "geom/curvature.hpp"
-#include "geom/join.hpp"
 #include "geom/polyline_distance.hpp"
 
 namespace gf {
@@ -471,31 +470,13 @@ void fillet_kinks(ContourFairing& out, const Contour& source, const FairSettings
     out.contour = filleted;
     out.deviation = std::max(out.deviation, d);
   };
+  take(merge_line_kinks(out.contour));
   const bool grid = settings.rounding == Rounding::integers;
   const double left = 0.95 * (t - out.deviation);
   if (grid)
     for (const double allowance : {left, 0.9 * t}) take(fillet_legless_kinks_at_moved_vertices(out.contour, left, allowance));
   take(fillet_line_kinks(out.contour, left, grid));
   if (grid) take(fillet_kinks_at_moved_vertices(out.contour, 0.9 * t));
-}
-
-// The joins of a contour of lines that turn by less than the kink limit: two lines meant as
-// one. Merged, they need no fillet, which on the grid a long diagonal's primitive step can
-// leave no whole legs (Femke Klaver's B: a sliver's 593-unit side bent 2.5° at both ends).
-std::vector<std::size_t> line_kinks(const Contour& lines) {
-  std::vector<std::size_t> out;
-  for (const Join& j : joins_of(lines))
-    if (j.kind == JoinKind::kink) out.push_back(j.node);
-  return out;
-}
-
-// The contour a plan of lines only draws.
-Contour lines_of(const ContourPlan& plan) {
-  Contour out;
-  out.closed = plan.closed;
-  for (const auto& piece : plan.pieces) out.segments.push_back(std::get<Line>(piece));
-  out.nodes.assign(out.segments.size() + (plan.closed ? 0 : 1), NodeFlags{});
-  return out;
 }
 
 // The contour faired on `curve` (the source, or the same curve split at its tight `turns`):
@@ -518,16 +499,7 @@ ContourFairing fair_curve(const Contour& source, const Contour& curve, std::span
                                      [](const auto& p) { return std::holds_alternative<SmoothRun>(p); });
   if (!has_curve) {
     out.faired = true;  // lines only: as fair as it gets, but for its kinks
-    const ContourPlan* drawn = &plan;
-    ContourPlan merged;
-    if (const std::vector<std::size_t> kinks = line_kinks(curve); !kinks.empty()) {
-      merged = plan_with(kinks);
-      const Contour lines = lines_of(merged);
-      const double d = contour_distance(lines, source);
-      if (d <= settings.tolerance_units && (!lines.closed || lines.segments.size() >= 3))
-        out.contour = lines, out.deviation = d, drawn = &merged;
-    }
-    for (const auto& piece : drawn->pieces)
+    for (const auto& piece : plan.pieces)
       out.pieces.push_back(line_piece(std::get<Line>(piece).start(), std::get<Line>(piece).end(), false));
     return out;
   }

@@ -308,10 +308,39 @@ Contour fillet_with_whole_legs(const Contour& contour, double allowance_units, b
     }
   }
   if (!contour.closed) out.nodes.push_back(contour.nodes.back());
+  if (out.closed && out.segments.size() < 3) return contour;  // a sliver folded onto itself
   return out;
 }
 
 }  // namespace
+
+Contour merge_line_kinks(const Contour& contour) {
+  const std::size_t n = contour.segments.size();
+  std::vector<bool> merged(n, false);  // node k goes: segments k − 1 and k become one line
+  bool any = false;
+  for (const Join& j : joins_of(contour))
+    if (j.node < n && small_kink(j) && is_line(contour.segments[(j.node + n - 1) % n]) && is_line(contour.segments[j.node]))
+      merged[j.node] = any = true;
+  if (!any) return contour;
+  Contour out;
+  out.closed = contour.closed;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (merged[k] && k > 0) {
+      std::get<Line>(out.segments.back()).p[1] = end_point(contour.segments[k]);
+      continue;
+    }
+    out.segments.push_back(contour.segments[k]);
+    out.nodes.push_back(contour.nodes[k]);
+  }
+  if (merged[0] && out.segments.size() > 1) {  // the seam too: the last line runs on into the first
+    std::get<Line>(out.segments.front()).p[0] = start_point(out.segments.back());
+    out.nodes.front() = out.nodes.back();
+    out.segments.pop_back(), out.nodes.pop_back();
+  }
+  if (!contour.closed) out.nodes.push_back(contour.nodes.back());
+  if (out.closed && out.segments.size() < 3) return contour;  // a sliver folded onto itself
+  return out;
+}
 
 Contour fillet_line_kinks(const Contour& contour, double allowance_units, bool integer_grid) {
   const Contour filleted = fillet_with_whole_legs(contour, allowance_units, integer_grid);

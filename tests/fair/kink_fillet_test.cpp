@@ -120,6 +120,25 @@ TEST(KinkFillet, AKinkWithoutWholeLegsTakesItsNeighbourToAMovedVertex) {
   EXPECT_LE(test::directed_to_polyline(dense(source), dense(out)), most);
 }
 
+TEST(MergeLineKinks, LinesMeetingAtAKinkBecomeOneAcrossTheSeamToo) {
+  // A square whose base bends 1.1° at its middle, where the contour starts: the base is one
+  // line again, and the contour starts where its last line did.
+  const Contour bent = polygon({{50, 0.5}, {100, 0}, {100, 100}, {0, 100}, {0, 0}});
+  const Contour merged = merge_line_kinks(bent);
+  EXPECT_EQ(merged.segments, polygon({{0, 0}, {100, 0}, {100, 100}, {0, 100}}).segments);
+  EXPECT_EQ(merged.nodes.size(), merged.segments.size());
+}
+
+TEST(MergeLineKinks, ASliverFoldedOntoItselfComesBackAsItWas) {
+  // One kink, but merged there the triangle would be one line there and back.
+  const Contour sliver = polygon({{0, 0}, {100, 1}, {200, 0}});
+  EXPECT_EQ(merge_line_kinks(sliver), sliver);
+  // Nor is a line merged into a curve.
+  Contour with_curve = polygon({{0, 0}, {100, 1}, {200, 0}, {100, 100}});
+  with_curve.segments[1] = Cubic{{{100, 1}, {133, 0.7}, {166, 0.3}, {200, 0}}};
+  EXPECT_EQ(merge_line_kinks(with_curve), with_curve);
+}
+
 TEST(KinkFillet, WithoutAKinkTheContourComesBackAsItWas) {
   const Contour square = polygon({{0, 0}, {100, 0}, {100, 100}, {0, 100}});
   EXPECT_EQ(fillet_line_kinks(square, 1.0, true).segments.size(), 4u);
