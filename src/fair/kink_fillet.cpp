@@ -308,7 +308,6 @@ Contour fillet_with_whole_legs(const Contour& contour, double allowance_units, b
     }
   }
   if (!contour.closed) out.nodes.push_back(contour.nodes.back());
-  if (out.closed && out.segments.size() < 3) return contour;  // a sliver folded onto itself
   return out;
 }
 
@@ -318,9 +317,10 @@ Contour merge_line_kinks(const Contour& contour) {
   const std::size_t n = contour.segments.size();
   std::vector<bool> merged(n, false);  // node k goes: segments k − 1 and k become one line
   bool any = false;
-  for (const Join& j : joins_of(contour))
-    if (j.node < n && small_kink(j) && is_line(contour.segments[(j.node + n - 1) % n]) && is_line(contour.segments[j.node]))
-      merged[j.node] = any = true;
+  for (const Join& j : joins_of(contour)) {
+    const bool between_lines = j.node < n && is_line(contour.segments[(j.node + n - 1) % n]) && is_line(contour.segments[j.node]);
+    if (between_lines && small_kink(j)) merged[j.node] = any = true;
+  }
   if (!any) return contour;
   Contour out;
   out.closed = contour.closed;
