@@ -220,23 +220,26 @@ class LinePlacer {
 
   // The curve meeting the line at `end` with its near handle `near` on the line: its far handle
   // (node k's out-handle when the curve arrives, its in-handle when it leaves) at the whole
-  // step nearest the line, or where rounding put it. Its cost: how far that handle moves
-  // (three tenths), or `unseated` when even there the curvature at the join stays visible; and
-  // that and four more where every such handle gives the curve an H/V extremum its exact self
-  // lacks, so that a missing extremum weighs more than a jump (a short curve bent back on itself
-  // by a handle of the line's long step: Because We Build's M, a 2-unit curve from the bowl's
-  // foot to a (14, 1) line; dkg Bold's n, a 9-unit curve between two near-vertical lines).
+  // step nearest the line (a corner's: the grid point of the line nearest it, where the handle
+  // steps seat it; Delphine's l, whose curve so seated turned back to its vertical corner), or
+  // where rounding put it. Its cost: how far that handle moves (three tenths), or `unseated`
+  // when even there the curvature at the join stays visible; and that and four more where every
+  // such handle gives the curve an H/V extremum its exact self lacks, so that a missing
+  // extremum weighs more than a jump (a short curve bent back on itself by a handle of the
+  // line's long step: Because We Build's M, a 2-unit curve from the bowl's foot to a (14, 1)
+  // line; dkg Bold's n, a 9-unit curve between two near-vertical lines).
   double far_handle_cost(std::size_t k, bool out, Vec2 end, Vec2 near, Vec2 d, double unseated) const {
     const std::optional<Vec2> wanted = out ? exact_[k].out_handle : exact_[k].in_handle;
     const std::optional<Vec2> placed = out ? rounded_[k].out_handle : rounded_[k].in_handle;
-    if (!steps_[k] || !wanted || !placed) return 0.0;
+    if (!wanted || !placed || (!steps_[k] && exact_[k].smooth)) return 0.0;
     const auto curve = [&](Vec2 h) {
       return out ? Cubic{rounded_[k].point, h, near, end} : Cubic{end, near, h, rounded_[k].point};
     };
     const int extrema = exact_extrema_[out ? k : previous(k)];
     const double fold = unseated + fold_unit;
     double best = unseated + fold;
-    std::vector<Vec2> candidates = handles_near_line(rounded_[k].point, *steps_[k], out ? 1.0 : -1.0, end, d);
+    std::vector<Vec2> candidates = steps_[k] ? handles_near_line(rounded_[k].point, *steps_[k], out ? 1.0 : -1.0, end, d)
+                                             : std::vector<Vec2>{end + d * std::round(dot(*wanted - end, d) / dot(d, d))};
     candidates.push_back(*placed);
     for (const Vec2 h : candidates) {
       const Cubic c = curve(h);

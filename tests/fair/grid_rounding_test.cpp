@@ -420,6 +420,27 @@ TEST(GridRounding, AnExtremumBesideItsNodeStaysBesideIt) {
   for (std::size_t i = 0; i < 2; ++i) EXPECT_EQ(inner_axis_extrema_of(outline_cubic(r, i)).off_node, 0) << "cubic " << i;
 }
 
+// Delphine's l, unrounded: a stem's line 2.3° off the vertical, the curve leaving it
+// tangentially to a vertical corner 179 units up, both its handles on the line (κ = 0 at the
+// join). The line took the short step (−1, 16), its end 2.6 units left; the corner's handle,
+// seated on the line for κ = 0 there, left the curve turning back 3 units to the right: an
+// x-extremum inside, with no node. The corner's handle on the line counts as a far handle does.
+TEST(GridRounding, ACurveFromALineToACornerGainsNoExtremum) {
+  const std::vector<OutlineNode> nodes{
+      node(Vec2{23.0, 106.0}, std::nullopt, std::nullopt, false),
+      node(Vec2{15.43, 295.95}, std::nullopt, Vec2{15.0, 306.73}),
+      node(Vec2{15.0, 475.0}, Vec2{15.0, 306.73}, std::nullopt, false),
+  };
+  ASSERT_EQ(inner_axis_extrema_of(outline_cubic(nodes, 1)).all, 0);
+  HandleStepLimits limits;
+  limits.flat_curvature = 0.5 / 1000.0;
+  limits.allowance = 5.0;  // a handwriting tolerance, most of it left
+  const std::vector<OutlineNode> r = round_to_grid(nodes, false, limits);
+
+  ASSERT_EQ(r.size(), nodes.size());
+  EXPECT_EQ(inner_axis_extrema_of(outline_cubic(r, 1)).off_node, 0);
+}
+
 TEST(OutlineNodes, CubicsUnderTwoUnitsMergeIntoOneNode) {
   // Because We Create's P: a vertical extremum 1.5 units from the next smooth node, between
   // two corners. One node stays, the extremum; it leaves along its own tangent with the
