@@ -238,8 +238,12 @@ class LinePlacer {
     const int extrema = exact_extrema_[out ? k : previous(k)];
     const double fold = unseated + fold_unit;
     double best = unseated + fold;
-    std::vector<Vec2> candidates = steps_[k] ? handles_near_line(rounded_[k].point, *steps_[k], out ? 1.0 : -1.0, end, d)
-                                             : std::vector<Vec2>{end + d * std::round(dot(*wanted - end, d) / dot(d, d))};
+    std::vector<Vec2> candidates;
+    if (steps_[k]) {
+      candidates = handles_near_line(rounded_[k].point, *steps_[k], out ? 1.0 : -1.0, end, d);
+    } else if (const double m = std::round(dot(*wanted - end, d) / dot(d, d)); m != 0.0) {
+      candidates.push_back(end + d * m);  // not the join itself: no curve leaves from there
+    }
     candidates.push_back(*placed);
     for (const Vec2 h : candidates) {
       const Cubic c = curve(h);
