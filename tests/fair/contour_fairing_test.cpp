@@ -19,6 +19,7 @@
 #include "io/source.hpp"
 #include "point_set_distance.hpp"
 #include "test_fonts.hpp"
+#include "test_shapes.hpp"
 
 namespace gf {
 namespace {
@@ -207,11 +208,8 @@ TEST(ContourFairing, AKinkWhoseFilletTakesAWholeLineIsFilleted) {
   // Liberation Sans's V, lines only: its inner sides bend by 2.8° and 2.7° where they meet the
   // 263-unit strokes to the notch. Each fillet may take that whole stroke, and then the
   // contour had as many segments as before: taken for unchanged, it kept both kinks.
-  const std::vector<Vec2> corners{{782, 0},    {584, 0},    {9, 1409},    {210, 1409}, {600, 417},
-                                  {684, 168}, {768, 417}, {1156, 1409}, {1357, 1409}};
-  Contour v;
-  for (std::size_t k = 0; k < corners.size(); ++k) v.segments.push_back(Line{{corners[k], corners[(k + 1) % corners.size()]}});
-  v.nodes.assign(v.segments.size(), NodeFlags{});
+  const Contour v = test::polygon({{782, 0}, {584, 0}, {9, 1409}, {210, 1409}, {600, 417}, {684, 168}, {768, 417},
+                                   {1156, 1409}, {1357, 1409}});
   const FairSettings settings = resolve_settings(FairOptions{}, 2048.0);
   const ContourFairing r = fair_contour(v, settings);
   ASSERT_TRUE(r.faired) << r.reason;
@@ -263,11 +261,7 @@ TEST(ContourFairing, LinesMeetingAtAKinkBecomeOne) {
   // Femke Klaver's B: a sliver of lines only, its long side bent 2.5° a sixth of the way along
   // and again 17 units before its foot. On the grid the side's primitive step is the side
   // itself, (−26, −593), so no fillet had whole legs, and both kinks stayed.
-  const std::vector<Vec2> corners{{70, 1297}, {70, 1219}, {44, 626}, {44, 609}, {51, 609}, {101, 1314}, {95, 1314}};
-  Contour sliver;
-  for (std::size_t k = 0; k < corners.size(); ++k)
-    sliver.segments.push_back(Line{{corners[k], corners[(k + 1) % corners.size()]}});
-  sliver.nodes.assign(sliver.segments.size(), NodeFlags{});
+  const Contour sliver = test::polygon({{70, 1297}, {70, 1219}, {44, 626}, {44, 609}, {51, 609}, {101, 1314}, {95, 1314}});
   FairOptions fo;
   fo.profile = FairProfile::handwriting;
   fo.rounding = Rounding::integers;

@@ -11,17 +11,14 @@
 #include "fair/contour_plan.hpp"
 #include "fair/cubic_change.hpp"
 #include "geom/curvature.hpp"
+#include "test_shapes.hpp"
 
 namespace gf {
 namespace {
 
 bool on_grid(Vec2 p) { return p.x == std::round(p.x) && p.y == std::round(p.y); }
 
-// A node of an unrounded outline: its handles where it has them, a corner unless smooth.
-OutlineNode node(Vec2 point, std::optional<Vec2> in, std::optional<Vec2> out, bool smooth = true,
-                 std::optional<Vec2> grid_step = std::nullopt) {
-  return OutlineNode{point, in, out, smooth, grid_step};
-}
+using test::node;
 
 TEST(GridRounding, PrimitiveStepsDivideByTheCommonDivisor) {
   // DejaVu's s spine: (63, −14) = 7·(9, −2).

@@ -10,18 +10,12 @@
 
 #include "geom/curvature.hpp"
 #include "point_set_distance.hpp"
+#include "test_shapes.hpp"
 
 namespace gf {
 namespace {
 
-Contour polygon(const std::vector<Vec2>& points) {
-  Contour c;
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    c.segments.push_back(Line{points[i], points[(i + 1) % points.size()]});
-    c.nodes.push_back({});
-  }
-  return c;
-}
+using test::polygon;
 
 double degrees(Vec2 a, Vec2 b) { return std::abs(turning_angle(a, b)) * 180.0 / std::numbers::pi; }
 

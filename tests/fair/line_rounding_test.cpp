@@ -8,9 +8,12 @@
 #include <cmath>
 
 #include "fair/cubic_change.hpp"
+#include "test_shapes.hpp"
 
 namespace gf {
 namespace {
+
+using test::node;
 
 std::vector<OutlineNode> nearest_grid_points(std::vector<OutlineNode> nodes) {
   for (OutlineNode& n : nodes) n.point = nearest_grid_point(n.point);
@@ -21,14 +24,11 @@ TEST(LineRounding, ACurveLeavingALongDiagonalLineKeepsItsHandleLength) {
   // Inter's y: a corner, a 1,877-unit diagonal line, a curve leaving it tangentially with a
   // 49-unit handle. The nearest grid points and their neighbours give the line no primitive
   // step shorter than (−65, −176), 187 units: the handle would grow almost fourfold.
-  std::vector<OutlineNode> nodes(3);
-  nodes[0].point = {1472.0, 1536.0};
-  nodes[0].smooth = false;
-  nodes[1].point = {820.0, -224.0};
-  nodes[1].out_handle = Vec2{802.83, -270.34};
-  nodes[2].point = {683.87, -450.83};
-  nodes[2].in_handle = Vec2{766.63, -368.07};
-  nodes[2].smooth = false;
+  const std::vector<OutlineNode> nodes{
+      node(Vec2{1472.0, 1536.0}, std::nullopt, std::nullopt, false),
+      node(Vec2{820.0, -224.0}, std::nullopt, Vec2{802.83, -270.34}),
+      node(Vec2{683.87, -450.83}, Vec2{766.63, -368.07}, std::nullopt, false),
+  };
   std::vector<OutlineNode> r = nearest_grid_points(nodes);
   std::vector<std::optional<Vec2>> steps(nodes.size());
   place_lines_on_grid(nodes, r, steps, true, HandleStepLimits{});
@@ -52,14 +52,11 @@ TEST(LineRounding, ACurveLeavingALongDiagonalLineKeepsItsHandleLength) {
 TEST(LineRounding, AShortStepNeedsNoSlide) {
   // A line close to (2, 5) from a corner to a curve: the nearest grid points already give the
   // short step, and the curve's end stays at its nearest grid point or a neighbour.
-  std::vector<OutlineNode> nodes(3);
-  nodes[0].point = {0.3, 0.2};
-  nodes[0].smooth = false;
-  nodes[1].point = {100.2, 250.1};
-  nodes[1].out_handle = Vec2{108.2, 270.1};
-  nodes[2].point = {150.0, 300.0};
-  nodes[2].in_handle = Vec2{130.0, 300.0};
-  nodes[2].smooth = false;
+  const std::vector<OutlineNode> nodes{
+      node(Vec2{0.3, 0.2}, std::nullopt, std::nullopt, false),
+      node(Vec2{100.2, 250.1}, std::nullopt, Vec2{108.2, 270.1}),
+      node(Vec2{150.0, 300.0}, Vec2{130.0, 300.0}, std::nullopt, false),
+  };
   std::vector<OutlineNode> r = nearest_grid_points(nodes);
   std::vector<std::optional<Vec2>> steps(nodes.size());
   place_lines_on_grid(nodes, r, steps, true, HandleStepLimits{});
@@ -74,18 +71,12 @@ TEST(LineRounding, ACornerTakesItsCurvesHandleAlong) {
   // the corner where the bowl's curve leaves it, 8° to the right. The line stands upright and
   // its corner moves over; with its handle left behind, the curve left the corner straight up
   // or leaning back (in the font, 3 units over: an x-extremum 7 units up, with no node).
-  std::vector<OutlineNode> nodes(4);
-  nodes[0].point = {140.82, 74.55};
-  nodes[0].out_handle = Vec2{140.82, 86.13};
-  nodes[0].smooth = false;
-  nodes[1].point = {140.17, 142.54};
-  nodes[1].in_handle = Vec2{140.66, 100.55};
-  nodes[2].point = {138.0, 330.0};
-  nodes[2].out_handle = Vec2{139.18, 337.45};
-  nodes[2].smooth = false;
-  nodes[3].point = {143.0, 352.0};
-  nodes[3].in_handle = Vec2{140.85, 344.8};
-  nodes[3].smooth = false;
+  const std::vector<OutlineNode> nodes{
+      node(Vec2{140.82, 74.55}, std::nullopt, Vec2{140.82, 86.13}, false),
+      node(Vec2{140.17, 142.54}, Vec2{140.66, 100.55}, std::nullopt),
+      node(Vec2{138.0, 330.0}, std::nullopt, Vec2{139.18, 337.45}, false),
+      node(Vec2{143.0, 352.0}, Vec2{140.85, 344.8}, std::nullopt, false),
+  };
   std::vector<OutlineNode> r = nearest_grid_points(nodes);
   for (OutlineNode& n : r) {
     if (n.in_handle) n.in_handle = nearest_grid_point(*n.in_handle);
