@@ -617,7 +617,7 @@ std::optional<Vec2> handle_on_line(const OutlineNode& node, std::optional<Vec2> 
   std::optional<Vec2> h;
   if (!node.smooth) {
     const Vec2 now = sign > 0.0 ? *node.out_handle : *node.in_handle;
-    h = p + d * std::round(dot(now - p, d) / dot(d, d));
+    h = p + d * whole_steps(p, now, d, 1.0);
   } else if (step) {
     const std::optional<double> m = steps_to_line(node.point, *step, sign, p, d);
     if (m && *m >= 1.0 && *m == std::round(*m)) h = node.point + *step * (sign * *m);

@@ -241,7 +241,7 @@ class LinePlacer {
     std::vector<Vec2> candidates;
     if (steps_[k]) {
       candidates = handles_near_line(rounded_[k].point, *steps_[k], out ? 1.0 : -1.0, end, d);
-    } else if (const double m = std::round(dot(*wanted - end, d) / dot(d, d)); m != 0.0) {
+    } else if (const double m = whole_steps(end, *wanted, d, 1.0); m != 0.0) {
       candidates.push_back(end + d * m);  // not the join itself: no curve leaves from there
     }
     candidates.push_back(*placed);
