@@ -4,6 +4,7 @@
 #include <cmath>
 #include <complex>
 #include <cstdint>
+#include <cstdio>
 #include <limits>
 #include <numbers>
 
@@ -92,7 +93,8 @@ double drawable_limit(double alpha, double theta_d) {
   return std::arg(limit);
 }
 
-SegmentFit fit_three_point(Vec2 p0, Vec2 p1, Vec2 p2, double alpha, std::optional<double> near_log_end_ratio) {
+SegmentFit fit_three_point(Vec2 p0, Vec2 p1, Vec2 p2, double alpha, std::optional<double> near_log_end_ratio,
+                           double min_end_curvature_ratio) {
   SegmentFit fit;
   if (!std::isfinite(alpha)) {
     fit.reason = "α is not a finite number";
@@ -146,10 +148,21 @@ SegmentFit fit_three_point(Vec2 p0, Vec2 p1, Vec2 p2, double alpha, std::optiona
         lo = up, f_lo = f_up, step *= 8.0;
       }
     }
+    // The end curvature ratio is e^x: below x_wanted no fit is wanted. Where the bracket would
+    // grow past it, one evaluation there says whether the root lies beyond.
+    const double x_wanted = min_end_curvature_ratio > 0.0 ? std::log(min_end_curvature_ratio) : x_min;
+    const auto too_uneven = [&] {
+      char bound[32];
+      std::snprintf(bound, sizeof bound, "%g", 1.0 / min_end_curvature_ratio);
+      fit.reason = std::string("its end curvatures would differ by more than a factor of ") + bound;
+      return fit;
+    };
     while (f_lo > 0.0) {
       hi = lo, f_hi = f_lo;
       if (near) step *= 8.0;
-      lo = std::max(near ? lo - step : 2.0 * lo, x_min);
+      const double next = std::max(near ? lo - step : 2.0 * lo, x_min);
+      if (next < x_wanted && hi > x_wanted && excess(x_wanted) > 0.0) return too_uneven();
+      lo = next;
       if (hi == x_min) {
         fit.reason = "too close to the edge of α's drawable region: the end curvature ratio would be below 1e-300";
         return fit;
@@ -166,6 +179,7 @@ SegmentFit fit_three_point(Vec2 p0, Vec2 p1, Vec2 p2, double alpha, std::optiona
     const auto [a, b] = boost::math::tools::toms748_solve(excess, lo, hi, f_lo, f_hi,
                                                           boost::math::tools::eps_tolerance<double>(40), iterations);
     const double x = 0.5 * (a + b);
+    if (x < x_wanted) return too_uneven();
     const NormalisedLac curve{alpha, lambda_of(alpha, td, x)};
     fit.segment = place(curve, td, x, *t, reversed, x == last_x ? last_end : standard_end(curve, td, x));
     return fit;

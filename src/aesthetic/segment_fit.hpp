@@ -22,9 +22,11 @@ struct SegmentFit {
 /// region (§2.2), or is so close to its edge that the end curvature ratio falls below 1e-300.
 /// `near_log_end_ratio`: that of a fit to nearly the same points (LogAestheticSegment::
 /// log_end_ratio), where the search for this one starts; the answer does not depend on it
-/// beyond the solve's accuracy.
+/// beyond the solve's accuracy. No solution either where the smaller end curvature would be
+/// below `min_end_curvature_ratio` times the larger: the search stops as soon as it knows.
 SegmentFit fit_three_point(Vec2 p0, Vec2 p1, Vec2 p2, double alpha,
-                           std::optional<double> near_log_end_ratio = std::nullopt);
+                           std::optional<double> near_log_end_ratio = std::nullopt,
+                           double min_end_curvature_ratio = 0.0);
 
 /// The LAC segment with κ = 0 at P0 (an inflection) through P2 with the same tangents; α < 0
 /// is solved so that all match. Needs |P0P1| > |P1P2| (the angle at P0 below half the turning).

@@ -49,9 +49,12 @@ std::optional<AroundJunction> segments_around(const LacChain& chain, std::size_t
   const auto near_ratio = [&](std::size_t k) {
     return near.empty() ? std::nullopt : std::optional<double>(near[k].log_end_ratio());
   };
+  // The cheap test of both first; the second fit only when the first exists.
+  if (!tangents_meet_in_front(chain, before) || !tangents_meet_in_front(chain, after)) return std::nullopt;
   SegmentFit a = build_chain_segment(chain, before, near_ratio(before));
+  if (!a.ok()) return std::nullopt;
   SegmentFit b = build_chain_segment(chain, after, near_ratio(after));
-  if (!a.ok() || !b.ok()) return std::nullopt;
+  if (!b.ok()) return std::nullopt;
   return AroundJunction{before, after, std::move(*a.segment), std::move(*b.segment)};
 }
 
@@ -134,30 +137,31 @@ SegmentFit build_chain_segment(const LacChain& chain, std::size_t i, std::option
     if (fit.ok()) fit.segment = fit.segment->reversed_direction();
     return fit;
   }
-  SegmentFit fit = fit_three_point(q0, *p1, q1, chain.alphas[i], near_log_end_ratio);
   // Near the edge of the drawable region one end's curvature runs off towards 0 or ∞: a
   // segment no glyph wants, and one that is slow and ill-conditioned to evaluate.
-  if (fit.ok()) {
-    const double a = std::abs(fit.segment->start().curvature), b = std::abs(fit.segment->end().curvature);
-    if (std::min(a, b) < min_end_curvature_ratio * std::max(a, b))
-      return {std::nullopt, "its end curvatures differ by more than a factor of 100"};
-  }
-  return fit;
+  return fit_three_point(q0, *p1, q1, chain.alphas[i], near_log_end_ratio, min_end_curvature_ratio);
 }
 
-ChainSegments build_chain(const LacChain& chain) {
+ChainSegments build_chain(const LacChain& chain, std::size_t first_to_fit) {
   ChainSegments out;
   const std::size_t count = chain.segment_count();
-  out.segments.reserve(count);
-  for (std::size_t i = 0; i < count; ++i) {
+  const auto fail = [&](std::size_t i, const std::string& reason) {
+    out.segments.clear();
+    out.reason = "segment " + std::to_string(i) + ": " + reason;
+    out.failed_segment = i;
+    return out;
+  };
+  for (std::size_t i = 0; i < count; ++i)
+    if (!tangents_meet_in_front(chain, i)) return fail(i, "its tangents do not meet in front of both ends");
+  std::vector<std::optional<LogAestheticSegment>> fitted(count);
+  for (std::size_t k = 0; k < count; ++k) {
+    const std::size_t i = (first_to_fit + k) % count;
     SegmentFit fit = build_chain_segment(chain, i);
-    if (!fit.ok()) {
-      out.segments.clear();
-      out.reason = "segment " + std::to_string(i) + ": " + fit.reason;
-      return out;
-    }
-    out.segments.push_back(std::move(*fit.segment));
+    if (!fit.ok()) return fail(i, fit.reason);
+    fitted[i] = std::move(fit.segment);
   }
+  out.segments.reserve(count);
+  for (std::optional<LogAestheticSegment>& s : fitted) out.segments.push_back(std::move(*s));
   return out;
 }
 
@@ -210,11 +214,15 @@ G2Result make_g2(LacChain chain, G2Tolerance tolerance_spec, int max_iterations)
     if (!result.reason.empty()) break;
     const Eigen::VectorXd step = jacobian.fullPivLu().solve(-Eigen::Map<const Eigen::VectorXd>(d.data(), m));
     bool improved = false;
+    std::size_t failed = 0;
     for (double lambda = 1.0; lambda > 1e-6; lambda *= 0.5) {
       LacChain trial = chain;
       for (int j = 0; j < m; ++j) trial.tangent_angles[first + static_cast<std::size_t>(j)] += lambda * step(j);
-      ChainSegments attempt = build_chain(trial);
-      if (!attempt.ok()) continue;
+      ChainSegments attempt = build_chain(trial, failed);
+      if (!attempt.ok()) {
+        failed = attempt.failed_segment;
+        continue;
+      }
       const std::vector<double> dt = curvature_mismatch(trial, attempt.segments);
       if (sum_squares(dt) < sum_squares(d)) {
         chain = std::move(trial);

@@ -35,6 +35,7 @@ struct LacChain {
 struct ChainSegments {
   std::vector<LogAestheticSegment> segments;  ///< empty when some segment has no solution
   std::string reason;
+  std::size_t failed_segment = 0;  ///< the segment found without a solution, when not ok()
   bool ok() const { return !segments.empty(); }
 };
 
@@ -46,7 +47,10 @@ bool tangents_meet_in_front(const LacChain& chain, std::size_t i);
 SegmentFit build_chain_segment(const LacChain& chain, std::size_t i,
                                std::optional<double> near_log_end_ratio = std::nullopt);
 
-ChainSegments build_chain(const LacChain& chain);
+/// Every segment, or none when one has no solution. Whether all tangent triangles exist is
+/// checked before any fit, and the fits start at `first_to_fit` (cyclically): a line search
+/// whose step failed at some segment tries that segment first with the next, shorter step.
+ChainSegments build_chain(const LacChain& chain, std::size_t first_to_fit = 0);
 
 /// D_j at the free junctions, in the order of LacChain::first_free_junction().
 std::vector<double> curvature_mismatch(const LacChain& chain, const std::vector<LogAestheticSegment>& segments);

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -61,6 +62,26 @@ TEST(ThreePoint, ANearbyFitOnlyStartsTheSearch) {
       EXPECT_NEAR(cross(fit.segment->end().tangent, Vec2{1, 0.8} / std::hypot(1.0, 0.8)), 0.0, 1e-14) << r.alpha;
     }
   }
+}
+
+// A bound on the end curvature ratio refuses exactly the fits whose ratio falls below it, and
+// changes nothing of the others (the G2 chains ask for 1/100; a steep triangle's ratio is
+// e^{−2.6} for α = −2, so the search for it passes the bound on its way down).
+TEST(ThreePoint, ABoundOnTheEndCurvatureRatioRefusesOnlyTheFitsBelowIt) {
+  for (const Reference& r : triangle_table)
+    for (const Vec2 p1 : {P1, Vec2{0.9, 0.05}, Vec2{1.2, -0.05}}) {
+      const SegmentFit free = fit_three_point(P0, p1, P2, r.alpha);
+      ASSERT_TRUE(free.ok()) << r.alpha;
+      const double k0 = std::abs(free.segment->start().curvature), k2 = std::abs(free.segment->end().curvature);
+      const double ratio = std::min(k0, k2) / std::max(k0, k2);
+      const SegmentFit within = fit_three_point(P0, p1, P2, r.alpha, std::nullopt, 0.99 * ratio);
+      ASSERT_TRUE(within.ok()) << r.alpha << ": " << within.reason;
+      EXPECT_EQ(within.segment->log_end_ratio(), free.segment->log_end_ratio()) << r.alpha;
+      EXPECT_EQ(within.segment->start().curvature, free.segment->start().curvature) << r.alpha;
+      const SegmentFit beyond = fit_three_point(P0, p1, P2, r.alpha, std::nullopt, 1.01 * ratio);
+      EXPECT_FALSE(beyond.ok()) << r.alpha;
+      EXPECT_NE(beyond.reason.find("end curvatures would differ"), std::string::npos) << beyond.reason;
+    }
 }
 
 TEST(ThreePoint, EndPointsAndTangentsAreMetToMachinePrecision) {

@@ -29,6 +29,30 @@ TEST(G2Chain, InitialMismatchMatchesTheReference) {
   for (int j = 0; j < 4; ++j) EXPECT_NEAR(d[j], want[j], 6e-5);
 }
 
+// The fits may start anywhere along the chain (a line search starts where its last step
+// failed): the same segments, and a chain with no solution names the segment without one.
+TEST(G2Chain, BuiltFromAnySegmentTheChainIsTheSame) {
+  const LacChain chain = ellipse_chain({2, 1, 0, -0.5, 1.5});
+  const ChainSegments from_start = build_chain(chain);
+  ASSERT_TRUE(from_start.ok()) << from_start.reason;
+  for (std::size_t first = 0; first < chain.segment_count(); ++first) {
+    const ChainSegments s = build_chain(chain, first);
+    ASSERT_TRUE(s.ok()) << s.reason;
+    for (std::size_t i = 0; i < s.segments.size(); ++i) {
+      EXPECT_EQ(s.segments[i].start().curvature, from_start.segments[i].start().curvature) << first << " " << i;
+      EXPECT_EQ(s.segments[i].end().curvature, from_start.segments[i].end().curvature) << first << " " << i;
+    }
+  }
+  LacChain broken = chain;
+  broken.tangent_angles[3] += 2.0;  // segments 2 and 3 lose their control triangles
+  for (std::size_t first = 0; first < chain.segment_count(); ++first) {
+    const ChainSegments s = build_chain(broken, first);
+    EXPECT_FALSE(s.ok());
+    EXPECT_TRUE(s.failed_segment == 2 || s.failed_segment == 3) << s.failed_segment;
+    EXPECT_FALSE(tangents_meet_in_front(broken, s.failed_segment));
+  }
+}
+
 class G2Solve : public ::testing::TestWithParam<std::vector<double>> {};
 
 TEST_P(G2Solve, NewtonReachesG2InAFewIterations) {
