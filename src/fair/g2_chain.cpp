@@ -58,15 +58,17 @@ std::optional<AroundJunction> segments_around(const LacChain& chain, std::size_t
   return AroundJunction{before, after, std::move(*a.segment), std::move(*b.segment)};
 }
 
-// D_j as a function of φ_j alone; nullopt where a neighbouring segment does not exist.
-std::optional<double> junction_mismatch(LacChain chain, std::size_t j, double phi) {
+// D_j as a function of φ_j alone (set in `chain`, a scratch copy); nullopt where a
+// neighbouring segment does not exist.
+std::optional<double> junction_mismatch(LacChain& chain, std::size_t j, double phi) {
   chain.tangent_angles[j] = phi;
   const std::optional<AroundJunction> s = segments_around(chain, j);
   if (!s) return std::nullopt;
   return s->into.end().curvature - s->out_of.start().curvature;
 }
 
-std::optional<double> solve_junction(const LacChain& chain, std::size_t j) {
+std::optional<double> solve_junction(const LacChain& given, std::size_t j) {
+  LacChain chain = given;
   const double phi0 = chain.tangent_angles[j];
   const std::optional<double> d0 = junction_mismatch(chain, j, phi0);
   if (!d0) return std::nullopt;
@@ -188,27 +190,31 @@ G2Result make_g2(LacChain chain, G2Tolerance tolerance_spec, int max_iterations)
   const double tolerance = std::max(tolerance_spec.absolute, tolerance_spec.relative * result.curvature_scale);
   std::vector<double> d = curvature_mismatch(chain, built.segments);
   const int m = static_cast<int>(d.size());
-  const std::size_t first = chain.first_free_junction();
+  const std::size_t first = chain.first_free_junction(), n = chain.segment_count();
   constexpr double h = 1e-7;
   for (result.iterations = 0; result.iterations < max_iterations && max_abs(d) > tolerance; ++result.iterations) {
     Eigen::MatrixXd jacobian = Eigen::MatrixXd::Zero(m, m);
+    LacChain moved = chain;
     for (int c = 0; c < m; ++c) {
       const std::size_t j = first + static_cast<std::size_t>(c);
-      LacChain moved = chain;
-      moved.tangent_angles[j] += h;
-      std::optional<AroundJunction> around = segments_around(moved, j, built.segments);
+      moved.tangent_angles[j] = chain.tangent_angles[j] + h;
+      const std::optional<AroundJunction> around = segments_around(moved, j, built.segments);
+      moved.tangent_angles[j] = chain.tangent_angles[j];
       if (!around) {
         result.reason = "junction " + std::to_string(j) + " sits at the edge of its feasible range";
         break;
       }
-      std::vector<LogAestheticSegment> probe = built.segments;
-      probe[around->before] = std::move(around->into);
-      probe[around->after] = std::move(around->out_of);
-      const std::vector<double> dp = curvature_mismatch(moved, probe);
-      // D_j depends on φ_{j−1}, φ_j, φ_{j+1} only (cyclically for a closed chain).
+      // φ_j moves segments j−1 and j only, so D_{j−1}, D_j and D_{j+1} only (cyclically for a
+      // closed chain), each as curvature_mismatch gives it.
+      const auto probe = [&](std::size_t k) -> const LogAestheticSegment& {
+        return k == around->after ? around->out_of : k == around->before ? around->into : built.segments[k];
+      };
       for (int r = 0; r < m; ++r) {
         const int gap = std::abs(r - c);
-        if (gap <= 1 || (chain.closed && gap == m - 1)) jacobian(r, c) = (dp[r] - d[r]) / h;
+        if (!(gap <= 1 || (chain.closed && gap == m - 1))) continue;
+        const std::size_t at = first + static_cast<std::size_t>(r);
+        const double dp = probe((at + n - 1) % n).end().curvature - probe(at % n).start().curvature;
+        jacobian(r, c) = (dp - d[r]) / h;
       }
     }
     if (!result.reason.empty()) break;
