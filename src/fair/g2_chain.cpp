@@ -25,6 +25,11 @@ std::optional<Vec2> tangent_intersection(Vec2 q0, Vec2 d0, Vec2 q1, Vec2 d1) {
 
 constexpr double min_end_curvature_ratio = 1e-2;
 
+// D_j where segment `into` meets segment `out_of`.
+double curvature_jump(const LogAestheticSegment& into, const LogAestheticSegment& out_of) {
+  return into.end().curvature - out_of.start().curvature;
+}
+
 double sum_squares(const std::vector<double>& v) {
   double m = 0.0;
   for (const double x : v) m += x * x;
@@ -64,7 +69,7 @@ std::optional<double> junction_mismatch(LacChain& chain, std::size_t j, double p
   chain.tangent_angles[j] = phi;
   const std::optional<AroundJunction> s = segments_around(chain, j);
   if (!s) return std::nullopt;
-  return s->into.end().curvature - s->out_of.start().curvature;
+  return curvature_jump(s->into, s->out_of);
 }
 
 std::optional<double> solve_junction(const LacChain& given, std::size_t j) {
@@ -145,13 +150,9 @@ SegmentFit build_chain_segment(const LacChain& chain, std::size_t i, std::option
 }
 
 ChainSegments build_chain(const LacChain& chain, std::size_t first_to_fit) {
-  ChainSegments out;
   const std::size_t count = chain.segment_count();
-  const auto fail = [&](std::size_t i, const std::string& reason) {
-    out.segments.clear();
-    out.reason = "segment " + std::to_string(i) + ": " + reason;
-    out.failed_segment = i;
-    return out;
+  const auto fail = [](std::size_t i, const std::string& reason) {
+    return ChainSegments{{}, "segment " + std::to_string(i) + ": " + reason, i};
   };
   for (std::size_t i = 0; i < count; ++i)
     if (!tangents_meet_in_front(chain, i)) return fail(i, "its tangents do not meet in front of both ends");
@@ -162,6 +163,7 @@ ChainSegments build_chain(const LacChain& chain, std::size_t first_to_fit) {
     if (!fit.ok()) return fail(i, fit.reason);
     fitted[i] = std::move(fit.segment);
   }
+  ChainSegments out;
   out.segments.reserve(count);
   for (std::optional<LogAestheticSegment>& s : fitted) out.segments.push_back(std::move(*s));
   return out;
@@ -172,7 +174,7 @@ std::vector<double> curvature_mismatch(const LacChain& chain, const std::vector<
   const std::size_t n = segments.size();
   for (std::size_t k = 0; k < chain.free_junction_count(); ++k) {
     const std::size_t j = chain.first_free_junction() + k;  // between segment j−1 and j
-    d.push_back(segments[(j + n - 1) % n].end().curvature - segments[j % n].start().curvature);
+    d.push_back(curvature_jump(segments[(j + n - 1) % n], segments[j % n]));
   }
   return d;
 }
@@ -205,7 +207,7 @@ G2Result make_g2(LacChain chain, G2Tolerance tolerance_spec, int max_iterations)
         break;
       }
       // φ_j moves segments j−1 and j only, so D_{j−1}, D_j and D_{j+1} only (cyclically for a
-      // closed chain), each as curvature_mismatch gives it.
+      // closed chain).
       const auto probe = [&](std::size_t k) -> const LogAestheticSegment& {
         return k == around->after ? around->out_of : k == around->before ? around->into : built.segments[k];
       };
@@ -213,8 +215,7 @@ G2Result make_g2(LacChain chain, G2Tolerance tolerance_spec, int max_iterations)
         const int gap = std::abs(r - c);
         if (!(gap <= 1 || (chain.closed && gap == m - 1))) continue;
         const std::size_t at = first + static_cast<std::size_t>(r);
-        const double dp = probe((at + n - 1) % n).end().curvature - probe(at % n).start().curvature;
-        jacobian(r, c) = (dp - d[r]) / h;
+        jacobian(r, c) = (curvature_jump(probe((at + n - 1) % n), probe(at % n)) - d[r]) / h;
       }
     }
     if (!result.reason.empty()) break;
