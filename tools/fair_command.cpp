@@ -85,6 +85,7 @@ int FairCommand::run() const {
   std::size_t glyphs_faired = 0, contours_kept = 0, runs_as_drawn = 0, g1_nodes = 0, guide_stretches = 0, g3_runs = 0,
               g2_runs = 0, g2_line_joins = 0;
   double deviation = 0.0, mismatch = 0.0;
+  G3CubicReport g3_cubics;
   FairedContours faired_contours;  // composites repeat their components' contours
   stream_glyphs<GlyphFairing>(
       source, chunk_size, progress, name, [&](const Glyph& g) { return fair_glyph(g, settings, faired_contours); },
@@ -102,6 +103,7 @@ int FairCommand::run() const {
         g3_runs += static_cast<std::size_t>(r.g3_runs);
         g2_line_joins += static_cast<std::size_t>(r.g2_line_joins);
         g2_runs += r.g3_shortfalls.size();
+        g3_cubics += r.g3_cubics;
         if (segments) segments->add(r);
         contours_kept += r.kept.size();
         runs_as_drawn += r.runs_as_drawn.size();
@@ -133,7 +135,9 @@ int FairCommand::run() const {
             << " spans written from the smoothing guide (no G2 log-aesthetic chain within the budget)";
   if (settings.continuity == Continuity::g3)
     std::cerr << "; G3 on " << g3_runs << " of " << g3_runs + g2_runs << " smooth runs (" << g2_line_joins
-              << " of their line joins G2 only: too little line to slide along)";
+              << " of their line joins G2 only: too little line to slide along); written cubics G3 (before rounding) on "
+              << g3_cubics.runs_g3 << " of " << g3_cubics.runs << " runs of smooth nodes, nearer it on "
+              << g3_cubics.runs_moved - g3_cubics.runs_g3 << " more, " << g3_cubics.nodes_added << " nodes added";
   std::cerr << "\n";
   return exit_code::ok;
 }

@@ -10,6 +10,7 @@
 
 #include "fair/contour_plan.hpp"
 #include "fair/cubic_writeback.hpp"
+#include "fair/g3_cubics.hpp"
 #include "fair/grid_rounding.hpp"
 #include "fair/kink_fillet.hpp"
 #include "fair/run_fairing.hpp"
@@ -25,6 +26,9 @@ namespace {
 // Rounds of polishing the joins rounding leaves jumping (HandleStepLimits::polish_rounds): a
 // handwriting font's a-z A-Z changed no further after three.
 constexpr int handwriting_polish_rounds = 3;
+// Under --continuity g3, where the polish also takes the nodes whose dκ/ds jumps: DejaVu Sans
+// a–z A–Z, median jump 0.62 with none, 0.112 with one round, 0.076 with two or three.
+constexpr int text_g3_polish_rounds = 2;
 constexpr int rounding_retries = 3;  // on half the allowance each, when rounding strays
 // Cubics shorter than this (units) are merged away before rounding (outline_nodes): 2 took
 // Because We Create's missing extrema 9 → 6, 3 to 12.
@@ -140,6 +144,7 @@ struct Attempt {
   int guide_stretches = 0;
   int g3_runs = 0, g2_line_joins = 0;
   std::vector<std::string> g3_shortfalls;
+  G3CubicReport g3_cubics;
   std::vector<std::string> runs_as_drawn;
   FairedPieces pieces;
   std::vector<CornerJoin> corners;
@@ -324,6 +329,30 @@ double distance_between(const SampledContour& a, const SampledContour& b) {
   return std::max(directed_hausdorff(a.points(), b.grid), directed_hausdorff(b.points(), a.grid));
 }
 
+// What the cubics may spend on G3: what the float outline leaves of the tolerance at each
+// cubic, less g3_rounding_reserve when the outline is rounded after (rounding then has at least
+// that, 5 % kept for sampling); more left rounding no fewer g2-jumps and fewer joins G3 (Lato,
+// DejaVu Sans Bold and Serif, Inter, Liberation Serif at 1 and 1.25 units). And the nodes a
+// contour may gain for it: the G3 issue allows 20 % over the G2 output, and the G3 curve itself
+// takes up to 9 % (Inter).
+constexpr double g3_cubic_share = 0.95;
+constexpr double g3_rounding_reserve = 0.75;
+constexpr double g3_node_share = 0.12;
+
+// --continuity g3: the written cubics made as G3 as their allowances let them (fair/g3_cubics).
+G3CubicReport carry_g3_into_cubics(std::vector<OutlineNode>& nodes, bool closed, const SampledContour& sampled_source,
+                                   const FairSettings& settings) {
+  const SampledContour sampled(to_contour(nodes, closed));
+  const std::vector<double> by_segment = distance_by_piece(sampled.grid, sampled.samples.segment_of, sampled_source.grid);
+  const double reserve = settings.rounding == Rounding::integers ? g3_rounding_reserve : 0.0;
+  std::vector<double> allowance;
+  for (const double e : by_segment) allowance.push_back(std::max(0.0, g3_cubic_share * (settings.tolerance_units - reserve - e)));
+  std::size_t cubics = 0;
+  for (const OutlineNode& node : nodes) cubics += node.out_handle.has_value();
+  const int budget = static_cast<int>(std::floor(g3_node_share * double(cubics) + 0.5));
+  return make_cubics_g3(nodes, closed, allowance, {settings.flat_curvature, budget});
+}
+
 // The corners of a faired contour (as the source nodes they stand for) that turn by less than
 // the kink limit. Each is found at its node nearest where the pieces met (rounding may have
 // moved it a unit).
@@ -369,6 +398,7 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
     drop_empty_cubics(a.nodes, source.closed);
     if (round) merge_tiny_cubics(a.nodes, source.closed, tiny_cubic_chord);
     rotate_to_start(a.nodes, source.node_point(0));
+    if (settings.continuity == Continuity::g3) a.g3_cubics = carry_g3_into_cubics(a.nodes, source.closed, sampled_source, settings);
     Contour faired = to_contour(a.nodes, source.closed);
     const SampledContour sampled(faired);
     // Each segment's own share: what rounding may still spend there (geom/polyline_distance.hpp).
@@ -379,12 +409,14 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
       // What the float outline leaves of the tolerance, segment by segment, is what rounding
       // may spend on G2 there (5 % kept for sampling).
       const bool hand = settings.profile == FairProfile::handwriting;
+      const bool g3 = settings.continuity == Continuity::g3;
       HandleStepLimits limits;
       limits.flat_curvature = settings.flat_curvature;
       limits.allowance = 0.95 * (settings.tolerance_units - d);
-      limits.polish_rounds = hand ? handwriting_polish_rounds : 1;
+      limits.polish_rounds = hand ? handwriting_polish_rounds : g3 ? text_g3_polish_rounds : 1;
       limits.polish_only_at_jumps = !hand;
       limits.inflection_handles = limits.node_turns = hand;
+      limits.match_slopes = g3;
       for (const double e : by_segment) limits.allowance_by_cubic.push_back(0.95 * (settings.tolerance_units - e));
       // Rounding can stray past its allowance where it slides a line's end (line_rounding) and
       // the handles after it take other whole steps (DejaVu Sans's chi: 4.4 units from the
@@ -414,6 +446,7 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
       out.g3_runs = a.g3_runs;
       out.g2_line_joins = a.g2_line_joins;
       out.g3_shortfalls = std::move(a.g3_shortfalls);
+      out.g3_cubics = a.g3_cubics;
       out.runs_as_drawn = std::move(a.runs_as_drawn);
       out.pieces = std::move(a.pieces);
       kinked = kinked_corners(out.contour, a.corners);

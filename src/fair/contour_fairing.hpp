@@ -9,6 +9,7 @@
 
 #include "fair/fair_options.hpp"
 #include "fair/faired_piece.hpp"
+#include "fair/g3_cubics.hpp"
 #include "geom/contour.hpp"
 
 namespace gf {
@@ -24,6 +25,7 @@ struct ContourFairing {
   int g3_runs = 0;         ///< --continuity g3: smooth runs that came out G3
   int g2_line_joins = 0;   ///< and their line joins held to G2 (no room on the line for G3)
   std::vector<std::string> g3_shortfalls;  ///< and why each other run stayed G2
+  G3CubicReport g3_cubics;  ///< --continuity g3: how far the written cubics carry it (before rounding)
   /// Runs no chain fairs on any basis, kept as the source draws them while the rest of the
   /// contour is faired: where each starts, and why.
   std::vector<std::string> runs_as_drawn;

@@ -21,6 +21,7 @@ GlyphFairing fair_glyph(const Glyph& source, const FairSettings& requested, Fair
       out.guide_stretches += c.guide_stretches;
       out.g3_runs += c.g3_runs;
       out.g2_line_joins += c.g2_line_joins;
+      out.g3_cubics += c.g3_cubics;
       for (const std::string& why : c.g3_shortfalls) out.g3_shortfalls.push_back(contour + why);
       for (const std::string& why : c.runs_as_drawn) out.runs_as_drawn.push_back(contour + why);
     } else {

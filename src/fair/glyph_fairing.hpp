@@ -22,6 +22,7 @@ struct GlyphFairing {
   int g3_runs = 0;          ///< --continuity g3: smooth runs that came out G3
   int g2_line_joins = 0;    ///< and their line joins held to G2
   std::vector<std::string> g3_shortfalls;  ///< "contour i: why", for each run that stayed G2
+  G3CubicReport g3_cubics;                 ///< --continuity g3: the written cubics' runs, summed
   std::vector<std::string> runs_as_drawn;  ///< "contour i: where and why", for each run kept as drawn
   std::vector<FairedPieces> pieces;        ///< per contour, the faired curve before the writeback
 };

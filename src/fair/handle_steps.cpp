@@ -80,6 +80,15 @@ double jump(double k1, double k2, double flat) {
 // G2 first: any jump over the target costs more than every choice that meets it.
 double jump_cost(double j) { return j <= target_jump ? j * j : 1.0 + 100.0 * j; }
 
+// A jump of dκ/ds (relative to the larger side, as the G3 check measures it) over 4 % costs
+// 1 to 2: under any curvature jump over the target, so G2 stays first.
+constexpr double target_slope_jump = 0.04;
+double slope_jump_cost(double d1, double d2) {
+  const double big = std::max(std::abs(d1), std::abs(d2));
+  const double j = big > 0.0 ? std::abs(d1 - d2) / big : 0.0;
+  return j <= target_slope_jump ? 0.0 : 1.0 + 0.5 * j;
+}
+
 // How many steps (not necessarily whole) of `step` from `node`, on the side `sign` gives, reach
 // the line through `line_point` along `line_dir`; none where they run parallel (as far from the
 // line at every step).
@@ -151,6 +160,7 @@ struct OutlineJoins {
 // What the choices weigh of a candidate cubic.
 struct CubicTraits {
   double k_start = 0.0, k_end = 0.0;
+  double slope_start = 0.0, slope_end = 0.0;  ///< dκ/ds at the ends
   double moved = 0.0;  ///< from its unrounded self, as moved_distance measures it within the allowance
   CurvatureShape shape;
   InnerAxisExtrema extrema;  ///< horizontal or vertical turns inside
@@ -199,7 +209,7 @@ class CubicJudge {
   CubicJudge(const std::vector<OutlineNode>& rounded, const std::vector<OutlineNode>& ideal,
              const OutlineJoins& joins, const HandleStepLimits& limits)
       : unrounded_(rounded.size()), allowed_(rounded.size(), 0.0), ideal_(rounded.size()), seen_(rounded.size()),
-        inflection_handles_(limits.inflection_handles), node_turns_(limits.node_turns) {
+        inflection_handles_(limits.inflection_handles), node_turns_(limits.node_turns), match_slopes_(limits.match_slopes) {
     for (std::size_t i = 0; i < rounded.size(); ++i) {
       if (!joins.is_cubic(i)) continue;
       unrounded_[i] = along_lines(outline_cubic(ideal, i), rounded, i, joins);
@@ -215,6 +225,8 @@ class CubicJudge {
   double allowed(std::size_t i) const { return allowed_[i]; }
   /// HandleStepLimits::node_turns.
   bool node_turns() const { return node_turns_; }
+  /// HandleStepLimits::match_slopes.
+  bool match_slopes() const { return match_slopes_; }
   /// HandleStepLimits::inflection_handles.
   bool inflection_handles() const { return inflection_handles_; }
   /// The turns of κ at the node between cubics h and i beyond the unrounded outline's there
@@ -223,6 +235,10 @@ class CubicJudge {
   double node_turn_cost(const CubicTraits& before, const CubicTraits& after, int unrounded_turns) const {
     if (!node_turns_) return 0.0;
     return node_turn_weight * std::max(0, turns_at_node(before, after, hysteresis_) - unrounded_turns);
+  }
+  /// What the jump of dκ/ds at a node costs (HandleStepLimits::match_slopes), else nothing.
+  double slope_cost(const CubicTraits& before, const CubicTraits& after) const {
+    return match_slopes_ ? slope_jump_cost(before.slope_end, after.slope_start) : 0.0;
   }
   int unrounded_node_turns(std::size_t h, std::size_t i) const {
     return node_turns_ ? turns_at_node(ideal_[h], ideal_[i], hysteresis_) : 0;
@@ -245,9 +261,16 @@ class CubicJudge {
 
  private:
   CubicTraits measure(std::size_t i, const Cubic& c) const {
-    return {node_curvature(c, SegmentEnd::start), node_curvature(c, SegmentEnd::end),
-            moved_distance(c, unrounded_[i], allowed_[i]), curvature_shape(c, hysteresis_), inner_axis_extrema_of(c),
-            overreach_length(c), distance(c.p[0], c.p[3]) < fold_chord ? cubic_turning(c) : 0.0};
+    const EndCurvature start = end_curvature(c, SegmentEnd::start), end = end_curvature(c, SegmentEnd::end);
+    return {start.curvature.value_or(0.0),
+            end.curvature.value_or(0.0),
+            start.curvature_derivative.value_or(0.0),
+            end.curvature_derivative.value_or(0.0),
+            moved_distance(c, unrounded_[i], allowed_[i]),
+            curvature_shape(c, hysteresis_),
+            inner_axis_extrema_of(c),
+            overreach_length(c),
+            distance(c.p[0], c.p[3]) < fold_chord ? cubic_turning(c) : 0.0};
   }
 
   std::vector<Cubic> unrounded_;
@@ -255,7 +278,7 @@ class CubicJudge {
   double hysteresis_ = 0.0;
   std::vector<CubicTraits> ideal_;
   std::vector<std::map<std::array<double, 8>, CubicTraits>> seen_;
-  bool inflection_handles_, node_turns_;
+  bool inflection_handles_, node_turns_, match_slopes_;
 };
 
 // One cubic of the outline and every choice of its two handles (state = out·ins + in).
@@ -373,7 +396,8 @@ RunChoice best_run(const std::vector<CubicChoices>& run, const CubicJudge& judge
       if (cur.cost[t] == infeasible) continue;
       for (const std::size_t s : order) {
         if (cost[s] == infeasible || cost[s] > next[t]) break;
-        const double c = cost[s] + jump_cost(jump(prev.k_end[s], cur.k_start[t], flat));
+        const double c = cost[s] + jump_cost(jump(prev.k_end[s], cur.k_start[t], flat)) +
+                         judge.slope_cost(*prev.traits[s], *cur.traits[t]);
         const auto better = [&](double v) { return v < next[t] || (v == next[t] && s < back[k][t]); };
         if (!better(c)) continue;  // a node's turns only add to it
         const double with_turns = c + judge.node_turn_cost(*prev.traits[s], *cur.traits[t], unrounded_turns);
@@ -388,6 +412,7 @@ RunChoice best_run(const std::vector<CubicChoices>& run, const CubicJudge& judge
     double c = cost[s];
     if (first && c != infeasible)
       c += jump_cost(jump(run[n - 1].k_end[s], run[0].k_start[*first], flat)) +
+           judge.slope_cost(*run[n - 1].traits[s], *run[0].traits[*first]) +
            judge.node_turn_cost(*run[n - 1].traits[s], *run[0].traits[*first],
                                 judge.unrounded_node_turns(run[n - 1].start, run[0].start));
     if (c < best.cost) best.cost = c, best.states.assign(n, 0), best.states[n - 1] = s;
@@ -858,6 +883,14 @@ bool turns_too_often(const std::vector<OutlineNode>& nodes, const OutlineJoins& 
   return judge.turns_too_often(h, judge.traits(h, outline_cubic(nodes, h)), i, judge.traits(i, outline_cubic(nodes, i)));
 }
 
+// Whether dκ/ds jumps at node i of the outline as it stands by more than the target (under
+// HandleStepLimits::match_slopes; never otherwise).
+bool slope_jumps(const std::vector<OutlineNode>& nodes, const OutlineJoins& joins, CubicJudge& judge, std::size_t i) {
+  if (!judge.match_slopes() || !joins.joins_cubics(i)) return false;
+  const std::size_t h = (i + nodes.size() - 1) % nodes.size();
+  return judge.slope_cost(judge.traits(h, outline_cubic(nodes, h)), judge.traits(i, outline_cubic(nodes, i))) > 0.0;
+}
+
 // Whether node + sign·m·d (sign +1 towards a join after the node, −1 before it) lies exactly on
 // the line through `join` along `line_dir` for some whole m ≥ 1.
 bool lands_on_line(Vec2 node, Vec2 d, bool join_after, Vec2 join, Vec2 line_dir) {
@@ -890,7 +923,8 @@ bool polish_jumping_run(std::vector<OutlineNode>& nodes, const std::vector<Outli
     std::optional<std::size_t> line_join;
     if (only_at_jumps && next_jumps && joins.meets_line(next) && steps[next]) line_join = next;
     if (only_at_jumps && prev_jumps && joins.meets_line(prev) && steps[prev]) line_join = prev;
-    const bool own = join_jump(joins, i, flat) > target_jump || turns_too_often(nodes, joins, judge, i);
+    const bool own = join_jump(joins, i, flat) > target_jump || turns_too_often(nodes, joins, judge, i) ||
+                     slope_jumps(nodes, joins, judge, i);
     if (!own && !beside && !line_join) continue;
     const bool only_on_line = !own && !beside;
     const RunWindow window = window_around(cubics, cycle, q);
@@ -1003,7 +1037,8 @@ void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<Outl
   }
   // A run is polished while it jumps or turns so.
   const auto wants_polish = [&](std::span<const std::size_t> run) {
-    return jumps_in(run) > 0 || turns_too_often_in(run);
+    return jumps_in(run) > 0 || turns_too_often_in(run) ||
+           std::any_of(run.begin(), run.end(), [&](std::size_t k) { return slope_jumps(nodes, joins, judge, k); });
   };
   for (std::size_t r = 0; r < runs.size(); ++r)
     for (int k = 0; k < limits.polish_rounds && wants_polish(runs[r]); ++k)

@@ -57,6 +57,9 @@ struct HandleStepLimits {
   /// neighbour may give a line the short grid step a curve's handle on it needs, but a corner
   /// on the grid moved to a diagonal neighbour strays by 1.4 units.
   bool any_grid_neighbour = true;
+  /// --continuity g3: a jump of dκ/ds at a smooth node over 4 % costs too, under any curvature
+  /// jump over the target, and the polish takes the nodes where it jumps.
+  bool match_slopes = false;
 
   double allowance_at(std::size_t node) const {
     return node < allowance_by_cubic.size() ? allowance_by_cubic[node] : allowance;
