@@ -4,9 +4,10 @@
 // nodes may move and, off the grid directions, turn; every handle length is free; κ stays
 // continuous (0 at inflections and line joins) and dκ/ds is asked to match, more strongly step
 // by step, while every cubic stays within its allowance of the one it replaces and gains no
-// inflection, extremum of κ or horizontal/vertical extremum. Where the run cannot be G3 within
-// that, its worst cubic is cut in two (a node more, within the contour's budget) and the run
-// solved again; a run that still cannot keeps the most G3 state that stayed within.
+// inflection, horizontal/vertical extremum, loop, cusp or overreaching handle. Where the run
+// cannot be G3 within that, its worst cubic is cut in two (a node more, within the contour's
+// budget) and the run solved again; a run that still cannot keeps the most G3 state that
+// stayed within.
 #pragma once
 
 #include <span>
@@ -25,7 +26,8 @@ struct G3CubicSettings {
 
 struct G3CubicReport {
   int runs = 0;         ///< runs of two or more cubics joined at smooth nodes
-  int runs_g3 = 0;      ///< of them, those whose every dκ/ds jump came under 1e-4 relative
+  int runs_g3 = 0;      ///< of them, those whose every dκ/ds jump came under 1e-4 (relative to the
+                        ///< larger side, or to κ over the chord where both are near 0)
   int runs_moved = 0;   ///< those changed at all (G3 or nearer it)
   int nodes_added = 0;  ///< cuts made
 
