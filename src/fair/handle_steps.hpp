@@ -58,7 +58,8 @@ struct HandleStepLimits {
   /// on the grid moved to a diagonal neighbour strays by 1.4 units.
   bool any_grid_neighbour = true;
   /// --continuity g3: a jump of dκ/ds at a smooth node over 4 % costs too, under any curvature
-  /// jump over the target, and the polish takes the nodes where it jumps.
+  /// jump over the target, and the polish takes the nodes where it jumps, trying places up to
+  /// two units off.
   bool match_slopes = false;
 
   double allowance_at(std::size_t node) const {
