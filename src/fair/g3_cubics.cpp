@@ -105,7 +105,8 @@ struct RunProblem {
   std::size_t cubic_count() const { return targets.size(); }
   std::size_t end_node(std::size_t k) const { return closed ? (k + 1) % frames.size() : k + 1; }
 
-  Eigen::VectorXd layout() {
+  /// Numbers the unknowns and the rows, from the frames as they stand.
+  void index() {
     offset_at.assign(frames.size(), -1), turn_at.assign(frames.size(), -1);
     int count = 0;
     for (std::size_t j = 0; j < frames.size(); ++j) {
@@ -131,7 +132,11 @@ struct RunProblem {
       node_row_count[j] = (frames[j].flat ? 0 : 1) + (inner(j) ? 1 : 0);
       row_count += static_cast<std::size_t>(node_row_count[j]);
     }
-    Eigen::VectorXd x = Eigen::VectorXd::Zero(count + 2 * static_cast<int>(cubic_count()));
+  }
+
+  /// The unknowns where the targets stand: no moves or turns, their handles' lengths.
+  Eigen::VectorXd initial() const {
+    Eigen::VectorXd x = Eigen::VectorXd::Zero(handles_at + 2 * static_cast<int>(cubic_count()));
     for (std::size_t k = 0; k < cubic_count(); ++k) {
       const Cubic& c = targets[k];
       x[handles_at + 2 * static_cast<int>(k)] = std::log(distance(c.p[0], c.p[1]));
@@ -180,7 +185,7 @@ struct RunProblem {
   std::vector<int> move_row_of_unknown;  // a node offset's damping row, −1 for a turn
 
   // The rows, in order: fit_samples distances per cubic, two per movable node's move, then
-  // each node's conditions (node_rows_at[j] of them from node_first_row[j]).
+  // each node's conditions (node_row_count[j] of them from node_first_row[j]).
   std::size_t move_first_row = 0, row_count = 0;
   std::vector<std::size_t> node_first_row;
   std::vector<int> node_row_count;
@@ -281,10 +286,10 @@ Eigen::MatrixXd jacobian(const RunProblem& problem, const Eigen::VectorXd& x, co
   Eigen::MatrixXd jac = Eigen::MatrixXd::Zero(f.size(), x.size());
   std::vector<Cubic> moved_cubics = cubics;
   Eigen::VectorXd moved_rows = f;
+  Eigen::VectorXd moved = x;
   for (Eigen::Index c = 0; c < x.size(); ++c) {
-    Eigen::VectorXd moved = x;
     const double h = 1e-7 * std::max(1.0, std::abs(x[c]));
-    moved[c] += h;
+    moved[c] = x[c] + h;
     const auto affected = problem.cubics_moved_by(static_cast<int>(c));
     for (const auto& k : affected)
       if (k) moved_cubics[*k] = problem.cubic(moved, *k);
@@ -294,6 +299,7 @@ Eigen::MatrixXd jacobian(const RunProblem& problem, const Eigen::VectorXd& x, co
       node_rows(problem, moved_cubics, *k, slope_weight, moved_rows);
       node_rows(problem, moved_cubics, problem.end_node(*k), slope_weight, moved_rows);
     }
+    moved[c] = x[c];
     jac.col(c) = (moved_rows - f) / h;
     if (c < problem.handles_at)
       if (const int row = problem.move_row_of_unknown[static_cast<std::size_t>(c)]; row >= 0) jac(row, c) = node_move_weight;
@@ -385,9 +391,9 @@ bool finite(const Cubic& c) {
 
 // Within every allowance, and no cubic bends more ways than the one it replaces, turns
 // horizontal or vertical inside, folds into a loop or cusp, or reaches past its chord.
-bool acceptable(const RunProblem& problem, const std::vector<Cubic>& cubics) {
+// `over`: overreach(problem, cubics).
+bool acceptable(const RunProblem& problem, const std::vector<Cubic>& cubics, const std::vector<double>& over) {
   if (!std::all_of(cubics.begin(), cubics.end(), finite)) return false;
-  const std::vector<double> over = overreach(problem, cubics);
   if (!(*std::max_element(over.begin(), over.end()) <= 1.0)) return false;
   for (std::size_t k = 0; k < cubics.size(); ++k) {
     const Cubic &now = cubics[k], &was = problem.targets[k];
@@ -421,15 +427,15 @@ struct RunSolution {
   std::size_t worst = 0;      // the cubic farthest over its allowance at the last weight tried
 };
 
-RunSolution solve(RunProblem& problem) {
+RunSolution solve(const RunProblem& problem) {
   RunSolution out;
-  Eigen::VectorXd x = problem.layout();
+  Eigen::VectorXd x = problem.initial();
   std::vector<Foot> feet = initial_feet(problem);
   for (const double w : slope_weights) {
     least_squares(problem, x, feet, w);
     const std::vector<Cubic> cubics = problem.cubics(x);
-    if (!x.allFinite() || !acceptable(problem, cubics)) {
-      const std::vector<double> over = overreach(problem, cubics);
+    const std::vector<double> over = overreach(problem, cubics);
+    if (!x.allFinite() || !acceptable(problem, cubics, over)) {
       out.worst = static_cast<std::size_t>(std::max_element(over.begin(), over.end()) - over.begin());
       return out;
     }
@@ -489,9 +495,11 @@ std::optional<RunProblem> problem_for(const std::vector<OutlineNode>& nodes, con
   }
   // A flat end whose far handle would have to reach backwards (the cubic is flat there only
   // within flat_curvature) keeps its κ by a row instead.
-  const std::vector<Cubic> drawn = p.cubics(p.layout());
+  p.index();
+  const std::vector<Cubic> drawn = p.cubics(p.initial());
   for (std::size_t k = 0; k < drawn.size(); ++k)
     if (!finite(drawn[k])) p.frames[k].flat = p.frames[p.end_node(k)].flat = false;
+  p.index();  // the rows of the ends no longer flat
   return p;
 }
 
