@@ -148,6 +148,47 @@ TEST(G3Cubics, AnEllipseArcBetweenTwoCornersComesOutG3WithinItsAllowance) {
   for (std::size_t k = 0; k < faired.size(); ++k) EXPECT_LE(moved(faired[k], source[k]), allowance * 1.01) << k;
 }
 
+TEST(G3Cubics, RunsMeetingAtCornersBetweenCurvesKeepBothTangentsThere) {
+  // A lens: an ellipse's upper arc, then its mirror image in the chord back, closed. The
+  // corners have a handle on either side, so each run must take its last tangent from the
+  // handle it arrives by (DejaVu's corners mostly meet lines; a handwriting font's meet curves).
+  const double a = 600.0, b = 300.0, start = 0.3, end = pi - 0.3, chord_y = b * std::sin(start);
+  const std::vector<Cubic> upper = hermite_run([&](double t) { return ellipse(a, b, t); }, {start, 0.8, 1.4, 2.1, end});
+  ASSERT_EQ(upper.size(), 4u);
+  std::vector<Cubic> source = upper;
+  for (auto it = upper.rbegin(); it != upper.rend(); ++it) {
+    Cubic mirrored;
+    for (int i = 0; i < 4; ++i) mirrored.p[static_cast<std::size_t>(3 - i)] = {it->p[static_cast<std::size_t>(i)].x, 2 * chord_y - it->p[static_cast<std::size_t>(i)].y};
+    source.push_back(mirrored);
+  }
+  std::vector<OutlineNode> nodes = nodes_of(source, true);
+  nodes[0].smooth = nodes[4].smooth = false;  // the corners
+  const double allowance = 2.0;
+  const G3CubicReport report = make_cubics_g3(nodes, true, std::vector<double>(8, allowance), {5e-4, 0});
+  EXPECT_EQ(report.runs, 2);
+  EXPECT_EQ(report.runs_g3, 2);
+  ASSERT_EQ(nodes.size(), 8u);
+  const std::vector<Cubic> faired = cubics_of(nodes, true);
+  for (const std::size_t first : {0u, 4u}) {
+    const std::vector<Cubic> run(faired.begin() + first, faired.begin() + first + 4);
+    const Jumps j = inner_jumps(run, false);
+    EXPECT_LE(j.curvature, 1e-6) << first;
+    EXPECT_LE(j.slope, 1e-4) << first;
+  }
+  // Each corner keeps its point, and both tangents and curvatures it had.
+  for (const std::size_t k : {0u, 3u, 4u, 7u})
+    for (const SegmentEnd end : {SegmentEnd::start, SegmentEnd::end}) {
+      const Segment now(faired[k]), was(source[k]);
+      if ((end == SegmentEnd::start) != (k % 4 == 0)) continue;
+      EXPECT_NEAR(cross(*end_tangent(now, end), *end_tangent(was, end)), 0.0, 1e-12) << k;
+      EXPECT_GT(dot(*end_tangent(now, end), *end_tangent(was, end)), 0.0) << k;
+      EXPECT_LE(relative_jump(*end_curvature(now, end).curvature, *end_curvature(was, end).curvature), 1e-6) << k;
+    }
+  EXPECT_EQ(nodes[0].point, source[0].p[0]);
+  EXPECT_EQ(nodes[4].point, source[4].p[0]);
+  for (std::size_t k = 0; k < faired.size(); ++k) EXPECT_LE(moved(faired[k], source[k]), allowance * 1.01) << k;
+}
+
 TEST(G3Cubics, ACurveLeavingALineKeepsNoCurvatureThere) {
   // y = c·x³ leaves the x axis with κ = 0; its G2 Hermite cubics from x = 0 to 300.
   const double c = 5e-6;
