@@ -29,6 +29,8 @@ constexpr int handwriting_polish_rounds = 3;
 // Under --continuity g3, where the polish also takes the nodes whose dκ/ds jumps: DejaVu Sans
 // a–z A–Z, median jump 0.62 with none, 0.112 with one round, 0.076 with two or three.
 constexpr int text_g3_polish_rounds = 2;
+// Under --continuity g3, what a dκ/ds jump costs in rounding (HandleStepLimits::slope_jump_weight).
+constexpr double text_slope_jump_weight = 1.0, handwriting_slope_jump_weight = 5.0;
 constexpr int rounding_retries = 3;  // on half the allowance each, when rounding strays
 // Cubics shorter than this (units) are merged away before rounding (outline_nodes): 2 took
 // Because We Create's missing extrema 9 → 6, 3 to 12.
@@ -416,7 +418,7 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
       limits.polish_rounds = hand ? handwriting_polish_rounds : g3 ? text_g3_polish_rounds : 1;
       limits.polish_only_at_jumps = !hand;
       limits.inflection_handles = limits.node_turns = hand;
-      limits.match_slopes = g3;
+      limits.slope_jump_weight = !g3 ? 0.0 : hand ? handwriting_slope_jump_weight : text_slope_jump_weight;
       for (const double e : by_segment) limits.allowance_by_cubic.push_back(0.95 * (settings.tolerance_units - e));
       // Rounding can stray past its allowance where it slides a line's end (line_rounding) and
       // the handles after it take other whole steps (DejaVu Sans's chi: 4.4 units from the

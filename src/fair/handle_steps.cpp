@@ -81,12 +81,12 @@ double jump(double k1, double k2, double flat) {
 double jump_cost(double j) { return j <= target_jump ? j * j : 1.0 + 100.0 * j; }
 
 // A jump of dκ/ds (relative to the larger side, as the G3 check measures it) over 4 % costs
-// 1 to 2: under any curvature jump over the target, so G2 stays first.
+// `weight` times 1 to 2 (HandleStepLimits::slope_jump_weight).
 constexpr double target_slope_jump = 0.04;
-double slope_jump_cost(double d1, double d2) {
+double slope_jump_cost(double d1, double d2, double weight) {
   const double big = std::max(std::abs(d1), std::abs(d2));
   const double j = big > 0.0 ? std::abs(d1 - d2) / big : 0.0;
-  return j <= target_slope_jump ? 0.0 : 1.0 + 0.5 * j;
+  return j <= target_slope_jump ? 0.0 : weight * (1.0 + 0.5 * j);
 }
 
 // How many steps (not necessarily whole) of `step` from `node`, on the side `sign` gives, reach
@@ -209,7 +209,7 @@ class CubicJudge {
   CubicJudge(const std::vector<OutlineNode>& rounded, const std::vector<OutlineNode>& ideal,
              const OutlineJoins& joins, const HandleStepLimits& limits)
       : unrounded_(rounded.size()), allowed_(rounded.size(), 0.0), ideal_(rounded.size()), seen_(rounded.size()),
-        inflection_handles_(limits.inflection_handles), node_turns_(limits.node_turns), match_slopes_(limits.match_slopes) {
+        inflection_handles_(limits.inflection_handles), node_turns_(limits.node_turns), slope_jump_weight_(limits.slope_jump_weight) {
     for (std::size_t i = 0; i < rounded.size(); ++i) {
       if (!joins.is_cubic(i)) continue;
       unrounded_[i] = along_lines(outline_cubic(ideal, i), rounded, i, joins);
@@ -225,8 +225,8 @@ class CubicJudge {
   double allowed(std::size_t i) const { return allowed_[i]; }
   /// HandleStepLimits::node_turns.
   bool node_turns() const { return node_turns_; }
-  /// HandleStepLimits::match_slopes.
-  bool match_slopes() const { return match_slopes_; }
+  /// Whether dκ/ds jumps cost (HandleStepLimits::slope_jump_weight).
+  bool match_slopes() const { return slope_jump_weight_ > 0.0; }
   /// HandleStepLimits::inflection_handles.
   bool inflection_handles() const { return inflection_handles_; }
   /// The turns of κ at the node between cubics h and i beyond the unrounded outline's there
@@ -236,9 +236,9 @@ class CubicJudge {
     if (!node_turns_) return 0.0;
     return node_turn_weight * std::max(0, turns_at_node(before, after, hysteresis_) - unrounded_turns);
   }
-  /// What the jump of dκ/ds at a node costs (HandleStepLimits::match_slopes), else nothing.
+  /// What the jump of dκ/ds at a node costs (HandleStepLimits::slope_jump_weight), else nothing.
   double slope_cost(const CubicTraits& before, const CubicTraits& after) const {
-    return match_slopes_ ? slope_jump_cost(before.slope_end, after.slope_start) : 0.0;
+    return match_slopes() ? slope_jump_cost(before.slope_end, after.slope_start, slope_jump_weight_) : 0.0;
   }
   int unrounded_node_turns(std::size_t h, std::size_t i) const {
     return node_turns_ ? turns_at_node(ideal_[h], ideal_[i], hysteresis_) : 0;
@@ -278,7 +278,8 @@ class CubicJudge {
   double hysteresis_ = 0.0;
   std::vector<CubicTraits> ideal_;
   std::vector<std::map<std::array<double, 8>, CubicTraits>> seen_;
-  bool inflection_handles_, node_turns_, match_slopes_;
+  bool inflection_handles_, node_turns_;
+  double slope_jump_weight_;
 };
 
 // One cubic of the outline and every choice of its two handles (state = out·ins + in).
@@ -885,7 +886,7 @@ bool turns_too_often(const std::vector<OutlineNode>& nodes, const OutlineJoins& 
 }
 
 // Whether dκ/ds jumps at node i of the outline as it stands by more than the target (under
-// HandleStepLimits::match_slopes; never otherwise).
+// HandleStepLimits::slope_jump_weight; never otherwise).
 bool slope_jumps(const std::vector<OutlineNode>& nodes, const OutlineJoins& joins, CubicJudge& judge, std::size_t i) {
   if (!judge.match_slopes() || !joins.joins_cubics(i)) return false;
   const std::size_t h = (i + nodes.size() - 1) % nodes.size();
