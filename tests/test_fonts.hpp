@@ -11,6 +11,7 @@ inline const std::string dejavu_serif = fonts + "/DejaVuSerif/DejaVuSerif-subset
 inline const std::string because_we_learn = fonts + "/BecauseWeLearn/BecauseWeLearn-Regular-subset.otf";
 inline const std::string inter_variable = fonts + "/Inter/Inter-subset.var.ttf";
 inline const std::string inconsolata = fonts + "/Inconsolata/Inconsolata-subset.otf";
+inline const std::string cantarell = fonts + "/Cantarell/Cantarell-Regular-subset.otf";  // S
 inline const std::string cff2_variable = fonts + "/Inter/GlyphfairProbe-CFF2.var.otf";
 
 }  // namespace gf::test

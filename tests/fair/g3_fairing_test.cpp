@@ -20,13 +20,14 @@
 namespace gf {
 namespace {
 
-GlyphFairing fair_g3(const std::string& glyph, FairSettings& settings, const std::string& font = test::dejavu) {
+GlyphFairing fair_g3(const std::string& glyph, FairSettings& settings, const std::string& font = test::dejavu,
+                     Rounding rounding = Rounding::none) {
   SourceOptions options;
   options.selection.names.push_back(glyph);
   const GlyphSource source = GlyphSource::open(font, options);
   FairOptions fo;
   fo.continuity = Continuity::g3;
-  fo.rounding = Rounding::none;
+  fo.rounding = rounding;
   settings = resolve_settings(fo, source.font().units_per_em);
   return fair_glyph(*source.load(0), settings);
 }
@@ -93,6 +94,15 @@ TEST(G3Fairing, ARunAlongTheSmoothingGuideComesOutG3) {
     FairSettings settings;
     expect_g3(name, fair_g3(name, settings, test::inter_variable), settings);
   }
+}
+
+TEST(G3Fairing, ARunStrayingALittlePastItsBudgetThroughEveryRoundComesOutG3) {
+  // Cantarell's S, rounded after (half a unit of the budget kept for it): its G3 curve strayed
+  // 0.308 units of a budget of 0.30 through all six rounds, and the run stayed G2. The round
+  // that strayed least is kept when within a fifth past the budget; the contour is still held
+  // to the tolerance.
+  FairSettings settings;
+  expect_g3("S", fair_g3("S", settings, test::cantarell, Rounding::integers), settings);
 }
 
 TEST(G3Fairing, ARunStallingThroughFourCutsComesOutG3AfterSix) {
