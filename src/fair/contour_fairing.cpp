@@ -337,9 +337,16 @@ double distance_between(const SampledContour& a, const SampledContour& b) {
 // DejaVu Sans Bold and Serif, Inter, Liberation Serif at 1 and 1.25 units). And the nodes a
 // contour may gain for it: the G3 issue allows 20 % over the G2 output, and the G3 curve itself
 // takes up to 9 % (Inter).
-constexpr double g3_cubic_share = 0.95;
 constexpr double g3_rounding_reserve = 0.75;
 constexpr double g3_node_share = 0.12;
+
+// What the outline leaves of the tolerance at each cubic (its own distance `by_segment`), less
+// `reserve`, with 5 % kept for sampling: what rounding, or the G3 cubics before it, may spend there.
+std::vector<double> tolerance_left(std::span<const double> by_segment, double tolerance_units, double reserve) {
+  std::vector<double> out;
+  for (const double e : by_segment) out.push_back(0.95 * std::max(0.0, tolerance_units - reserve - e));
+  return out;
+}
 
 // --continuity g3: the written cubics made as G3 as their allowances let them (fair/g3_cubics).
 G3CubicReport carry_g3_into_cubics(std::vector<OutlineNode>& nodes, bool closed, const SampledContour& sampled_source,
@@ -347,8 +354,7 @@ G3CubicReport carry_g3_into_cubics(std::vector<OutlineNode>& nodes, bool closed,
   const SampledContour sampled(to_contour(nodes, closed));
   const std::vector<double> by_segment = distance_by_piece(sampled.grid, sampled.samples.segment_of, sampled_source.grid);
   const double reserve = settings.rounding == Rounding::integers ? g3_rounding_reserve : 0.0;
-  std::vector<double> allowance;
-  for (const double e : by_segment) allowance.push_back(std::max(0.0, g3_cubic_share * (settings.tolerance_units - reserve - e)));
+  const std::vector<double> allowance = tolerance_left(by_segment, settings.tolerance_units, reserve);
   std::size_t cubics = 0;
   for (const OutlineNode& node : nodes) cubics += node.out_handle.has_value();
   const int budget = static_cast<int>(std::floor(g3_node_share * double(cubics) + 0.5));
@@ -419,7 +425,7 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
       limits.polish_only_at_jumps = !hand;
       limits.inflection_handles = limits.node_turns = hand;
       limits.slope_jump_weight = !g3 ? 0.0 : hand ? handwriting_slope_jump_weight : text_slope_jump_weight;
-      for (const double e : by_segment) limits.allowance_by_cubic.push_back(0.95 * (settings.tolerance_units - e));
+      limits.allowance_by_cubic = tolerance_left(by_segment, settings.tolerance_units, 0.0);
       // Rounding can stray past its allowance where it slides a line's end (line_rounding) and
       // the handles after it take other whole steps (DejaVu Sans's chi: 4.4 units from the
       // source at a tolerance of 2.56, and the contour was kept unfaired), or moves a corner

@@ -445,11 +445,6 @@ RunSolution solve(const RunProblem& problem) {
   return out;
 }
 
-// The direction a run leaves its node by, and the direction it arrives by at its last node:
-// at a corner between two curves the two differ.
-double angle_leaving(const OutlineNode& node) { return angle_of(*node.out_handle - node.point); }
-double angle_arriving(const OutlineNode& node) { return angle_of(node.point - *node.in_handle); }
-
 // The problem for a run as the nodes draw it, each cubic marked in `cut` halved (its middle a
 // node free to move and turn).
 std::optional<RunProblem> problem_for(const std::vector<OutlineNode>& nodes, const CubicRun& run,
@@ -464,7 +459,7 @@ std::optional<RunProblem> problem_for(const std::vector<OutlineNode>& nodes, con
     if (distance(c.p[0], c.p[1]) <= 0.0 || distance(c.p[2], c.p[3]) <= 0.0) return std::nullopt;
     const double allow = i < allowance_by_cubic.size() ? allowance_by_cubic[i] : 0.0;
     const OutlineNode& node = nodes[i];
-    NodeFrame frame{node.point, angle_leaving(node), false, false, false};
+    NodeFrame frame{node.point, angle_of(leaving_direction(nodes, i)), false, false, false};
     const bool inner = run.closed || k > 0;
     frame.movable = inner;
     frame.turnable = inner && !node.grid_step;
@@ -489,7 +484,9 @@ std::optional<RunProblem> problem_for(const std::vector<OutlineNode>& nodes, con
   if (!run.closed) {
     const OutlineNode& last = nodes[run.nodes.back()];
     const EndCurvature e = end_curvature(Segment(outline_cubic(nodes, run.nodes[m - 1])), SegmentEnd::end);
-    p.frames.push_back({last.point, angle_arriving(last), false, false,
+    // The run's last tangent is the one it arrives by: at a corner between two curves the one
+    // leaving is the next run's.
+    p.frames.push_back({last.point, angle_of(arriving_direction(nodes, run.nodes.back())), false, false,
                         !last.out_handle && last.smooth && std::abs(e.curvature.value_or(1.0)) < flat_curvature,
                         e.curvature.value_or(0.0)});
   }

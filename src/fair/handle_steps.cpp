@@ -72,9 +72,11 @@ double shape_cost(const CurvatureShape& rounded, const CurvatureShape& unrounded
          variation_cost(rounded, unrounded, flat);
 }
 
-// The jump between two curvatures, relative to the larger unless both are flat.
+// The jump between two curvatures (or two dκ/ds), relative to the larger unless both are under
+// `flat`; 0 where both are 0 and nothing is flat.
 double jump(double k1, double k2, double flat) {
-  return std::abs(k1 - k2) / std::max({std::abs(k1), std::abs(k2), flat});
+  const double big = std::max({std::abs(k1), std::abs(k2), flat});
+  return big > 0.0 ? std::abs(k1 - k2) / big : 0.0;
 }
 
 // G2 first: any jump over the target costs more than every choice that meets it.
@@ -84,8 +86,7 @@ double jump_cost(double j) { return j <= target_jump ? j * j : 1.0 + 100.0 * j; 
 // `weight` times 1 to 2 (HandleStepLimits::slope_jump_weight).
 constexpr double target_slope_jump = 0.04;
 double slope_jump_cost(double d1, double d2, double weight) {
-  const double big = std::max(std::abs(d1), std::abs(d2));
-  const double j = big > 0.0 ? std::abs(d1 - d2) / big : 0.0;
+  const double j = jump(d1, d2, 0.0);
   return j <= target_slope_jump ? 0.0 : weight * (1.0 + 0.5 * j);
 }
 

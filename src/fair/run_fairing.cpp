@@ -669,7 +669,7 @@ void reexpress_as_g3(FairedRun& result, const RunReference& source, const Smooth
         if (problem->nodes[last].kind == G3NodeKind::line_g2) split[problem->run_piece.back()] = true;
       } else {
         if (g2_line_joins == 0 && worst <= g3_overrun * budget && (!strayed || worst < strayed->deviation))
-          strayed = Held{*problem, g3.spirals, worst, 0};
+          strayed = Held{*problem, std::move(g3.spirals), worst, 0};
         why = "the G3 curve strays " + std::to_string(worst) + " units from the source (budget " +
               std::to_string(budget) + ")";
         for (std::size_t i = 0; i < d.size(); ++i)
