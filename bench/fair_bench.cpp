@@ -47,6 +47,10 @@ BENCHMARK_CAPTURE(fair_every_glyph, because_we_learn_handwriting,
                   std::string(GLYPHFAIR_FONTS) + "/BecauseWeLearn/BecauseWeLearn-Regular-subset.otf",
                   FairProfile::handwriting)
     ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(fair_every_glyph, because_we_learn_handwriting_g3,
+                  std::string(GLYPHFAIR_FONTS) + "/BecauseWeLearn/BecauseWeLearn-Regular-subset.otf",
+                  FairProfile::handwriting, Continuity::g3)
+    ->Unit(benchmark::kMillisecond);
 
 void g2_hermite_quarter(benchmark::State& state) {
   const HermiteEnd s{{300.0, 0.0}, {0.0, 1.0}, 1.0 / 300.0};

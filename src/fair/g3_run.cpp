@@ -36,14 +36,17 @@ class G3System {
           theta_[j] = add(n.tangent_angle, j, -1), kappa_[j] = add(n.curvature * h_, j, -1);
           break;
         case G3NodeKind::inflection:
+        case G3NodeKind::held:
           theta_[j] = add(n.tangent_angle, j, -1), slide_[j] = add(0.0, j, -1);
           break;
         case G3NodeKind::corner: kappa_[j] = add(n.curvature * h_, j, -1); break;
+        case G3NodeKind::corner_held: theta_[j] = add(n.tangent_angle, j, -1); break;
         case G3NodeKind::line:
         case G3NodeKind::line_g2: slide_[j] = add(0.0, j, -1); break;
       }
       const Vec2 t = direction_of(n.tangent_angle);
-      slide_direction_.push_back(n.kind == G3NodeKind::inflection ? perpendicular(t) : t);
+      const bool across = n.kind == G3NodeKind::inflection || n.kind == G3NodeKind::held;
+      slide_direction_.push_back(across ? perpendicular(t) : t);
     }
     for (std::size_t i = 0; i < m_; ++i) {
       length_.push_back(add(lengths[i] / h_, nodes_.size(), static_cast<int>(i)));
@@ -64,7 +67,8 @@ class G3System {
   }
   double curvature(const Eigen::VectorXd& x, std::size_t j) const {
     if (kappa_[j] >= 0) return x[at(kappa_[j])] / h_;
-    return nodes_[j].kind == G3NodeKind::corner || nodes_[j].kind == G3NodeKind::smooth ? nodes_[j].curvature : 0.0;
+    const G3NodeKind kind = nodes_[j].kind;
+    return kind == G3NodeKind::held || kind == G3NodeKind::corner_held ? nodes_[j].curvature : 0.0;
   }
   double length(const Eigen::VectorXd& x, std::size_t i) const { return x[at(length_[i])] * h_; }
 
@@ -72,7 +76,8 @@ class G3System {
   double slope(const Eigen::VectorXd& x, std::size_t j) const {
     const G3NodeKind kind = nodes_[j].kind;
     if (kind == G3NodeKind::line) return 0.0;
-    if (kind == G3NodeKind::corner || kind == G3NodeKind::line_g2) return secant(x, j == 0 ? 0 : m_ - 1);
+    if (kind == G3NodeKind::corner || kind == G3NodeKind::corner_held || kind == G3NodeKind::line_g2)
+      return secant(x, j == 0 ? 0 : m_ - 1);
     const double a = secant(x, j == 0 ? m_ - 1 : j - 1), b = secant(x, j % m_);
     return a * b > 0.0 ? 2.0 * a * b / (a + b) : 0.0;
   }

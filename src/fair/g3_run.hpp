@@ -14,7 +14,10 @@
 //   smooth           tangent angle, κ              point
 //   inflection       tangent angle, slide along    κ = 0
 //                    its normal
+//   held             tangent angle, slide along    κ, the G2 solve's (a smooth node the
+//                    its normal                    solve would carry across 0, run_fairing)
 //   corner (end)     κ                             point, tangent; κ′ the end secant
+//   corner, held     tangent angle                 point, κ (the G2 solve's); κ′ the end secant
 //   line (end)       slide along the line          tangent, κ = κ′ = 0 (G3 with the line)
 //   line, G2 only    slide along the line          tangent, κ = 0; κ′ the end secant
 //   every segment    its length L
@@ -42,7 +45,7 @@
 
 namespace gf {
 
-enum class G3NodeKind { smooth, inflection, corner, line, line_g2 };
+enum class G3NodeKind { smooth, inflection, held, corner, corner_held, line, line_g2 };
 
 struct G3Node {
   Vec2 point;

@@ -33,10 +33,21 @@ constexpr double max_relative_mismatch = 1e-9;  // |Δκ| / max|κ| the G2 solve
 // knot of cubics a few units long (κ·UPM 4,000, six inflections); the run is kept as drawn.
 constexpr double max_kept_mismatch = 1.0;
 constexpr int max_g3_rounds = 6;  // of cutting the segments whose G3 spirals stray or stall
-// Of those rounds, how many may cut every piece of a guided run whose spirals change κ's sign
-// more often than its G2 curve (a–z A–Z under G3: EB Garamond's segments off G3 529 → 102, its
-// cubics' TV 0.958× → 0.886× of the source's; all six rounds took dkg from 11 s to 275 s).
-constexpr int max_sign_cuts = 2;
+// Of those rounds, how many cut every piece of a guided run whose spirals change κ's sign more
+// often than its G2 curve before the rounds after also hold the nodes the solve carried across
+// zero (a–z A–Z under G3: EB Garamond's segments off G3 529 → 102, its cubics' TV 0.958× →
+// 0.886× of the source's; cutting alone through all six rounds took dkg from 11 s to 275 s).
+constexpr int sign_cuts_before_holding = 2;
+// Rounds such a run is given in all: every round doubles its pieces, and cutting on through
+// all six held took Ruf from 170 s to 684 s, Leckerli from 84 s to 499 s.
+constexpr int max_sign_rounds = 4;
+// Solves again with the nodes G3 carried across κ = 0 held, at most (the nearly flat nodes of
+// dkg's I walked across one after another for three).
+constexpr int max_zero_holds = 8;
+// How much farther than the solve without holds one with them may turn a tangent from the G2
+// curve's (radians): freed, a held corner's tangent could wind a short hook into a loop
+// (Femke Klaver's I, 0.44 against 0; a one-segment run of dkg's, a whole turn).
+constexpr double max_held_turn = 0.2;
 // How far past its budget a run's G3 curve may stray when no round brings it within: the share
 // comes out of the writeback's, and the contour is still held to the tolerance after it
 // (Cantarell's S strayed 0.308 units of 0.30 through six rounds, FreeSerif's s 0.354, and
@@ -600,11 +611,71 @@ int sign_changes_along(const std::vector<FairedChain>& chains, double zero) {
   return sign_changes_along(pieces, zero);
 }
 
+// The nodes (smooth, or corner ends) the G3 solve carried across zero, away from the G2 curve's
+// sign, held at the G2 curve's κ instead (their tangents, and a smooth node's place along its
+// normal, left free): between nodes κ is monotone, so once no node crosses, κ changes sign only
+// where the G2 curve's does. `farthest`: only the one carried farthest. False when none crossed.
+bool hold_crossed_nodes(G3Problem& problem, std::span<const CurvatureEnd> solved, double zero, bool farthest) {
+  std::vector<std::size_t> crossed;
+  for (std::size_t j = 0; j < problem.nodes.size(); ++j) {
+    const G3Node& n = problem.nodes[j];
+    if (n.kind != G3NodeKind::smooth && n.kind != G3NodeKind::corner) continue;
+    if (n.curvature * solved[j].curvature >= 0.0 || std::abs(solved[j].curvature) < zero) continue;
+    crossed.push_back(j);
+  }
+  if (crossed.empty()) return false;
+  if (farthest)
+    crossed = {*std::max_element(crossed.begin(), crossed.end(), [&](std::size_t i, std::size_t j) {
+      return std::abs(solved[i].curvature) < std::abs(solved[j].curvature);
+    })};
+  for (const std::size_t j : crossed) {
+    G3Node& n = problem.nodes[j];
+    n.kind = n.kind == G3NodeKind::smooth ? G3NodeKind::held : G3NodeKind::corner_held;
+  }
+  return true;
+}
+
+// How far the solve turned the run's tangents from the G2 curve's, at the node turned most.
+double largest_turn(const G3Problem& problem, const G3Result& g3) {
+  double out = 0.0;
+  for (std::size_t j = 0; j < g3.ends.size(); ++j)
+    out = std::max(out, std::abs(g3.ends[j].tangent_angle - problem.nodes[j].tangent_angle));
+  return out;
+}
+
+// While `g3` changes κ's sign more often than the G2 curve (`g2_sign_changes`), up to
+// `max_zero_holds` times: the nodes it carried across zero held (all of them, or, should that
+// stall or turn a tangent `max_held_turn` farther than the solve without holds did, the one
+// carried farthest) and the run solved again. The sign changes left.
+int solve_holding_crossed_nodes(G3Problem& problem, G3Result& g3, int sign_changes, int g2_sign_changes, double zero) {
+  const double turned = largest_turn(problem, g3);
+  const auto sound = [&](const G3Problem& p, const G3Result& r) {
+    return r.ok() && largest_turn(p, r) <= turned + max_held_turn;
+  };
+  for (int hold = 0; hold < max_zero_holds && sign_changes > g2_sign_changes; ++hold) {
+    std::optional<G3Problem> holding;
+    G3Result again;
+    for (const bool farthest : {false, true}) {
+      holding = problem;
+      if (!hold_crossed_nodes(*holding, g3.ends, zero, farthest)) return sign_changes;
+      again = make_g3(holding->nodes, holding->lengths, holding->closed);
+      if (sound(*holding, again)) break;
+    }
+    if (!sound(*holding, again)) break;
+    problem = std::move(*holding), g3 = std::move(again);
+    sign_changes = sign_changes_along(curve_pieces(g3.spirals), zero);
+  }
+  return sign_changes;
+}
+
 // G3 over the whole run (fair/g3_run.hpp), kept only when it stays within the budget of the
 // source and, where part of it follows the smoothing guide, changes the sign of κ no more often
-// than the G2 run (re-expressed, a guide's nearly straight pieces could swing across zero:
-// Because We Learn's i stem; such a run is cut everywhere and tried again, `max_sign_cuts`
-// times); a log-aesthetic segment whose spirals stray is cut in two, up to `max_g3_rounds`
+// than the G2 run. Re-expressed, a guide's nearly straight pieces could swing across zero
+// (Because We Learn's i stem): such a run is cut everywhere and tried again, and after
+// `sign_cuts_before_holding` rounds each round also holds the nodes the solve carried across
+// zero at the G2 curve's κ, cutting on where that fails, `max_sign_rounds` rounds in all. A
+// chain's run holds them from the first round (dkg's f: a spiral turned back past its
+// y-minimum) and is not refused when that fails. A log-aesthetic segment whose spirals stray is cut in two, up to `max_g3_rounds`
 // times. Where only holding its line joins to G2 solves the run, the segments at those joins
 // are cut in two for the next round, which tries G3 there again with the room a shorter spiral
 // gives κ to rise from 0 with zero slope; the run held so is kept should no round do better.
@@ -613,11 +684,11 @@ void reexpress_as_g3(FairedRun& result, const RunReference& source, const Smooth
                      double zero_curvature) {
   std::vector<int> pieces;
   std::string why;
-  // Only a guide stretch is checked so: a log-aesthetic chain's spirals keep their pieces'
-  // monotone curvature, and swing about zero only within the check's noise.
+  // Only a guide stretch is refused for it: a log-aesthetic chain's spirals keep their pieces'
+  // monotone curvature, and swing about zero only where held nodes do not mend it.
   const bool guided =
       std::any_of(result.chains.begin(), result.chains.end(), [](const FairedChain& c) { return c.guide.has_value(); });
-  const int g2_inflections = guided ? sign_changes_along(result.chains, zero_curvature) : 0;
+  const int g2_inflections = sign_changes_along(result.chains, zero_curvature);
   struct Held {
     G3Problem problem;
     std::vector<PolynomialSpiral> spirals;
@@ -647,12 +718,16 @@ void reexpress_as_g3(FairedRun& result, const RunReference& source, const Smooth
     // The run's pieces (segments or guide pieces) to cut in two before the next round.
     std::vector<bool> split(pieces.size(), false);
     if (g3.ok()) {
-      const int inflections = guided ? sign_changes_along(curve_pieces(g3.spirals), zero_curvature) : 0;
+      int inflections = sign_changes_along(curve_pieces(g3.spirals), zero_curvature);
+      // A guided run tries shorter spirals first, then holds the nodes the solve carried across
+      // zero too; a chain's run holds them from the first round.
+      if (!guided || round >= sign_cuts_before_holding)
+        inflections = solve_holding_crossed_nodes(*problem, g3, inflections, g2_inflections, zero_curvature);
       if (guided && inflections > g2_inflections) {
         why = "the G3 curve changes the sign of its curvature " + std::to_string(inflections) + " times, the G2 one " +
               std::to_string(g2_inflections);
-        // Shorter spirals follow the guide's pieces closer; past two cuts the solve only grows.
-        if (round >= max_sign_cuts) break;
+        // Shorter spirals follow the guide's pieces closer, and give held nodes more room.
+        if (round + 1 >= max_sign_rounds) break;
         for (int& n : pieces) n *= 2;
         continue;
       }

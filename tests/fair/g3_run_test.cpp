@@ -93,36 +93,64 @@ TEST(G3Run, AnEllipseComesOutG3NearTheEllipse) {
   EXPECT_LT(far, 0.005 * a);
 }
 
-TEST(G3Run, ASineWaveBetweenCornersKeepsItsInflectionAtZeroCurvature) {
-  // y = A sin(x / B) from one crest to the next trough: corners at the ends, the inflection
-  // in the middle, smooth junctions halfway.
-  const double A = 60.0, B = 80.0;
+// y = A sin(x / B) from one crest to the next trough: corners at the ends, the inflection in
+// the middle, smooth junctions halfway; the lengths by the midpoint rule.
+struct SineWave {
+  static constexpr int count = 5;
   std::vector<G3Node> nodes;
   std::vector<double> lengths;
-  const int count = 5;
-  for (int k = 0; k < count; ++k) {
+};
+
+SineWave sine_wave() {
+  const double A = 60.0, B = 80.0;
+  SineWave w;
+  for (int k = 0; k < SineWave::count; ++k) {
     const double x = B * (pi / 2 + k * pi / 4);
     const double d1 = A / B * std::cos(x / B), d2 = -A / (B * B) * std::sin(x / B);
-    const G3NodeKind kind = k == 0 || k == count - 1 ? G3NodeKind::corner : (k == 2 ? G3NodeKind::inflection : G3NodeKind::smooth);
-    nodes.push_back({{x, A * std::sin(x / B)}, std::atan(d1), d2 / std::pow(1 + d1 * d1, 1.5), kind});
-    if (k + 1 < count) {
+    const bool end = k == 0 || k == SineWave::count - 1;
+    const G3NodeKind kind = end ? G3NodeKind::corner : (k == 2 ? G3NodeKind::inflection : G3NodeKind::smooth);
+    w.nodes.push_back({{x, A * std::sin(x / B)}, std::atan(d1), d2 / std::pow(1 + d1 * d1, 1.5), kind});
+    if (k + 1 < SineWave::count) {
       double len = 0.0;
       for (int q = 0; q < 2000; ++q) {
         const double u = x + (q + 0.5) * (B * pi / 4) / 2000;
         len += std::hypot(1.0, A / B * std::cos(u / B)) * (B * pi / 4) / 2000;
       }
-      lengths.push_back(len);
+      w.lengths.push_back(len);
     }
   }
-  const G3Result g = make_g3(nodes, lengths, false);
+  return w;
+}
+
+TEST(G3Run, ASineWaveBetweenCornersKeepsItsInflectionAtZeroCurvature) {
+  const SineWave w = sine_wave();
+  const G3Result g = make_g3(w.nodes, w.lengths, false);
   expect_g3(g, false);
   EXPECT_EQ(g.ends[2].curvature, 0.0);
   EXPECT_NE(g.ends[2].curvature_slope, 0.0);  // an inflection, not a flat stretch
   // The corners keep their points and tangents.
-  for (const std::size_t k : {std::size_t{0}, std::size_t{count - 1}}) {
-    EXPECT_EQ(g.ends[k].point, nodes[k].point);
-    EXPECT_EQ(g.ends[k].tangent_angle, nodes[k].tangent_angle);
+  for (const std::size_t k : {std::size_t{0}, std::size_t{SineWave::count - 1}}) {
+    EXPECT_EQ(g.ends[k].point, w.nodes[k].point);
+    EXPECT_EQ(g.ends[k].tangent_angle, w.nodes[k].tangent_angle);
   }
+}
+
+TEST(G3Run, HeldNodesKeepTheirCurvatureAndTheRunStaysG3) {
+  // The sine wave, its first corner and the smooth node after it held at the sine's κ (what
+  // run_fairing does to nodes the solve would carry across 0): each keeps its κ exactly, the
+  // corner its point, and every junction is G3.
+  SineWave w = sine_wave();
+  w.nodes[0].kind = G3NodeKind::corner_held;
+  w.nodes[1].kind = G3NodeKind::held;
+  const G3Result g = make_g3(w.nodes, w.lengths, false);
+  expect_g3(g, false);
+  EXPECT_EQ(g.ends[0].curvature, w.nodes[0].curvature);
+  EXPECT_EQ(g.ends[1].curvature, w.nodes[1].curvature);
+  EXPECT_EQ(g.ends[0].point, w.nodes[0].point);
+  EXPECT_EQ(g.ends[2].curvature, 0.0);
+  // Free to turn, the held corner's tangent stays near the sine's: κ is what the sine has there.
+  EXPECT_NEAR(g.ends[0].tangent_angle, w.nodes[0].tangent_angle, 0.05);
+  EXPECT_EQ(g.ends[SineWave::count - 1].tangent_angle, w.nodes[SineWave::count - 1].tangent_angle);
 }
 
 TEST(G3Run, ACurveLeavingALineSlidesAlongItToMeetItG3) {
