@@ -38,8 +38,8 @@ constexpr int max_g3_rounds = 6;  // of cutting the segments whose G3 spirals st
 // zero (a–z A–Z under G3: EB Garamond's segments off G3 529 → 102, its cubics' TV 0.958× →
 // 0.886× of the source's; cutting alone through all six rounds took dkg from 11 s to 275 s).
 constexpr int sign_cuts_before_holding = 2;
-// Rounds such a run is given in all: every round doubles its pieces, and cutting on through
-// all six held took Ruf from 170 s to 684 s, Leckerli from 84 s to 499 s.
+// Rounds such a run is given in all: every round doubles its pieces, and holding and cutting
+// on through all six took Ruf from 170 s to 684 s, Leckerli from 84 s to 499 s.
 constexpr int max_sign_rounds = 4;
 // Solves again with the nodes G3 carried across κ = 0 held, at most (the nearly flat nodes of
 // dkg's I walked across one after another for three).
@@ -614,8 +614,8 @@ int sign_changes_along(const std::vector<FairedChain>& chains, double zero) {
 // The nodes (smooth, or corner ends) the G3 solve carried across zero, away from the G2 curve's
 // sign, held at the G2 curve's κ instead (their tangents, and a smooth node's place along its
 // normal, left free): between nodes κ is monotone, so once no node crosses, κ changes sign only
-// where the G2 curve's does. `farthest`: only the one carried farthest. False when none crossed.
-bool hold_crossed_nodes(G3Problem& problem, std::span<const CurvatureEnd> solved, double zero, bool farthest) {
+// where the G2 curve's does. `farthest`: only the one carried farthest. How many crossed.
+std::size_t hold_crossed_nodes(G3Problem& problem, std::span<const CurvatureEnd> solved, double zero, bool farthest) {
   std::vector<std::size_t> crossed;
   for (std::size_t j = 0; j < problem.nodes.size(); ++j) {
     const G3Node& n = problem.nodes[j];
@@ -623,8 +623,8 @@ bool hold_crossed_nodes(G3Problem& problem, std::span<const CurvatureEnd> solved
     if (n.curvature * solved[j].curvature >= 0.0 || std::abs(solved[j].curvature) < zero) continue;
     crossed.push_back(j);
   }
-  if (crossed.empty()) return false;
-  if (farthest)
+  const std::size_t count = crossed.size();
+  if (farthest && count > 1)
     crossed = {*std::max_element(crossed.begin(), crossed.end(), [&](std::size_t i, std::size_t j) {
       return std::abs(solved[i].curvature) < std::abs(solved[j].curvature);
     })};
@@ -632,7 +632,7 @@ bool hold_crossed_nodes(G3Problem& problem, std::span<const CurvatureEnd> solved
     G3Node& n = problem.nodes[j];
     n.kind = n.kind == G3NodeKind::smooth ? G3NodeKind::held : G3NodeKind::corner_held;
   }
-  return true;
+  return count;
 }
 
 // How far the solve turned the run's tangents from the G2 curve's, at the node turned most.
@@ -653,16 +653,19 @@ int solve_holding_crossed_nodes(G3Problem& problem, G3Result& g3, int sign_chang
     return r.ok() && largest_turn(p, r) <= turned + max_held_turn;
   };
   for (int hold = 0; hold < max_zero_holds && sign_changes > g2_sign_changes; ++hold) {
-    std::optional<G3Problem> holding;
-    G3Result again;
+    bool taken = false;
     for (const bool farthest : {false, true}) {
-      holding = problem;
-      if (!hold_crossed_nodes(*holding, g3.ends, zero, farthest)) return sign_changes;
-      again = make_g3(holding->nodes, holding->lengths, holding->closed);
-      if (sound(*holding, again)) break;
+      G3Problem holding = problem;
+      const std::size_t crossed = hold_crossed_nodes(holding, g3.ends, zero, farthest);
+      if (crossed == 0) return sign_changes;
+      G3Result again = make_g3(holding.nodes, holding.lengths, holding.closed);
+      if (sound(holding, again)) {
+        problem = std::move(holding), g3 = std::move(again), taken = true;
+        break;
+      }
+      if (crossed == 1) break;  // the farthest alone is the same problem
     }
-    if (!sound(*holding, again)) break;
-    problem = std::move(*holding), g3 = std::move(again);
+    if (!taken) break;
     sign_changes = sign_changes_along(curve_pieces(g3.spirals), zero);
   }
   return sign_changes;
@@ -675,8 +678,8 @@ int solve_holding_crossed_nodes(G3Problem& problem, G3Result& g3, int sign_chang
 // `sign_cuts_before_holding` rounds each round also holds the nodes the solve carried across
 // zero at the G2 curve's κ, cutting on where that fails, `max_sign_rounds` rounds in all. A
 // chain's run holds them from the first round (dkg's f: a spiral turned back past its
-// y-minimum) and is not refused when that fails. A log-aesthetic segment whose spirals stray is cut in two, up to `max_g3_rounds`
-// times. Where only holding its line joins to G2 solves the run, the segments at those joins
+// y-minimum) and is not refused when that fails. A log-aesthetic segment whose spirals stray
+// is cut in two, up to `max_g3_rounds` times. Where only holding its line joins to G2 solves the run, the segments at those joins
 // are cut in two for the next round, which tries G3 there again with the room a shorter spiral
 // gives κ to rise from 0 with zero slope; the run held so is kept should no round do better.
 // Else the run stays G2 and says why.

@@ -183,13 +183,8 @@ TEST(G3Fairing, RoundedTheCubicsStayG2AndKeepPartOfG3) {
   // on these glyphs (near 1 for the G2 Hermite cubics, and for rounding that ignores it).
   std::vector<double> jumps;
   for (const char* name : {"o", "e", "n", "c", "O", "D", "G", "U", "S", "a", "s"}) {
-    SourceOptions options;
-    options.selection.names.push_back(name);
-    const GlyphSource source = GlyphSource::open(test::dejavu, options);
-    FairOptions fo;
-    fo.continuity = Continuity::g3;
-    const FairSettings settings = resolve_settings(fo, source.font().units_per_em);
-    const GlyphFairing g3 = fair_glyph(*source.load(0), settings);
+    FairSettings settings;
+    const GlyphFairing g3 = fair_g3(name, settings, test::dejavu, Rounding::as_source);
     ASSERT_TRUE(g3.kept.empty()) << name;
     for (const Contour& c : g3.glyph.outline.contours)
       for (std::size_t i = 0; i < c.segments.size(); ++i) {
@@ -200,7 +195,7 @@ TEST(G3Fairing, RoundedTheCubicsStayG2AndKeepPartOfG3) {
         if (!a || !b || std::abs(turning_angle(*a, *b)) > 0.05 * std::numbers::pi / 180.0) continue;
         const double k1 = end_curvature(into, SegmentEnd::end).curvature.value_or(0.0);
         const double k2 = end_curvature(out_of, SegmentEnd::start).curvature.value_or(0.0);
-        const double flat = 0.5 / source.font().units_per_em;  // half a unit per em: compared by difference
+        const double flat = settings.flat_curvature;  // half a unit per em: compared by difference
         EXPECT_LE(std::abs(k1 - k2) / std::max({std::abs(k1), std::abs(k2), flat}), 0.05) << name << " join " << i;
       }
     const std::vector<double> j = cubic_slope_jumps(g3.glyph.outline.contours);
@@ -219,14 +214,8 @@ TEST(G3Fairing, HandwritingRoundedKeepsTheCubicsG3) {
   std::vector<double> jumps;
   G3CubicReport report;
   for (const char* name : {"a", "e", "g", "o", "s", "n", "B", "S", "R", "C"}) {
-    SourceOptions options;
-    options.selection.names.push_back(name);
-    const GlyphSource source = GlyphSource::open(test::because_we_learn, options);
-    FairOptions fo;
-    fo.continuity = Continuity::g3;
-    fo.profile = FairProfile::handwriting;
-    const FairSettings settings = resolve_settings(fo, source.font().units_per_em);
-    const GlyphFairing g3 = fair_glyph(*source.load(0), settings);
+    FairSettings settings;
+    const GlyphFairing g3 = fair_g3(name, settings, test::because_we_learn, Rounding::as_source, FairProfile::handwriting);
     ASSERT_TRUE(g3.kept.empty()) << name;
     EXPECT_LE(g3.deviation, settings.tolerance_units) << name;
     report += g3.g3_cubics;
