@@ -2,6 +2,7 @@
 // itself: see the closing notes).
 #include <benchmark/benchmark.h>
 
+#include "fair/g3_run.hpp"
 #include "fair/glyph_fairing.hpp"
 #include "fair/initial_tangents.hpp"
 #include "geom/g2_hermite.hpp"
@@ -51,6 +52,25 @@ BENCHMARK_CAPTURE(fair_every_glyph, because_we_learn_handwriting_g3,
                   std::string(GLYPHFAIR_FONTS) + "/BecauseWeLearn/BecauseWeLearn-Regular-subset.otf",
                   FairProfile::handwriting, Continuity::g3)
     ->Unit(benchmark::kMillisecond);
+
+// One G3 solve of a closed run of n junctions around a 300 × 180 ellipse (3n unknowns; past 150
+// the Newton steps factor sparse): what a handwriting run cut many times over costs.
+void g3_run_ellipse(benchmark::State& state) {
+  const auto n = static_cast<int>(state.range(0));
+  std::vector<G3Node> nodes;
+  std::vector<double> lengths;
+  double angle = 0.0;
+  for (int k = 0; k < n; ++k) {
+    const double t = 6.283185307179586 * k / n, dt = 6.283185307179586 / n;
+    const Vec2 d{-300 * std::sin(t), 180 * std::cos(t)};
+    if (k > 0) angle += wrapped_angle(std::atan2(d.y, d.x) - angle);
+    else angle = std::atan2(d.y, d.x);
+    nodes.push_back({{300 * std::cos(t), 180 * std::sin(t)}, angle, 300 * 180 / std::pow(norm(d), 3), G3NodeKind::smooth});
+    lengths.push_back(norm(Vec2{-300 * std::sin(t + dt / 2), 180 * std::cos(t + dt / 2)}) * dt);
+  }
+  for (auto _ : state) benchmark::DoNotOptimize(make_g3(nodes, lengths, true));
+}
+BENCHMARK(g3_run_ellipse)->Arg(8)->Arg(96)->Arg(384)->Unit(benchmark::kMillisecond);
 
 void g2_hermite_quarter(benchmark::State& state) {
   const HermiteEnd s{{300.0, 0.0}, {0.0, 1.0}, 1.0 / 300.0};

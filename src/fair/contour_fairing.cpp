@@ -29,8 +29,14 @@ constexpr int handwriting_polish_rounds = 3;
 // Under --continuity g3, where the polish also takes the nodes whose dκ/ds jumps: DejaVu Sans
 // a–z A–Z, median jump 0.62 with none, 0.112 with one round, 0.076 with two or three.
 constexpr int text_g3_polish_rounds = 2;
-// Under --continuity g3, what a dκ/ds jump costs in rounding (HandleStepLimits::slope_jump_weight).
-constexpr double text_slope_jump_weight = 1.0, handwriting_slope_jump_weight = 5.0;
+// Under --continuity g3, what a dκ/ds jump costs in rounding (HandleStepLimits::slope_jump_weight),
+// and on text what a curvature jump the check counts costs on top (counted_jump_cost), ten
+// times that. Text a–z A–Z, the median dκ/ds jump at weights 1 (without the counted jump's
+// cost), 3, 6, 8: DejaVu Sans 0.049, 0.038, 0.036, 0.036; DejaVu Sans Bold 0.33, 0.12, 0.060,
+// 0.060; Lato 0.13, 0.17, 0.051, 0.047; Open Sans 0.071, 0.046, 0.038, 0.037; Cantarell 0.30,
+// 0.27, 0.19, 0.14, but 8 took its curvature variation to 0.955× of the source's (the bar 0.95×).
+constexpr double text_slope_jump_weight = 6.0, handwriting_slope_jump_weight = 5.0;
+constexpr double text_counted_jump_cost = 10.0 * text_slope_jump_weight;
 constexpr int rounding_retries = 3;  // on half the allowance each, when rounding strays
 // Cubics shorter than this (units) are merged away before rounding (outline_nodes): 2 took
 // Because We Create's missing extrema 9 → 6, 3 to 12.
@@ -425,6 +431,7 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
       limits.polish_only_at_jumps = !hand;
       limits.inflection_handles = limits.node_turns = hand;
       limits.slope_jump_weight = !g3 ? 0.0 : hand ? handwriting_slope_jump_weight : text_slope_jump_weight;
+      limits.counted_jump_cost = g3 && !hand ? text_counted_jump_cost : 0.0;
       limits.allowance_by_cubic = tolerance_left(by_segment, settings.tolerance_units, 0.0);
       // Rounding can stray past its allowance where it slides a line's end (line_rounding) and
       // the handles after it take other whole steps (DejaVu Sans's chi: 4.4 units from the

@@ -163,17 +163,22 @@ G3Result make_g3(std::span<const G3Node> nodes, std::span<const double> lengths,
     return out;
   }
   const G3System sys(nodes, lengths, closed);
-  // The Jacobian by forward differences, each column only on the segments its unknown moves.
+  // The Jacobian by forward differences, each column only on the segments its unknown moves
+  // (so sparse: a few segments' rows per column).
   const auto jacobian = [&](const Eigen::VectorXd& at, const Eigen::VectorXd& f) {
-    Eigen::MatrixXd jac = Eigen::MatrixXd::Zero(f.size(), at.size());
+    std::vector<Eigen::Triplet<double>> entries;
+    Eigen::VectorXd moved = at;
     for (Eigen::Index u = 0; u < at.size(); ++u) {
-      Eigen::VectorXd moved = at;
       moved[u] += fd_step;
       for (const std::size_t i : sys.touched_by(u)) {
         const auto row = static_cast<Eigen::Index>(3 * i);
-        jac.block<3, 1>(row, u) = (sys.miss(moved, i) - f.segment<3>(row)) / fd_step;
+        const Eigen::Vector3d column = (sys.miss(moved, i) - f.segment<3>(row)) / fd_step;
+        for (Eigen::Index r = 0; r < 3; ++r) entries.emplace_back(row + r, u, column[r]);
       }
+      moved[u] = at[u];
     }
+    Eigen::SparseMatrix<double> jac(f.size(), at.size());
+    jac.setFromTriplets(entries.begin(), entries.end());
     return jac;
   };
   Eigen::VectorXd x = sys.start();

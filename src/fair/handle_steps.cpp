@@ -21,6 +21,7 @@ constexpr int max_passes = 16;        // of choosing steps and nudging nodes in 
                                       // handle moves a unit a pass: DejaVu's Q tail took 9)
 constexpr double turn = 0.1;          // radians a node may turn on the grid (the allowance bounds what that moves)
 constexpr double target_jump = 0.03;  // below the check's 5 %, with room for its sampling
+constexpr double checked_jump = 0.05;  // the check's g2-jump (HandleStepLimits::counted_jump_cost)
 constexpr double wrong_way = 1e4;     // an inflection or extremum the unrounded cubic lacks
 constexpr double infeasible = std::numeric_limits<double>::infinity();
 // Curvature variation a rounded cubic adds inside, relative to its unrounded largest |κ|: free
@@ -210,7 +211,8 @@ class CubicJudge {
   CubicJudge(const std::vector<OutlineNode>& rounded, const std::vector<OutlineNode>& ideal,
              const OutlineJoins& joins, const HandleStepLimits& limits)
       : unrounded_(rounded.size()), allowed_(rounded.size(), 0.0), ideal_(rounded.size()), seen_(rounded.size()),
-        inflection_handles_(limits.inflection_handles), node_turns_(limits.node_turns), slope_jump_weight_(limits.slope_jump_weight) {
+        inflection_handles_(limits.inflection_handles), node_turns_(limits.node_turns), slope_jump_weight_(limits.slope_jump_weight),
+        counted_jump_cost_(limits.counted_jump_cost) {
     for (std::size_t i = 0; i < rounded.size(); ++i) {
       if (!joins.is_cubic(i)) continue;
       unrounded_[i] = along_lines(outline_cubic(ideal, i), rounded, i, joins);
@@ -237,6 +239,9 @@ class CubicJudge {
     if (!node_turns_) return 0.0;
     return node_turn_weight * std::max(0, turns_at_node(before, after, hysteresis_) - unrounded_turns);
   }
+  /// What a curvature jump j at a node costs, one the check counts the more
+  /// (HandleStepLimits::counted_jump_cost).
+  double g2_cost(double j) const { return jump_cost(j) + (j > checked_jump ? counted_jump_cost_ : 0.0); }
   /// What the jump of dκ/ds at a node costs (HandleStepLimits::slope_jump_weight), else nothing.
   double slope_cost(const CubicTraits& before, const CubicTraits& after) const {
     return match_slopes() ? slope_jump_cost(before.slope_end, after.slope_start, slope_jump_weight_) : 0.0;
@@ -280,7 +285,7 @@ class CubicJudge {
   std::vector<CubicTraits> ideal_;
   std::vector<std::map<std::array<double, 8>, CubicTraits>> seen_;
   bool inflection_handles_, node_turns_;
-  double slope_jump_weight_;
+  double slope_jump_weight_, counted_jump_cost_;
 };
 
 // One cubic of the outline and every choice of its two handles (state = out·ins + in).
@@ -329,8 +334,8 @@ CubicChoices cubic_choices(const std::vector<OutlineNode>& nodes, std::span<cons
         }
         double cost = allowed > 0.0 ? 0.01 * (t.moved / allowed) * (t.moved / allowed) : 0.0;
         // A curve meeting a line tangentially meets it with κ = 0.
-        if (line_before) cost += jump_cost(jump(t.k_start, 0.0, flat));
-        if (line_after) cost += jump_cost(jump(t.k_end, 0.0, flat));
+        if (line_before) cost += judge.g2_cost(jump(t.k_start, 0.0, flat));
+        if (line_after) cost += judge.g2_cost(jump(t.k_end, 0.0, flat));
         // Where the grid allows only near zero, or a corner's handle moves, the cubic must not
         // bend the other way near its end: an inflection the unrounded cubic does not have.
         if (t.shape.sign_changes > ideal.shape.sign_changes) cost += wrong_way;
@@ -398,7 +403,7 @@ RunChoice best_run(const std::vector<CubicChoices>& run, const CubicJudge& judge
       if (cur.cost[t] == infeasible) continue;
       for (const std::size_t s : order) {
         if (cost[s] == infeasible || cost[s] > next[t]) break;
-        const double c = cost[s] + jump_cost(jump(prev.k_end[s], cur.k_start[t], flat)) +
+        const double c = cost[s] + judge.g2_cost(jump(prev.k_end[s], cur.k_start[t], flat)) +
                          judge.slope_cost(*prev.traits[s], *cur.traits[t]);
         const auto better = [&](double v) { return v < next[t] || (v == next[t] && s < back[k][t]); };
         if (!better(c)) continue;  // a node's turns only add to it
@@ -413,7 +418,7 @@ RunChoice best_run(const std::vector<CubicChoices>& run, const CubicJudge& judge
   for (std::size_t s = 0; s < cost.size(); ++s) {
     double c = cost[s];
     if (first && c != infeasible)
-      c += jump_cost(jump(run[n - 1].k_end[s], run[0].k_start[*first], flat)) +
+      c += judge.g2_cost(jump(run[n - 1].k_end[s], run[0].k_start[*first], flat)) +
            judge.slope_cost(*run[n - 1].traits[s], *run[0].traits[*first]) +
            judge.node_turn_cost(*run[n - 1].traits[s], *run[0].traits[*first],
                                 judge.unrounded_node_turns(run[n - 1].start, run[0].start));

@@ -42,8 +42,9 @@ constexpr int sign_cuts_before_holding = 2;
 // on through all six took Ruf from 170 s to 684 s, Leckerli from 84 s to 499 s.
 constexpr int max_sign_rounds = 4;
 // Solves again with the nodes G3 carried across κ = 0 held, at most (the nearly flat nodes of
-// dkg's I walked across one after another for three).
-constexpr int max_zero_holds = 8;
+// dkg's I walked across one after another for three; its f, refused at eight, came out G3 at
+// 24). The solves are sparse (geom/damped_newton.hpp), so more holds cost little.
+constexpr int max_zero_holds = 24;
 // How much farther than the solve without holds one with them may turn a tangent from the G2
 // curve's (radians): freed, a held corner's tangent could wind a short hook into a loop
 // (Femke Klaver's I, 0.44 against 0; a one-segment run of dkg's, a whole turn).

@@ -58,30 +58,43 @@ TEST(G3Run, ACircleStaysTheCircle) {
   }
 }
 
-TEST(G3Run, AnEllipseComesOutG3NearTheEllipse) {
-  // Junctions at its four extrema of curvature and halfway between; κ from the ellipse.
-  const double a = 300.0, b = 180.0;
+// The ellipse x = a cos t, y = b sin t with `count` junctions evenly in t (a multiple of 4: its
+// four extrema of curvature among them); κ from the ellipse, the lengths by the midpoint rule.
+struct EllipseRun {
+  static constexpr double a = 300.0, b = 180.0;
   std::vector<G3Node> nodes;
   std::vector<double> lengths;
-  const auto at = [&](double t) { return Vec2{a * std::cos(t), b * std::sin(t)}; };
-  for (int k = 0; k < 8; ++k) {
-    const double t = k * pi / 4;
+};
+
+EllipseRun ellipse_run(int count) {
+  const double a = EllipseRun::a, b = EllipseRun::b, step = 2.0 * pi / count;
+  EllipseRun e;
+  for (int k = 0; k < count; ++k) {
+    const double t = k * step;
     const double speed = std::hypot(a * std::sin(t), b * std::cos(t));
-    nodes.push_back({at(t), std::atan2(b * std::cos(t), -a * std::sin(t)),
-                     a * b / (speed * speed * speed), G3NodeKind::smooth});
-    double len = 0.0;  // arc length by the midpoint rule
+    e.nodes.push_back({{a * std::cos(t), b * std::sin(t)}, std::atan2(b * std::cos(t), -a * std::sin(t)),
+                       a * b / (speed * speed * speed), G3NodeKind::smooth});
+    double len = 0.0;
     for (int q = 0; q < 2000; ++q) {
-      const double u = t + (q + 0.5) * (pi / 4) / 2000;
-      len += std::hypot(a * std::sin(u), b * std::cos(u)) * (pi / 4) / 2000;
+      const double u = t + (q + 0.5) * step / 2000;
+      len += std::hypot(a * std::sin(u), b * std::cos(u)) * step / 2000;
     }
-    lengths.push_back(len);
+    e.lengths.push_back(len);
   }
-  for (std::size_t k = 1; k < nodes.size(); ++k)  // unwrap along the run
-    nodes[k].tangent_angle = nodes[k - 1].tangent_angle + wrapped_angle(nodes[k].tangent_angle - nodes[k - 1].tangent_angle);
-  const G3Result g = make_g3(nodes, lengths, true);
+  for (std::size_t k = 1; k < e.nodes.size(); ++k)  // unwrap along the run
+    e.nodes[k].tangent_angle =
+        e.nodes[k - 1].tangent_angle + wrapped_angle(e.nodes[k].tangent_angle - e.nodes[k - 1].tangent_angle);
+  return e;
+}
+
+// G3 on every junction, κ′ = 0 at the ellipse's extrema of curvature (junctions whose secants
+// differ in sign), every spiral near the ellipse.
+void expect_g3_ellipse(int count) {
+  const double a = EllipseRun::a, b = EllipseRun::b;
+  const EllipseRun e = ellipse_run(count);
+  const G3Result g = make_g3(e.nodes, e.lengths, true);
   expect_g3(g, true);
-  // Extrema of the ellipse's curvature are junctions whose secants differ in sign: κ′ = 0 there.
-  for (int k = 0; k < 8; k += 2) EXPECT_EQ(g.ends[static_cast<std::size_t>(k)].curvature_slope, 0.0);
+  for (int k = 0; k < count; k += count / 4) EXPECT_EQ(g.ends[static_cast<std::size_t>(k)].curvature_slope, 0.0);
   double far = 0.0;
   for (const PolynomialSpiral& s : g.spirals)
     for (const LacPoint& p : s.sample(32)) {
@@ -92,6 +105,12 @@ TEST(G3Run, AnEllipseComesOutG3NearTheEllipse) {
     }
   EXPECT_LT(far, 0.005 * a);
 }
+
+TEST(G3Run, AnEllipseComesOutG3NearTheEllipse) { expect_g3_ellipse(8); }
+
+// 96 junctions, 288 unknowns: the Newton steps by sparse QR (geom/damped_newton.hpp), as for a
+// run cut many times over.
+TEST(G3Run, AnEllipseOfManyJunctionsComesOutG3Too) { expect_g3_ellipse(96); }
 
 // y = A sin(x / B) from one crest to the next trough: corners at the ends, the inflection in
 // the middle, smooth junctions halfway; the lengths by the midpoint rule.
