@@ -167,6 +167,7 @@ G3Result make_g3(std::span<const G3Node> nodes, std::span<const double> lengths,
   // (so sparse: a few segments' rows per column).
   const auto jacobian = [&](const Eigen::VectorXd& at, const Eigen::VectorXd& f) {
     std::vector<Eigen::Triplet<double>> entries;
+    entries.reserve(static_cast<std::size_t>(at.size()) * 12);  // three rows of up to four segments
     Eigen::VectorXd moved = at;
     for (Eigen::Index u = 0; u < at.size(); ++u) {
       moved[u] += fd_step;

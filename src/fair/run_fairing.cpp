@@ -680,9 +680,10 @@ int solve_holding_crossed_nodes(G3Problem& problem, G3Result& g3, int sign_chang
 // zero at the G2 curve's κ, cutting on where that fails, `max_sign_rounds` rounds in all. A
 // chain's run holds them from the first round (dkg's f: a spiral turned back past its
 // y-minimum) and is not refused when that fails. A log-aesthetic segment whose spirals stray
-// is cut in two, up to `max_g3_rounds` times. Where only holding its line joins to G2 solves the run, the segments at those joins
-// are cut in two for the next round, which tries G3 there again with the room a shorter spiral
-// gives κ to rise from 0 with zero slope; the run held so is kept should no round do better.
+// is cut in two, up to `max_g3_rounds` times. Where only holding its line joins to G2 solves
+// the run, the segments at those joins are cut in two for the next round, which tries G3 there
+// again with the room a shorter spiral gives κ to rise from 0 with zero slope; the run held so
+// is kept should no round do better.
 // Else the run stays G2 and says why.
 void reexpress_as_g3(FairedRun& result, const RunReference& source, const SmoothRun& run, double budget,
                      double zero_curvature) {

@@ -12,9 +12,7 @@
 #include <utility>
 
 #include <Eigen/Dense>
-#include <Eigen/Sparse>
-#include <Eigen/SparseLU>
-#include <Eigen/SparseQR>
+#include <Eigen/SparseCore>
 
 namespace gf {
 
@@ -47,23 +45,10 @@ auto newton_step(const Eigen::MatrixBase<Matrix>& jac, const Vector& f) {
   return jac.colPivHouseholderQr().solve(-f).eval();
 }
 
-/// The same for a sparse J: dense QR up to `dense_unknowns` columns (as fast there, and the same
-/// step as a dense J's); past it sparse LU where J is square and LU finds a finite step, else
-/// sparse QR (COLAMD ordering, rank-revealing; ten times LU's time on a 1,152-unknown run).
-inline Eigen::VectorXd newton_step(const Eigen::SparseMatrix<double>& jac, const Eigen::VectorXd& f) {
-  constexpr Eigen::Index dense_unknowns = 150;
-  if (jac.cols() <= dense_unknowns) return Eigen::MatrixXd(jac).colPivHouseholderQr().solve(-f);
-  if (jac.rows() == jac.cols()) {
-    Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu(jac);
-    if (lu.info() == Eigen::Success) {
-      Eigen::VectorXd step = lu.solve(-f);
-      if (step.allFinite()) return step;
-    }
-  }
-  Eigen::SparseQR<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> qr(jac);
-  if (qr.info() != Eigen::Success) return Eigen::MatrixXd(jac).colPivHouseholderQr().solve(-f);
-  return qr.solve(-f);
-}
+/// The same for a sparse J: dense QR up to 150 columns (as fast there, and the same step as a
+/// dense J's); past it sparse LU where J is square and LU finds a finite step, else sparse QR
+/// (COLAMD ordering, rank-revealing; ten times LU's time on a 1,152-unknown run).
+Eigen::VectorXd newton_step(const Eigen::SparseMatrix<double>& jac, const Eigen::VectorXd& f);
 
 /// From x until max |F(x)| ≤ tolerance; x is left at the last point reached. `jacobian(x, f)`
 /// gives J at x, f being F(x); `admissible(x)` keeps iterates inside the problem's domain; a
