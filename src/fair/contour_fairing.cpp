@@ -18,6 +18,7 @@
 #include "geom/arc_length.hpp"
 #include "geom/curvature.hpp"
 #include "geom/polyline_distance.hpp"
+#include "geom/tolerance_band.hpp"
 
 namespace gf {
 
@@ -438,16 +439,27 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
       // source at a tolerance of 2.56, and the contour was kept unfaired), or moves a corner
       // to a grid neighbour past the tolerance (FreeSerif's V, at 1.25): rounded again with
       // the lines' ends kept within their allowance, then both ways on half the allowance, up
-      // to three times.
-      for (int retry = 0;; ++retry) {
-        limits.any_grid_neighbour = retry % 2 == 0;
-        if (retry > 0 && limits.any_grid_neighbour) {
-          limits.allowance *= 0.5;
-          for (double& e : limits.allowance_by_cubic) e *= 0.5;
+      // to three times. First, cubics may move past their allowance where they stay within the
+      // band around the source (measured exactly: what the sampling leaves is the 5 % kept);
+      // where that strays, as without the band.
+      const ToleranceBand band(sampled.grid, sampled.samples.segment_of, sampled_source.grid,
+                               0.95 * settings.tolerance_units);
+      const HandleStepLimits first = limits;
+      for (const ToleranceBand* within : {&band, static_cast<const ToleranceBand*>(nullptr)}) {
+        limits = first;
+        limits.band = within;
+        const int last_retry = within ? 1 : 2 * rounding_retries + 1;
+        for (int retry = 0;; ++retry) {
+          limits.any_grid_neighbour = retry % 2 == 0;
+          if (retry > 0 && limits.any_grid_neighbour) {
+            limits.allowance *= 0.5;
+            for (double& e : limits.allowance_by_cubic) e *= 0.5;
+          }
+          faired = to_contour(round_to_grid(a.nodes, source.closed, limits), source.closed);
+          d = distance_between(SampledContour(faired), sampled_source);
+          if (d <= settings.tolerance_units || retry == last_retry) break;
         }
-        faired = to_contour(round_to_grid(a.nodes, source.closed, limits), source.closed);
-        d = distance_between(SampledContour(faired), sampled_source);
-        if (d <= settings.tolerance_units || retry == 2 * rounding_retries + 1) break;
+        if (d <= settings.tolerance_units) break;
       }
     }
     if (d <= settings.tolerance_units) {

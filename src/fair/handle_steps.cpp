@@ -164,6 +164,7 @@ struct CubicTraits {
   double k_start = 0.0, k_end = 0.0;
   double slope_start = 0.0, slope_end = 0.0;  ///< dκ/ds at the ends
   double moved = 0.0;  ///< from its unrounded self, as moved_distance measures it within the allowance
+  bool within = true;  ///< moved within the allowance, or still within the band around the source
   CurvatureShape shape;
   InnerAxisExtrema extrema;  ///< horizontal or vertical turns inside
   double overreach = 0.0;  ///< how far a handle reaches past the chord (overreach_length)
@@ -203,6 +204,18 @@ Cubic along_lines(Cubic c, const std::vector<OutlineNode>& rounded, std::size_t 
   return c;
 }
 
+// A cubic as a polyline for the band around the source: a point every four units of its
+// control polygon or so (chords then stray a few hundredths of a unit at glyph curvatures),
+// 16 to 96 in all.
+std::vector<Vec2> band_samples(const Cubic& c) {
+  const double polygon = distance(c.p[0], c.p[1]) + distance(c.p[1], c.p[2]) + distance(c.p[2], c.p[3]);
+  const int n = std::clamp(static_cast<int>(polygon / 4.0), 16, 96);
+  std::vector<Vec2> out;
+  out.reserve(n + 1);
+  for (int k = 0; k <= n; ++k) out.push_back(c.point_at(double(k) / n));
+  return out;
+}
+
 // Every cubic of the outline against its unrounded self. How far each may move to gain G2 is
 // set once: its allowance, or as far as rounding alone already put it. Each candidate is
 // measured once, however many passes weigh it.
@@ -212,7 +225,7 @@ class CubicJudge {
              const OutlineJoins& joins, const HandleStepLimits& limits)
       : unrounded_(rounded.size()), allowed_(rounded.size(), 0.0), ideal_(rounded.size()), seen_(rounded.size()),
         inflection_handles_(limits.inflection_handles), node_turns_(limits.node_turns), slope_jump_weight_(limits.slope_jump_weight),
-        counted_jump_cost_(limits.counted_jump_cost) {
+        counted_jump_cost_(limits.counted_jump_cost), band_(limits.band) {
     for (std::size_t i = 0; i < rounded.size(); ++i) {
       if (!joins.is_cubic(i)) continue;
       unrounded_[i] = along_lines(outline_cubic(ideal, i), rounded, i, joins);
@@ -268,11 +281,13 @@ class CubicJudge {
  private:
   CubicTraits measure(std::size_t i, const Cubic& c) const {
     const EndCurvature start = end_curvature(c, SegmentEnd::start), end = end_curvature(c, SegmentEnd::end);
+    const double moved = moved_distance(c, unrounded_[i], allowed_[i]);
     return {start.curvature.value_or(0.0),
             end.curvature.value_or(0.0),
             start.curvature_derivative.value_or(0.0),
             end.curvature_derivative.value_or(0.0),
-            moved_distance(c, unrounded_[i], allowed_[i]),
+            moved,
+            moved <= allowed_[i] || (band_ && band_->holds(i, band_samples(c))),
             curvature_shape(c, hysteresis_),
             inner_axis_extrema_of(c),
             overreach_length(c),
@@ -286,6 +301,7 @@ class CubicJudge {
   std::vector<std::map<std::array<double, 8>, CubicTraits>> seen_;
   bool inflection_handles_, node_turns_;
   double slope_jump_weight_, counted_jump_cost_;
+  const ToleranceBand* band_;
 };
 
 // One cubic of the outline and every choice of its two handles (state = out·ins + in).
@@ -328,7 +344,7 @@ CubicChoices cubic_choices(const std::vector<OutlineNode>& nodes, std::span<cons
         const CubicTraits& t = judge.traits(i, Cubic{p0, out, in, p3});
         c.k_start.push_back(t.k_start), c.k_end.push_back(t.k_end);
         c.traits.push_back(&t);
-        if (t.moved > allowed) {
+        if (!t.within) {
           c.cost.push_back(infeasible);
           continue;
         }
@@ -522,7 +538,7 @@ class NodeChange {
       const std::size_t k = side == 0 ? h_ : i_;
       const CubicTraits& t = judge_.traits(k, outline_cubic(nodes_, k));
       const Most& most = most_[side];
-      if (t.moved > judge_.allowed(k) || t.shape.sign_changes > most.sign_changes || t.extrema.all > most.extrema ||
+      if (!t.within || t.shape.sign_changes > most.sign_changes || t.extrema.all > most.extrema ||
           t.overreach > most.overreach || t.turning > most.turning + fold_turn)
         return false;
     }

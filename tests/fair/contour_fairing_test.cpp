@@ -421,6 +421,20 @@ TEST(ContourFairing, ACurveMeetsARoundedLineWithZeroCurvature) {
   EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm), 0);
 }
 
+TEST(ContourFairing, RoundingMovesACubicAsFarAsTheSourceAllows) {
+  // DejaVu Serif's R: where the leg's line (step (−1, 2)) meets the curve into the bowl, κ = 0
+  // needs the curve's far handle on the line, two units from where rounding put it. That moves
+  // the cubic 2.31 units, past its allowance of 2.30 (the tolerance less the float cubic's
+  // farthest from the source: a bound by the triangle inequality), while the cubic so moved
+  // stays within 0.95 of the tolerance of the source (HandleStepLimits::band). Left 1.8 units off the
+  // line, the handle gave κ·UPM −0.62 at the join against +13 in the bowl: an inflection the
+  // source lacks.
+  FairedGlyph f;
+  expect_faired(test::dejavu_serif, "R", FairProfile::text, &f);
+  EXPECT_EQ(inflections(f.source.outline, f.upm), 0);
+  EXPECT_EQ(inflections(f.result.glyph.outline, f.upm), 0);
+}
+
 // A smooth node a unit off a nearly straight stroke, its tangent a degree off the axis: rounded
 // along the axis, the cubic from the stroke has to come back to it and turns into an S (Inter's
 // b and p: one inflection the source lacks; its g: κ −31 per em against +0.25 there). The

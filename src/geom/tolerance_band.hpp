@@ -1,0 +1,41 @@
+// The band a faired contour must stay in: every point within `bound` of the source and every
+// source point within `bound` of it (the two-sided Hausdorff distance), answered piece by piece
+// so that one piece can be replaced and checked on its own.
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <vector>
+
+#include "geom/polyline_distance.hpp"
+#include "geom/vec2.hpp"
+
+namespace gf {
+
+/// Each source point answers to the piece of the faired contour nearest it. A replacement for
+/// piece i holds when its own points lie within `bound` of the source polyline and the source
+/// points that answer to piece i lie within `bound` of it. Replacements that all hold keep the
+/// whole contour within `bound` of the source both ways: a source point is no farther from the
+/// contour than from its own piece. This is the exact test that the triangle inequality
+/// (a piece moved by at most the bound less its own distance) only bounds from above.
+class ToleranceBand {
+ public:
+  /// `faired`: the faired contour sampled, `piece_of[k]` the piece whose stretch of polyline
+  /// point k starts (as distance_by_piece takes them); `source`: the source polyline. The
+  /// source grid is referenced, not copied: it must outlive the band.
+  ToleranceBand(const PolylineGrid& faired, std::span<const std::size_t> piece_of, const PolylineGrid& source,
+                double bound);
+
+  double bound() const { return bound_; }
+
+  /// Whether `replacement` (a polyline through the new piece, dense enough that its chords
+  /// stay within a small part of the bound of the curve) keeps piece `piece` within the band.
+  bool holds(std::size_t piece, std::span<const Vec2> replacement) const;
+
+ private:
+  const PolylineGrid* source_;
+  std::vector<std::vector<Vec2>> answering_;  ///< per piece, the source points nearest it
+  double bound_;
+};
+
+}  // namespace gf
