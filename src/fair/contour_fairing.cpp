@@ -442,7 +442,7 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
       // to three times. First, cubics may move past their allowance where they stay within the
       // band around the source (measured exactly: what the sampling leaves is the 5 % kept);
       // where that strays, as without the band.
-      const ToleranceBand band(sampled.grid, sampled.samples.segment_of, sampled_source.grid,
+      const ToleranceBand band(sampled.grid, sampled.samples.segment_of, sampled_source.points(),
                                0.95 * settings.tolerance_units);
       const HandleStepLimits first = limits;
       for (const ToleranceBand* within : {&band, static_cast<const ToleranceBand*>(nullptr)}) {

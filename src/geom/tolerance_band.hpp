@@ -21,20 +21,25 @@ namespace gf {
 class ToleranceBand {
  public:
   /// `faired`: the faired contour sampled, `piece_of[k]` the piece whose stretch of polyline
-  /// point k starts (as distance_by_piece takes them); `source`: the source polyline. The
-  /// source grid is referenced, not copied: it must outlive the band.
-  ToleranceBand(const PolylineGrid& faired, std::span<const std::size_t> piece_of, const PolylineGrid& source,
+  /// point k starts (as distance_by_piece takes them); `source`: the source polyline, in order
+  /// along its contour (closed where its last point is its first).
+  ToleranceBand(const PolylineGrid& faired, std::span<const std::size_t> piece_of, std::span<const Vec2> source,
                 double bound);
 
   double bound() const { return bound_; }
 
   /// Whether `replacement` (a polyline through the new piece, dense enough that its chords
   /// stay within a small part of the bound of the curve) keeps piece `piece` within the band.
+  /// Its own points are measured against the stretch of source around the points that answer
+  /// to the piece (padded by `stretch_pad` points either way): never nearer than the whole
+  /// source, so a replacement that holds so holds.
   bool holds(std::size_t piece, std::span<const Vec2> replacement) const;
 
+  static constexpr std::size_t stretch_pad = 16;
+
  private:
-  const PolylineGrid* source_;
   std::vector<std::vector<Vec2>> answering_;  ///< per piece, the source points nearest it
+  std::vector<std::vector<Vec2>> stretch_;    ///< per piece, the source polyline around them
   double bound_;
 };
 
