@@ -32,11 +32,11 @@ constexpr int handwriting_polish_rounds = 3;
 constexpr int text_g3_polish_rounds = 2;
 // Under --continuity g3, what a dκ/ds jump costs in rounding (HandleStepLimits::slope_jump_weight),
 // and on text what a curvature jump the check counts costs on top (counted_jump_cost), ten
-// times that. Text a–z A–Z, the median dκ/ds jump at weights 1 (without the counted jump's
-// cost), 3, 6, 8: DejaVu Sans 0.049, 0.038, 0.036, 0.036; DejaVu Sans Bold 0.33, 0.12, 0.060,
-// 0.060; Lato 0.13, 0.17, 0.051, 0.047; Open Sans 0.071, 0.046, 0.038, 0.037; Cantarell 0.30,
-// 0.27, 0.19, 0.14, but 8 took its curvature variation to 0.955× of the source's (the bar 0.95×).
-constexpr double text_slope_jump_weight = 6.0, handwriting_slope_jump_weight = 5.0;
+// times that. Text a–z A–Z with the band around the source (HandleStepLimits::band), the median
+// dκ/ds jump at weights 3, 4, 5, 6, 8: DejaVu Sans Bold 0.058, 0.066, 0.062, 0.048, 0.040 (the
+// bar 0.05); Lato 0.038, 0.037, 0.037, 0.035, 0.035; Cantarell 0.039, 0.038, 0.036, 0.034, 0.034,
+// its curvature variation 0.922, 0.937, 0.952, 0.955, 0.935× of the source's (the bar 0.95×).
+constexpr double text_slope_jump_weight = 8.0, handwriting_slope_jump_weight = 5.0;
 constexpr double text_counted_jump_cost = 10.0 * text_slope_jump_weight;
 constexpr int rounding_retries = 3;  // on half the allowance each, when rounding strays
 // Cubics shorter than this (units) are merged away before rounding (outline_nodes): 2 took

@@ -67,7 +67,7 @@ struct HandleStepLimits {
   bool any_grid_neighbour = true;
   /// --continuity g3 where positive: a jump j of dκ/ds at a smooth node over 4 % costs this
   /// times 1 + j/2, and the polish takes the nodes where it jumps, trying places up to two
-  /// units off. 6 on text, where a curvature jump the check counts costs more still
+  /// units off. 8 on text, where a curvature jump the check counts costs more still
   /// (counted_jump_cost), so G2 comes first. 5 on handwriting, whose G2 bar is a share of the
   /// joins and whose short cubics leave whole steps few ways to match dκ/ds: dkg a–z A–Z,
   /// median dκ/ds jump 0.19 → 0.040 (1, 2, 4, 6, 8: 0.19, 0.12, 0.056, 0.039, 0.036), g2-jumps
