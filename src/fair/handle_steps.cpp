@@ -740,7 +740,9 @@ std::vector<std::size_t> seat_flat_nodes(std::vector<OutlineNode>& nodes, const 
 // exactly on the line, a whole number of the far node's steps from that node; along a diagonal
 // line the far node's own direction seldom crosses it at one (Comic Neue's K: a 22-unit cap
 // left its line with κ·UPM 18). Where such a join still jumps, its far node, one joining two
-// cubics, is tried at the grid points next to it and, unless it is an extremum, in the primitive
+// cubics, is tried at the grid points up to two units from its own (a line of step (3, −4)
+// passes a whole step of a horizontal handle every four units of height: Lato's c, whose cap
+// seats two units down) and, unless it is an extremum, in the primitive
 // directions within `turn` of its tangent, for one whose handle line crosses the line at a whole
 // step on its side of the join; that handle goes there, the node's other handle a step or three
 // either way. Returns the nodes it moved (their directions changed in `steps`).
@@ -768,7 +770,7 @@ std::vector<std::size_t> seat_line_joins(std::vector<OutlineNode>& nodes, const 
     std::optional<Vec2> best_step;
     // Sides up to 16: only a step that lands on the line is taken, not one set by curvature.
     for (const Vec2 d : node_directions(*steps[i], target, 16))
-      for (const Vec2 p : node_places(kept.point, target.point)) {
+      for (const Vec2 p : node_places(kept.point, target.point, 2)) {
         const std::optional<double> m = steps_to_line(p, d, sign, join.point, into);
         if (!m || *m < 1.0 || *m != std::round(*m)) continue;
         const Vec2 on_line = p + d * (sign * *m);

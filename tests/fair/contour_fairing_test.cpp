@@ -435,6 +435,20 @@ TEST(ContourFairing, RoundingMovesACubicAsFarAsTheSourceAllows) {
   EXPECT_EQ(inflections(f.result.glyph.outline, f.upm), 0);
 }
 
+TEST(ContourFairing, ACurveSeatsOnItsLineFromTwoUnitsOff) {
+  // Lato's c: the lower terminal's cap (κ·UPM −48 at its top, a node at y = 223.98) meets a
+  // line of step (3, −4), and its far handle lies on that line at whole steps only where the
+  // top is at y = 222 or 226, two units off: a unit off, the handle stayed 0.2 units from the
+  // line, and κ·UPM 10.7 where the curve meets it. The top of t's stem is alike. The far node
+  // is tried up to two units from its grid point, the band around the source deciding.
+  for (const char* name : {"c", "t"}) {
+    const FairedGlyph f = fair_named(test::lato, name, FairOptions{});
+    ASSERT_TRUE(f.result.kept.empty()) << name << ": " << f.result.kept.front();
+    EXPECT_FALSE(has_fraction(f.result.glyph.outline)) << name;
+    EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm), 0) << name;
+  }
+}
+
 // A smooth node a unit off a nearly straight stroke, its tangent a degree off the axis: rounded
 // along the axis, the cubic from the stroke has to come back to it and turns into an S (Inter's
 // b and p: one inflection the source lacks; its g: κ −31 per em against +0.25 there). The
