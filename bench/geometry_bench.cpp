@@ -5,6 +5,11 @@
 #include "geom/critical_points.hpp"
 #include "geom/curvature.hpp"
 #include "geom/join.hpp"
+#include "geom/tolerance_band.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <vector>
 
 namespace gf {
 namespace {
@@ -41,6 +46,30 @@ void joins_of_contour(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(joins_of(c));
 }
 BENCHMARK(joins_of_contour);
+
+// A circle of radius 300 in the band of 2.4 units around it, in 8 pieces: a quarter of its
+// source sampled every 3 units answers to each, and a candidate replacement (an arc of 96
+// chords, `range(0)` hundredths of a unit out) is measured against them, as rounding measures
+// a cubic moved past its allowance. Held (1, 2) and refused (3: 3 units out).
+void tolerance_band_holds(benchmark::State& state) {
+  const double r = 300.0, gap = 0.01 * double(state.range(0));
+  auto circle = [&](double radius, double a0, double a1, int n) {
+    std::vector<Vec2> out;
+    for (int k = 0; k <= n; ++k) {
+      const double a = a0 + (a1 - a0) * k / n;
+      out.push_back({radius * std::cos(a), radius * std::sin(a)});
+    }
+    return out;
+  };
+  const double tau = 2.0 * std::numbers::pi;
+  const std::vector<Vec2> source = circle(r, 0.0, tau, 628), faired = circle(r, 0.0, tau, 256);
+  std::vector<std::size_t> piece_of;
+  for (std::size_t k = 0; k < faired.size(); ++k) piece_of.push_back(std::min<std::size_t>(k / 32, 7));
+  const ToleranceBand band(PolylineGrid(faired, 8.0), piece_of, source, 2.4);
+  const std::vector<Vec2> replacement = circle(r + gap, 0.0, tau / 8.0, 96);
+  for (auto _ : state) benchmark::DoNotOptimize(band.holds(0, replacement));
+}
+BENCHMARK(tolerance_band_holds)->Arg(100)->Arg(200)->Arg(300)->ArgName("hundredths_out");
 
 }  // namespace
 }  // namespace gf
