@@ -6,9 +6,9 @@ namespace gf {
 
 namespace {
 
-// The source polyline along the indices `at` (sorted) and `pad` points either way: on a closed
-// source, the way round that leaves out the largest gap between them.
-std::vector<Vec2> stretch_around(std::span<const std::size_t> at, std::span<const Vec2> source, std::size_t pad) {
+// The source polyline along the indices `at` (sorted) and `pad` units of it either way: on a
+// closed source, the way round that leaves out the largest gap between them.
+std::vector<Vec2> stretch_around(std::span<const std::size_t> at, std::span<const Vec2> source, double pad) {
   const bool closed = source.size() > 2 && source.front() == source.back();
   const std::size_t n = closed ? source.size() - 1 : source.size();  // distinct points
   std::size_t first = at.front(), last = at.back();
@@ -17,16 +17,23 @@ std::vector<Vec2> stretch_around(std::span<const std::size_t> at, std::span<cons
     std::size_t widest = n - at.back() + at.front(), after = at.size() - 1;
     for (std::size_t k = 0; k + 1 < at.size(); ++k)
       if (at[k + 1] - at[k] > widest) widest = at[k + 1] - at[k], after = k;
-    first = at[(after + 1) % at.size()], last = at[after];
-    const std::size_t span = (last + n - first) % n + 1;
-    if (span + 2 * pad >= n) return {source.begin(), source.end()};
-    std::vector<Vec2> out;
-    for (std::size_t k = 0; k < span + 2 * pad; ++k) out.push_back(source[(first + n - pad + k) % n]);
-    return out;
+    first = at[(after + 1) % at.size()] % n, last = at[after] % n;
   }
-  first = first > pad ? first - pad : 0;
-  last = std::min(last + pad, n - 1);
-  return {source.begin() + static_cast<std::ptrdiff_t>(first), source.begin() + static_cast<std::ptrdiff_t>(last) + 1};
+  // Points from `first` to `last` (round the seam on a closed source), then `pad` more either way.
+  std::size_t count = closed ? (last + n - first) % n + 1 : last - first + 1;
+  const auto step_back = [&](std::size_t k) { return closed ? (k + n - 1) % n : k - 1; };
+  for (double back = 0.0; back < pad && count < n && (closed || first > 0); ++count) {
+    back += distance(source[first], source[step_back(first)]);
+    first = step_back(first);
+  }
+  for (double ahead = 0.0; ahead < pad && count < n && (closed || last + 1 < n); ++count) {
+    ahead += distance(source[last], source[(last + 1) % n]);
+    last = (last + 1) % n;
+  }
+  if (closed && count >= n) return {source.begin(), source.end()};
+  std::vector<Vec2> out;
+  for (std::size_t k = 0; k < count; ++k) out.push_back(source[(first + k) % n]);
+  return out;
 }
 
 }  // namespace
@@ -45,7 +52,7 @@ ToleranceBand::ToleranceBand(const PolylineGrid& faired, std::span<const std::si
     at[piece].push_back(k);
   }
   for (std::size_t p = 0; p < pieces; ++p)
-    if (!at[p].empty()) stretch_[p] = stretch_around(at[p], source, stretch_pad);
+    if (!at[p].empty()) stretch_[p] = stretch_around(at[p], source, stretch_pad * bound);
 }
 
 bool ToleranceBand::holds(std::size_t piece, std::span<const Vec2> replacement) const {

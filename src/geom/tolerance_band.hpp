@@ -31,11 +31,11 @@ class ToleranceBand {
   /// Whether `replacement` (a polyline through the new piece, dense enough that its chords
   /// stay within a small part of the bound of the curve) keeps piece `piece` within the band.
   /// Its own points are measured against the stretch of source around the points that answer
-  /// to the piece (padded by `stretch_pad` points either way): never nearer than the whole
+  /// to the piece and `stretch_pad` bounds of it either way: never nearer than the whole
   /// source, so a replacement that holds so holds.
   bool holds(std::size_t piece, std::span<const Vec2> replacement) const;
 
-  static constexpr std::size_t stretch_pad = 16;
+  static constexpr double stretch_pad = 16.0;
 
  private:
   std::vector<std::vector<Vec2>> answering_;  ///< per piece, the source points nearest it

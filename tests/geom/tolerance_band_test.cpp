@@ -53,6 +53,11 @@ TEST(ToleranceBand, ConcentricArcsHoldWhileTheirGapIsWithinTheBound) {
   EXPECT_FALSE(band.holds(0, arc(102.01, 0.0, quarter, 200)));
   EXPECT_TRUE(band.holds(1, arc(98.01, quarter, 2 * quarter, 200)));
   EXPECT_FALSE(band.holds(1, arc(97.99, quarter, 2 * quarter, 200)));
+  // The last quarter ends where the polyline closes on itself: its stretch of source runs
+  // across the seam.
+  EXPECT_TRUE(band.holds(3, arc(101.99, 3 * quarter, 4 * quarter, 200)));
+  EXPECT_FALSE(band.holds(3, arc(102.01, 3 * quarter, 4 * quarter, 200)));
+  EXPECT_TRUE(band.holds(0, arc(101.99, -0.1, quarter, 200)));  // reaching back across the seam
   // Within the band everywhere it reaches, but leaving the source points of its quarter's end
   // 5° of arc (8.7 units) from anything: the source's side of the distance refuses it.
   EXPECT_FALSE(band.holds(2, arc(100.0, 2 * quarter, 3 * quarter - 0.0873, 200)));
