@@ -65,7 +65,7 @@ void tolerance_band_holds(benchmark::State& state) {
   const std::vector<Vec2> source = circle(r, 0.0, tau, 628), faired = circle(r, 0.0, tau, 256);
   std::vector<std::size_t> piece_of;
   for (std::size_t k = 0; k < faired.size(); ++k) piece_of.push_back(std::min<std::size_t>(k / 32, 7));
-  const ToleranceBand band(PolylineGrid(faired, 8.0), piece_of, source, 2.4);
+  const ToleranceBand band(source, nearest_pieces(PolylineGrid(faired, 8.0), piece_of, source), 2.4);
   const std::vector<Vec2> replacement = circle(r + gap, 0.0, tau / 8.0, 96);
   for (auto _ : state) benchmark::DoNotOptimize(band.holds(0, replacement));
 }

@@ -417,7 +417,10 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
     Contour faired = to_contour(a.nodes, source.closed);
     const SampledContour sampled(faired);
     // Each segment's own share: what rounding may still spend there (geom/polyline_distance.hpp).
-    const std::vector<double> by_segment = distance_by_piece(sampled.grid, sampled.samples.segment_of, sampled_source.grid);
+    const std::vector<NearestPiece> answers =
+        nearest_pieces(sampled.grid, sampled.samples.segment_of, sampled_source.points());
+    const std::vector<double> by_segment =
+        distance_by_piece(sampled.grid, sampled.samples.segment_of, sampled_source.grid, answers);
     double d = by_segment.empty() ? distance_between(sampled, sampled_source)
                                   : *std::max_element(by_segment.begin(), by_segment.end());
     if (round && d <= settings.tolerance_units) {
@@ -440,10 +443,10 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
       // to a grid neighbour past the tolerance (FreeSerif's V, at 1.25): rounded again with
       // the lines' ends kept within their allowance, then both ways on half the allowance, up
       // to three times. First, cubics may move past their allowance where they stay within the
-      // band around the source (measured exactly: what the sampling leaves is the 5 % kept);
-      // where that strays, as without the band.
-      const ToleranceBand band(sampled.grid, sampled.samples.segment_of, sampled_source.points(),
-                               0.95 * settings.tolerance_units);
+      // band around the source (measured exactly: what the sampling leaves is the 5 % kept),
+      // twice (the lines' ends free, then kept within their allowance); where that strays, as
+      // without the band.
+      const ToleranceBand band(sampled_source.points(), answers, 0.95 * settings.tolerance_units);
       const HandleStepLimits first = limits;
       for (const ToleranceBand* within : {&band, static_cast<const ToleranceBand*>(nullptr)}) {
         limits = first;

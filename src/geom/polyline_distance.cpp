@@ -151,17 +151,31 @@ PolylineGrid::Nearest PolylineGrid::nearest(Vec2 p) const {
   return {std::sqrt(best), best_at};
 }
 
+std::vector<NearestPiece> nearest_pieces(const PolylineGrid& curve, std::span<const std::size_t> piece_of,
+                                         std::span<const Vec2> points) {
+  std::vector<NearestPiece> out;
+  if (curve.points().empty()) return out;
+  out.reserve(points.size());
+  for (const Vec2 p : points) {
+    const PolylineGrid::Nearest n = curve.nearest(p);
+    out.push_back({piece_of[n.segment], n.distance});
+  }
+  return out;
+}
+
 std::vector<double> distance_by_piece(const PolylineGrid& curve, std::span<const std::size_t> piece_of,
-                                      const PolylineGrid& other) {
+                                      const PolylineGrid& other, std::span<const NearestPiece> other_nearest) {
   std::vector<double> d(piece_of.empty() ? 0 : *std::max_element(piece_of.begin(), piece_of.end()) + 1, 0.0);
   if (curve.points().empty() || other.points().empty()) return d;
   for (std::size_t k = 0; k < curve.points().size(); ++k)
     d[piece_of[k]] = std::max(d[piece_of[k]], other.distance_to(curve.points()[k]));
-  for (const Vec2 p : other.points()) {
-    const PolylineGrid::Nearest n = curve.nearest(p);
-    d[piece_of[n.segment]] = std::max(d[piece_of[n.segment]], n.distance);
-  }
+  for (const NearestPiece& n : other_nearest) d[n.piece] = std::max(d[n.piece], n.distance);
   return d;
+}
+
+std::vector<double> distance_by_piece(const PolylineGrid& curve, std::span<const std::size_t> piece_of,
+                                      const PolylineGrid& other) {
+  return distance_by_piece(curve, piece_of, other, nearest_pieces(curve, piece_of, other.points()));
 }
 
 double directed_hausdorff(std::span<const Vec2> from, const PolylineGrid& to) {

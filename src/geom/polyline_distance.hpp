@@ -45,11 +45,25 @@ class PolylineGrid {
 /// max over `from` of the distance to the polyline in `to`.
 double directed_hausdorff(std::span<const Vec2> from, const PolylineGrid& to);
 
-/// The two-sided distance between a curve sampled piece by piece (`piece_of[k]`: the piece
-/// whose stretch of polyline point k starts) and another polyline, piece by piece: each
-/// piece's own points from the other, and the other's points whose nearest curve point lies on
-/// it. The largest is the Hausdorff distance; a piece moved by at most the bound less its own
-/// keeps the whole within the bound (triangle inequality through the unmoved pieces).
+/// For each of `points`, the piece of a curve sampled piece by piece (`piece_of[k]`: the piece
+/// whose stretch of polyline point k starts) that lies nearest it, and how far: the piece the
+/// point answers to.
+struct NearestPiece {
+  std::size_t piece = 0;
+  double distance = 0.0;
+};
+std::vector<NearestPiece> nearest_pieces(const PolylineGrid& curve, std::span<const std::size_t> piece_of,
+                                         std::span<const Vec2> points);
+
+/// The two-sided distance between a curve sampled piece by piece and another polyline, piece by
+/// piece: each piece's own points from the other, and the other's points that answer to it
+/// (`other_nearest`, nearest_pieces(curve, piece_of, other.points())). The largest is the
+/// Hausdorff distance; a piece moved by at most the bound less its own keeps the whole within
+/// the bound (triangle inequality through the unmoved pieces).
+std::vector<double> distance_by_piece(const PolylineGrid& curve, std::span<const std::size_t> piece_of,
+                                      const PolylineGrid& other, std::span<const NearestPiece> other_nearest);
+
+/// The same, the other's nearest pieces found here.
 std::vector<double> distance_by_piece(const PolylineGrid& curve, std::span<const std::size_t> piece_of,
                                       const PolylineGrid& other);
 

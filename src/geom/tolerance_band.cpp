@@ -38,18 +38,17 @@ std::vector<Vec2> stretch_around(std::span<const std::size_t> at, std::span<cons
 
 }  // namespace
 
-ToleranceBand::ToleranceBand(const PolylineGrid& faired, std::span<const std::size_t> piece_of,
-                             std::span<const Vec2> source, double bound)
+ToleranceBand::ToleranceBand(std::span<const Vec2> source, std::span<const NearestPiece> answers, double bound)
     : bound_(bound) {
-  if (piece_of.empty() || faired.points().empty() || source.empty()) return;
-  const std::size_t pieces = *std::max_element(piece_of.begin(), piece_of.end()) + 1;
+  if (source.empty() || answers.size() != source.size()) return;
+  std::size_t pieces = 0;
+  for (const NearestPiece& a : answers) pieces = std::max(pieces, a.piece + 1);
   answering_.resize(pieces);
   stretch_.resize(pieces);
   std::vector<std::vector<std::size_t>> at(pieces);
   for (std::size_t k = 0; k < source.size(); ++k) {
-    const std::size_t piece = piece_of[faired.nearest(source[k]).segment];
-    answering_[piece].push_back(source[k]);
-    at[piece].push_back(k);
+    answering_[answers[k].piece].push_back(source[k]);
+    at[answers[k].piece].push_back(k);
   }
   for (std::size_t p = 0; p < pieces; ++p)
     if (!at[p].empty()) stretch_[p] = stretch_around(at[p], source, stretch_pad * bound);

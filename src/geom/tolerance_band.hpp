@@ -20,11 +20,10 @@ namespace gf {
 /// (a piece moved by at most the bound less its own distance) only bounds from above.
 class ToleranceBand {
  public:
-  /// `faired`: the faired contour sampled, `piece_of[k]` the piece whose stretch of polyline
-  /// point k starts (as distance_by_piece takes them); `source`: the source polyline, in order
-  /// along its contour (closed where its last point is its first).
-  ToleranceBand(const PolylineGrid& faired, std::span<const std::size_t> piece_of, std::span<const Vec2> source,
-                double bound);
+  /// `source`: the source polyline, in order along its contour (closed where its last point is
+  /// its first); `answers[k]`: the faired piece source point k answers to (nearest_pieces of the
+  /// faired contour sampled, as distance_by_piece takes them).
+  ToleranceBand(std::span<const Vec2> source, std::span<const NearestPiece> answers, double bound);
 
   double bound() const { return bound_; }
 

@@ -45,7 +45,7 @@ Pieces circle_in_pieces(double r, int pieces, int per_piece) {
 TEST(ToleranceBand, ConcentricArcsHoldWhileTheirGapIsWithinTheBound) {
   const Pieces source = circle_in_pieces(100.0, 4, 400), faired = circle_in_pieces(100.0, 4, 100);
   const PolylineGrid faired_grid(faired.points, 8.0);
-  const ToleranceBand band(faired_grid, faired.piece_of, source.points, 2.0);
+  const ToleranceBand band(source.points, nearest_pieces(faired_grid, faired.piece_of, source.points), 2.0);
   EXPECT_EQ(band.bound(), 2.0);
   const double quarter = 0.5 * std::numbers::pi;
   // The source's chords lie 100 (1 − cos(π/1600)) ≈ 2e-4 inside the circle.
@@ -84,7 +84,7 @@ TEST(ToleranceBand, AReplacementThatHoldsKeepsTheWholeContourWithinTheBound) {
   faired.push_back(faired.front()), piece_of.push_back(piece_of.back());
   const PolylineGrid faired_grid(faired, 8.0);
   const double bound = 2.0;
-  const ToleranceBand band(faired_grid, piece_of, wobbly, bound);
+  const ToleranceBand band(wobbly, nearest_pieces(faired_grid, piece_of, wobbly), bound);
   int held = 0, refused = 0;
   for (int trial = 0; trial < 300; ++trial) {
     const std::size_t piece = trial % (piece_of.back() + 1);
