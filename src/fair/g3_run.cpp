@@ -6,7 +6,6 @@
 
 #include <Eigen/Dense>
 
-#include "fair/path_piece.hpp"
 #include "geom/damped_newton.hpp"
 
 namespace gf {
@@ -20,8 +19,8 @@ constexpr int max_iterations = 60;
 // The unknowns, scaled to O(1) by a typical segment length h: θ as is, κ·h, slide / h, L / h.
 class G3System {
  public:
-  G3System(std::span<const G3Node> nodes, std::span<const double> lengths, bool closed)
-      : nodes_(nodes.begin(), nodes.end()), closed_(closed), m_(lengths.size()) {
+  G3System(std::span<const G3Node> nodes, std::span<const double> lengths, bool closed, SlopeRule rule)
+      : nodes_(nodes.begin(), nodes.end()), closed_(closed), rule_(rule), m_(lengths.size()) {
     h_ = std::accumulate(lengths.begin(), lengths.end(), 0.0) / static_cast<double>(m_);
     const auto add = [&](double value, std::size_t node, int segment) {
       x0_.push_back(value);
@@ -72,14 +71,16 @@ class G3System {
   }
   double length(const Eigen::VectorXd& x, std::size_t i) const { return x[at(length_[i])] * h_; }
 
-  /// κ′ at node j: Fritsch–Butland over the neighbouring secants; the end secant at a corner.
+  /// κ′ at node j: the rule's mean of the neighbouring secants; the end secant at a corner.
   double slope(const Eigen::VectorXd& x, std::size_t j) const {
     const G3NodeKind kind = nodes_[j].kind;
     if (kind == G3NodeKind::line) return 0.0;
     if (kind == G3NodeKind::corner || kind == G3NodeKind::corner_held || kind == G3NodeKind::line_g2)
       return secant(x, j == 0 ? 0 : m_ - 1);
     const double a = secant(x, j == 0 ? m_ - 1 : j - 1), b = secant(x, j % m_);
-    return a * b > 0.0 ? 2.0 * a * b / (a + b) : 0.0;
+    if (!(a * b > 0.0)) return 0.0;
+    if (rule_ == SlopeRule::harmonic_mean) return 2.0 * a * b / (a + b);
+    return 4.0 * (a * b) * (a * b) / ((a + b) * (a * a + b * b));
   }
 
   CurvatureEnd end_data(const Eigen::VectorXd& x, std::size_t j) const {
@@ -137,6 +138,7 @@ class G3System {
 
   std::vector<G3Node> nodes_;
   bool closed_;
+  SlopeRule rule_;
   std::size_t m_;
   double h_ = 1.0;
   std::vector<double> x0_;
@@ -155,14 +157,18 @@ Eigen::VectorXd misses(const G3System& sys, const Eigen::VectorXd& x) {
 
 }  // namespace
 
-G3Result make_g3(std::span<const G3Node> nodes, std::span<const double> lengths, bool closed) {
+G3Result make_g3(const G3Problem& problem) {
+  return make_g3(problem.nodes, problem.lengths, problem.closed, problem.slope_rule);
+}
+
+G3Result make_g3(std::span<const G3Node> nodes, std::span<const double> lengths, bool closed, SlopeRule rule) {
   G3Result out;
   const std::size_t m = lengths.size();
   if (m == 0 || nodes.size() != (closed ? m : m + 1)) {
     out.reason = "the G3 solve needs one node per segment end";
     return out;
   }
-  const G3System sys(nodes, lengths, closed);
+  const G3System sys(nodes, lengths, closed, rule);
   // The Jacobian by forward differences, each column only on the segments its unknown moves
   // (so sparse: a few segments' rows per column).
   const auto jacobian = [&](const Eigen::VectorXd& at, const Eigen::VectorXd& f) {
@@ -197,8 +203,36 @@ G3Result make_g3(std::span<const G3Node> nodes, std::span<const double> lengths,
   return out;
 }
 
+// By length and curvature: a log-aesthetic segment leaving a line stays nearly flat, then turns;
+// cut at equal arc lengths, its first spiral's cubic κ turned five times too far, and the solve
+// stalled (dkg Bold's v).
+std::vector<double> cut_places(const PathPiece& piece, int n, CutPlacement placement) {
+  std::vector<double> out{0.0};
+  if (n > 1 && placement == CutPlacement::by_length) {
+    for (int c = 1; c < n; ++c) out.push_back(piece.length * c / n);
+  } else if (n > 1) {
+    constexpr int samples = 64;
+    const std::vector<LacPoint> q = piece.sample(samples);
+    std::vector<double> walked{0.0};  // Σ|Δκ| up to each sample
+    for (int k = 1; k <= samples; ++k) walked.push_back(walked.back() + std::abs(q[k].curvature - q[k - 1].curvature));
+    const auto measure = [&](int k) {
+      const double by_length = static_cast<double>(k) / samples;
+      return walked.back() > 0.0 ? 0.5 * (by_length + walked[k] / walked.back()) : by_length;
+    };
+    int k = 0;
+    for (int c = 1; c < n; ++c) {
+      const double target = static_cast<double>(c) / n;
+      while (k + 1 < samples && measure(k + 1) < target) ++k;
+      const double a = measure(k), b = measure(k + 1);
+      out.push_back(piece.length * (k + (b > a ? (target - a) / (b - a) : 0.0)) / samples);
+    }
+  }
+  out.push_back(piece.length);
+  return out;
+}
+
 std::optional<G3Problem> g3_problem(const std::vector<FairedChain>& chains, const SmoothRun& run,
-                                    std::span<const int> pieces) {
+                                    std::span<const int> pieces, CutPlacement placement) {
   G3Problem p;
   p.closed = run.closed;
   const auto end_kind = [](RunEndKind k) { return k == RunEndKind::line ? G3NodeKind::line : G3NodeKind::corner; };
@@ -235,6 +269,7 @@ std::optional<G3Problem> g3_problem(const std::vector<FairedChain>& chains, cons
   for (std::size_t i = 0; i < m; ++i) {
     const PathPiece& seg = segments[i];
     const int n = i < pieces.size() ? std::max(pieces[i], 1) : 1;
+    const std::vector<double> cuts = cut_places(seg, n, placement);
     LacPoint last = start_of(seg);
     for (int k = 0; k < n; ++k) {
       G3NodeKind kind = G3NodeKind::smooth;
@@ -246,8 +281,8 @@ std::optional<G3Problem> g3_problem(const std::vector<FairedChain>& chains, cons
         if (i > 0 || run.closed) kappa = 0.5 * (kappa + end_of(segments[(i + m - 1) % m]).curvature);
       }
       p.nodes.push_back({last.point, angle, kappa, kind, !run.closed && i == 0 && k == 0 ? room(run.start, last.point, true) : 0.0});
-      const LacPoint next = k + 1 == n ? end_of(seg) : seg.at(seg.length * (k + 1) / n);
-      p.lengths.push_back(seg.length / n);
+      const LacPoint next = k + 1 == n ? end_of(seg) : seg.at(cuts[k + 1]);
+      p.lengths.push_back(cuts[k + 1] - cuts[k]);
       p.run_piece.push_back(i);
       angle += turning_angle(last.tangent, next.tangent);
       last = next;

@@ -3,11 +3,11 @@
 // and curvature slopes (aesthetic/polynomial_spiral.hpp without bumps), and the junction
 // frames are solved again so that each spiral meets the next junction.
 //
-// κ′ at a junction is not an unknown: it is the Fritsch–Butland harmonic mean of the two
-// neighbouring secant slopes (κ_{j+1} − κ_j) / L_j, 0 where they differ in sign (a curvature
-// extremum). Both neighbours share it, so dκ/ds is continuous by construction, and every
-// piece's κ(s) stays monotone (the harmonic mean is at most twice the smaller secant, inside
-// the cubic Hermite's monotone region). Then the unknowns balance the end conditions, three
+// κ′ at a junction is not an unknown: it is a mean of the two neighbouring secant slopes
+// (κ_{j+1} − κ_j) / L_j, 0 where they differ in sign (a curvature extremum): the
+// Fritsch–Butland harmonic mean, or a smooth variant of it (SlopeRule). Both neighbours share
+// it, so dκ/ds is continuous by construction, and every piece's κ(s) stays monotone (either
+// mean is at most twice the smaller secant, inside the cubic Hermite's monotone region). Then the unknowns balance the end conditions, three
 // per segment (the far end's point and tangent):
 //
 //   junction         unknowns                      held
@@ -41,6 +41,7 @@
 
 #include "aesthetic/polynomial_spiral.hpp"
 #include "fair/contour_plan.hpp"
+#include "fair/path_piece.hpp"
 #include "fair/run_fairing.hpp"
 
 namespace gf {
@@ -64,11 +65,23 @@ struct G3Result {
   bool ok() const { return !spirals.empty(); }
 };
 
+/// How κ′ at an inner junction follows from the secants a and b either side (0 where they differ
+/// in sign, a curvature extremum). Both stay within the cubic Hermite's monotone region.
+enum class SlopeRule {
+  /// Fritsch–Butland: 2ab / (a + b), at most twice the smaller secant. Its derivative jumps
+  /// where a secant crosses zero, and Newton may stall on a run whose secants do.
+  harmonic_mean,
+  /// 4a²b² / ((a + b)(a² + b²)): the same where a = b, at most 1.11 times the smaller secant,
+  /// and rising from zero as a secant squared, so smooth where one crosses it.
+  smooth_mean,
+};
+
 /// `nodes` and the starting `lengths` come from the G2 chain. Open runs: nodes.size() ==
 /// lengths.size() + 1, the ends corner or line, the inner nodes smooth or inflection. Closed:
 /// one node per segment, none of them an end. Newton on all unknowns at once with a sparse
 /// finite-difference Jacobian and a backtracking line search.
-G3Result make_g3(std::span<const G3Node> nodes, std::span<const double> lengths, bool closed);
+G3Result make_g3(std::span<const G3Node> nodes, std::span<const double> lengths, bool closed,
+                 SlopeRule rule = SlopeRule::harmonic_mean);
 
 /// A run's G2 chains as one G3 problem: a node at every segment end (a guide stretch's pieces
 /// counted as segments, fair/path_piece.hpp), an inflection where two chains meet, the run's
@@ -79,14 +92,28 @@ struct G3Problem {
   std::vector<std::size_t> run_piece;         ///< per G3 segment, the run's segment or guide piece it came from
   std::vector<std::size_t> pieces_per_chain;  ///< the run's segments or guide pieces in each chain
   bool closed = false;
+  SlopeRule slope_rule = SlopeRule::harmonic_mean;
 };
 
+/// make_g3 on the problem's nodes, lengths and slope rule.
+G3Result make_g3(const G3Problem& problem);
+
+/// Where a piece cut into n is cut: at equal arc lengths, or at equal steps of arc length and of
+/// curvature walked together (so the cuts crowd where κ changes fast).
+enum class CutPlacement { by_length, by_length_and_curvature };
+
+/// Where `piece` is cut into n: n + 1 arc lengths from its start, 0 and its length included. By
+/// length and curvature, at equal steps of (s / L + w(s) / w(L)) / 2, w(s) the curvature walked
+/// up to s, Σ|Δκ| (64 samples, linear between them); where κ is constant, at equal lengths.
+std::vector<double> cut_places(const PathPiece& piece, int n, CutPlacement placement);
+
 /// `pieces[i]`: how many G3 segments the run's segment (or guide piece) i becomes (1 when not
-/// given), cut at equal arc lengths with its own point, tangent and κ there: more freedom where
-/// κ′ = 0 at an extremum would otherwise round the curvature's peak too wide. Nullopt when there
-/// is no chain at all.
+/// given), cut where `placement` says with its own point, tangent and κ there: more freedom
+/// where κ′ = 0 at an extremum would otherwise round the curvature's peak too wide, or where κ
+/// rises steeply. Nullopt when there is no chain at all.
 std::optional<G3Problem> g3_problem(const std::vector<FairedChain>& chains, const SmoothRun& run,
-                                    std::span<const int> pieces = {});
+                                    std::span<const int> pieces = {},
+                                    CutPlacement placement = CutPlacement::by_length);
 
 /// The solved spirals handed back to the chains they came from, in place of their
 /// log-aesthetic segments.

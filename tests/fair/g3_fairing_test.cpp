@@ -121,6 +121,14 @@ TEST(G3Fairing, ARunStallingThroughFourCutsComesOutG3AfterSix) {
   expect_g3("a", fair_g3("uni0061", settings, test::inter_variable), settings);
 }
 
+TEST(G3Fairing, ARunHeldToG2AtItsLinesWhenCutWhereCurvatureChangesComesOutG3CutEvenly) {
+  // Because We Learn's L, rounded after: its stroke stalls, and cut where κ changes fast as well
+  // as by length it solves only with its two line joins held to G2, by either mean of the
+  // secants. Cut at equal lengths through six rounds (the third attempt), it is G3 there too.
+  FairSettings settings;
+  expect_g3("L", fair_g3("L", settings, test::because_we_learn, Rounding::integers, FairProfile::handwriting), settings);
+}
+
 // The jumps of dκ/ds, relative to the larger side (the G3 issue's measure), at every join
 // between two cubics of `contours` whose tangents agree to 0.05°.
 std::vector<double> cubic_slope_jumps(const std::vector<Contour>& contours) {

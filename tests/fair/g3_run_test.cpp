@@ -204,6 +204,83 @@ TEST(G3Run, ACurveLeavingALineSlidesAlongItToMeetItG3) {
   EXPECT_NE(short_line.reason.find("stalled"), std::string::npos) << short_line.reason;
 }
 
+// κ′ at every inner junction of `g` is the smooth mean of its secants (g3_run.hpp's
+// SlopeRule): 4a²b² / ((a + b)(a² + b²)), 0 where they differ in sign, never past 1.11 times the
+// smaller one.
+void expect_smooth_mean_slopes(const G3Result& g, bool closed) {
+  const std::size_t m = g.spirals.size();
+  for (std::size_t j = closed ? 0 : 1; j < (closed ? m : m); ++j) {
+    const PolynomialSpiral &before = g.spirals[(j + m - 1) % m], &after = g.spirals[j];
+    const double a = (before.end().curvature - before.start().curvature) / before.length();
+    const double b = (after.end().curvature - after.start().curvature) / after.length();
+    const double slope = g.ends[j].curvature_slope;
+    if (a * b <= 0.0) {
+      EXPECT_EQ(slope, 0.0) << "junction " << j;
+      continue;
+    }
+    EXPECT_NEAR(slope, 4 * a * a * b * b / ((a + b) * (a * a + b * b)), 1e-12 * std::abs(a + b)) << "junction " << j;
+    EXPECT_LE(std::abs(slope), 1.11 * std::min(std::abs(a), std::abs(b))) << "junction " << j;
+  }
+}
+
+TEST(G3Run, TheSmoothMeanOfTheSecantsGivesG3Too) {
+  // The same runs with κ′ the smooth mean: every spiral meets the next junction in point,
+  // tangent, κ and κ′ and keeps κ monotone, κ′ = 0 at the ellipse's extrema, κ = 0 kept at the
+  // sine's inflection.
+  for (const int count : {8, 96}) {
+    const EllipseRun e = ellipse_run(count);
+    const G3Result g = make_g3(e.nodes, e.lengths, true, SlopeRule::smooth_mean);
+    expect_g3(g, true);
+    expect_smooth_mean_slopes(g, true);
+    for (int k = 0; k < count; k += count / 4) EXPECT_EQ(g.ends[static_cast<std::size_t>(k)].curvature_slope, 0.0);
+  }
+  const SineWave w = sine_wave();
+  const G3Result g = make_g3(w.nodes, w.lengths, false, SlopeRule::smooth_mean);
+  expect_g3(g, false);
+  expect_smooth_mean_slopes(g, false);
+  EXPECT_EQ(g.ends[2].curvature, 0.0);
+}
+
+// A piece of length 100 whose κ is 0 up to s = 90 and rises by 1 over the last 10: only
+// curvature is read (cut_places).
+PathPiece flat_then_steep() {
+  const auto at = [](double s) {
+    LacPoint p;
+    p.curvature = std::max(0.0, (s - 90.0) / 10.0);
+    return p;
+  };
+  const auto sample = [at](int n) {
+    std::vector<LacPoint> out;
+    for (int k = 0; k <= n; ++k) out.push_back(at(100.0 * k / n));
+    return out;
+  };
+  return {100.0, at, sample};
+}
+
+TEST(G3Run, CutsCrowdWhereCurvatureChangesFast) {
+  const PathPiece piece = flat_then_steep();
+  // By length: 0, 25, 50, 75, 100.
+  const std::vector<double> even = cut_places(piece, 4, CutPlacement::by_length);
+  ASSERT_EQ(even.size(), 5u);
+  for (int k = 0; k <= 4; ++k) EXPECT_DOUBLE_EQ(even[static_cast<std::size_t>(k)], 25.0 * k);
+  // By length and curvature, (s / 100 + w(s)) / 2 at 1/4, 1/2, 3/4 with w = max(0, (s − 90) / 10):
+  // s = 50, then s / 100 + s / 10 − 9 = 1 and 1.5, so s = 10 / 0.11 and 10.5 / 0.11.
+  const std::vector<double> crowded = cut_places(piece, 4, CutPlacement::by_length_and_curvature);
+  ASSERT_EQ(crowded.size(), 5u);
+  EXPECT_EQ(crowded.front(), 0.0);
+  EXPECT_EQ(crowded.back(), 100.0);
+  EXPECT_NEAR(crowded[1], 50.0, 1e-9);
+  // Linear between samples 1.5625 apart, across the kink at s = 90: within a tenth.
+  EXPECT_NEAR(crowded[2], 10.0 / 0.11, 0.1);
+  EXPECT_NEAR(crowded[3], 10.5 / 0.11, 0.1);
+  // One piece: its ends only; constant κ: equal lengths.
+  EXPECT_EQ(cut_places(piece, 1, CutPlacement::by_length_and_curvature), (std::vector<double>{0.0, 100.0}));
+  PathPiece arc = piece;
+  arc.sample = [](int n) { return std::vector<LacPoint>(static_cast<std::size_t>(n + 1), LacPoint{{0, 0}, {1, 0}, 0.01, std::nullopt}); };
+  const std::vector<double> on_arc = cut_places(arc, 4, CutPlacement::by_length_and_curvature);
+  for (int k = 0; k <= 4; ++k) EXPECT_NEAR(on_arc[static_cast<std::size_t>(k)], 25.0 * k, 1e-12);
+}
+
 TEST(G3Run, ARunWithoutChainsHasNoProblem) {
   const SmoothRun run;
   EXPECT_FALSE(g3_problem({}, run).has_value());
