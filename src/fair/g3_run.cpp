@@ -282,7 +282,8 @@ std::optional<G3Problem> g3_problem(const std::vector<FairedChain>& chains, cons
       }
       p.nodes.push_back({last.point, angle, kappa, kind, !run.closed && i == 0 && k == 0 ? room(run.start, last.point, true) : 0.0});
       const LacPoint next = k + 1 == n ? end_of(seg) : seg.at(cuts[k + 1]);
-      p.lengths.push_back(cuts[k + 1] - cuts[k]);
+      // At equal lengths exactly L / n each, as before cuts were placed otherwise.
+      p.lengths.push_back(placement == CutPlacement::by_length ? seg.length / n : cuts[k + 1] - cuts[k]);
       p.run_piece.push_back(i);
       angle += turning_angle(last.tangent, next.tangent);
       last = next;

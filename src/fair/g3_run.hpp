@@ -7,8 +7,8 @@
 // (κ_{j+1} − κ_j) / L_j, 0 where they differ in sign (a curvature extremum): the
 // Fritsch–Butland harmonic mean, or a smooth variant of it (SlopeRule). Both neighbours share
 // it, so dκ/ds is continuous by construction, and every piece's κ(s) stays monotone (either
-// mean is at most twice the smaller secant, inside the cubic Hermite's monotone region). Then the unknowns balance the end conditions, three
-// per segment (the far end's point and tangent):
+// mean is at most twice the smaller secant, inside the cubic Hermite's monotone region). Then
+// the unknowns balance the end conditions, three per segment (the far end's point and tangent):
 //
 //   junction         unknowns                      held
 //   smooth           tangent angle, κ              point

@@ -605,11 +605,27 @@ int sign_changes_along(const std::vector<PathPiece>& pieces, double zero) {
   return count;
 }
 
-int sign_changes_along(const std::vector<FairedChain>& chains, double zero) {
+std::vector<PathPiece> pieces_of(const std::vector<FairedChain>& chains) {
   std::vector<PathPiece> pieces;
   for (const FairedChain& c : chains)
     for (PathPiece& p : chain_pieces(c)) pieces.push_back(std::move(p));
-  return sign_changes_along(pieces, zero);
+  return pieces;
+}
+
+int sign_changes_along(const std::vector<FairedChain>& chains, double zero) {
+  return sign_changes_along(pieces_of(chains), zero);
+}
+
+// How much κ varies along `pieces` (a run's, in order): Σ|Δκ| over 64 samples a piece.
+double curvature_variation_along(const std::vector<PathPiece>& pieces) {
+  double variation = 0.0;
+  std::optional<double> last;
+  for (const PathPiece& piece : pieces)
+    for (const LacPoint& q : piece.sample(64)) {
+      if (last) variation += std::abs(q.curvature - *last);
+      last = q.curvature;
+    }
+  return variation;
 }
 
 // The nodes (smooth, or corner ends) the G3 solve carried across zero, away from the G2 curve's
@@ -672,19 +688,6 @@ int solve_holding_crossed_nodes(G3Problem& problem, G3Result& g3, int sign_chang
   return sign_changes;
 }
 
-// G3 over the whole run (fair/g3_run.hpp), kept only when it stays within the budget of the
-// source and, where part of it follows the smoothing guide, changes the sign of κ no more often
-// than the G2 run. Re-expressed, a guide's nearly straight pieces could swing across zero
-// (Because We Learn's i stem): such a run is cut everywhere and tried again, and after
-// `sign_cuts_before_holding` rounds each round also holds the nodes the solve carried across
-// zero at the G2 curve's κ, cutting on where that fails, `max_sign_rounds` rounds in all. A
-// chain's run holds them from the first round (dkg's f: a spiral turned back past its
-// y-minimum) and is not refused when that fails. A log-aesthetic segment whose spirals stray
-// is cut in two, up to `max_g3_rounds` times. Where only holding its line joins to G2 solves
-// the run, the segments at those joins are cut in two for the next round, which tries G3 there
-// again with the room a shorter spiral gives κ to rise from 0 with zero slope; the run held so
-// is kept should no round do better.
-// Else the run stays G2 and says why.
 // A G3 run not met in full: held at its line joins, or strayed a little.
 struct PartialG3 {
   G3Problem problem;
@@ -707,10 +710,25 @@ void adopt(FairedRun& result, const PartialG3& g3) {
   result.g2_line_joins = g3.g2_line_joins;
 }
 
+// G3 over the whole run (fair/g3_run.hpp), kept only when it stays within the budget of the
+// source and, where part of it follows the smoothing guide, changes the sign of κ no more often
+// than the G2 run. Re-expressed, a guide's nearly straight pieces could swing across zero
+// (Because We Learn's i stem): such a run is cut everywhere and tried again, and after
+// `sign_cuts_before_holding` rounds each round also holds the nodes the solve carried across
+// zero at the G2 curve's κ, cutting on where that fails, `max_sign_rounds` rounds in all. A
+// chain's run holds them from the first round (dkg's f: a spiral turned back past its
+// y-minimum) and is not refused when that fails. A log-aesthetic segment whose spirals stray
+// is cut in two, up to `max_g3_rounds` times. Where only holding its line joins to G2 solves
+// the run, the segments at those joins are cut in two for the next round, which tries G3 there
+// again with the room a shorter spiral gives κ to rise from 0 with zero slope. Where no round
+// makes it G3 in full, the attempt answers with the first run held so, else the G3 run that
+// strayed least within `g3_overrun` of the budget, and why.
 // `rule`: κ′ at the junctions; `after_stall`: where pieces are cut once a solve has stalled
-// (before, at equal lengths).
+// (before, at equal lengths); `most_variation`: where given, a G3 curve whose κ varies more
+// (curvature_variation_along) is no answer.
 G3Attempt try_g3(FairedRun& result, const RunReference& source, const SmoothRun& run, double budget,
-                 double zero_curvature, SlopeRule rule, CutPlacement after_stall) {
+                 double zero_curvature, SlopeRule rule, CutPlacement after_stall,
+                 std::optional<double> most_variation) {
   std::vector<int> pieces;
   std::string why;
   // Only a guide stretch is refused for it: a log-aesthetic chain's spirals keep their pieces'
@@ -753,6 +771,10 @@ G3Attempt try_g3(FairedRun& result, const RunReference& source, const SmoothRun&
       const std::vector<double> d = distance_by_spiral(g3, *problem, source, budget);
       const double worst = *std::max_element(d.begin(), d.end());
       if (worst <= budget && g2_line_joins == 0) {
+        const double variation = curvature_variation_along(curve_pieces(g3.spirals));
+        if (most_variation && variation > *most_variation)
+          return {false, std::nullopt, "the G3 curve's curvature varies " + std::to_string(variation) + ", past " +
+                                           std::to_string(*most_variation)};
         adopt(result, PartialG3{*problem, std::move(g3.spirals), worst, 0});
         return {true, std::nullopt, ""};
       }
@@ -787,17 +809,23 @@ G3Attempt try_g3(FairedRun& result, const RunReference& source, const SmoothRun&
 //   whose cubic κ cannot follow a steep rise);
 // - that with the smooth mean, whose Newton does not stall where a secant crosses zero (dkg's T).
 // A run the first meets is as it was; first with the second, of Because We Learn's guided runs
-// cut for their signs many came out otherwise, 8 curvature extrema more in all. a–z A–Z, the
-// smooth joins of the segments off G3: dkg Bold 193 → 7, dkg 18 → 0, Ruf 57 → 0.
+// cut for their signs many came out otherwise, 8 curvature extrema more in all. The second and
+// third are taken only where κ varies at most twice as much as along the G2 curve (a run of
+// Leckerli's F came out G3 varying 5.6 times as much, one of dkg's T 10.6 times; of the 521
+// runs of dkg the first attempt makes G3, 7 vary over 1.5 times as much, the most 5.7). a–z
+// A–Z, the smooth joins of the segments off G3: dkg Bold 193 → 23, dkg 18 → 10, Ruf 57 → 9,
+// Leckerli 17 → 0.
 // None in full: the first attempt's partial G3, else G2 and why.
 void reexpress_as_g3(FairedRun& result, const RunReference& source, const SmoothRun& run, double budget,
                      double zero_curvature) {
-  const auto attempt = [&](SlopeRule rule, CutPlacement after_stall) {
-    return try_g3(result, source, run, budget, zero_curvature, rule, after_stall);
+  const double most_variation = 2.0 * curvature_variation_along(pieces_of(result.chains));
+  const auto attempt = [&](SlopeRule rule, CutPlacement after_stall, std::optional<double> most) {
+    return try_g3(result, source, run, budget, zero_curvature, rule, after_stall, most);
   };
-  G3Attempt first = attempt(SlopeRule::harmonic_mean, CutPlacement::by_length);
-  if (first.met || attempt(SlopeRule::harmonic_mean, CutPlacement::by_length_and_curvature).met ||
-      attempt(SlopeRule::smooth_mean, CutPlacement::by_length_and_curvature).met)
+  G3Attempt first = attempt(SlopeRule::harmonic_mean, CutPlacement::by_length, std::nullopt);
+  if (first.met ||
+      attempt(SlopeRule::harmonic_mean, CutPlacement::by_length_and_curvature, most_variation).met ||
+      attempt(SlopeRule::smooth_mean, CutPlacement::by_length_and_curvature, most_variation).met)
     return;
   if (first.partial) adopt(result, *first.partial);
   else result.g3_shortfall = first.why;
