@@ -696,8 +696,8 @@ struct PartialG3 {
   int g2_line_joins;
 };
 
-// One rule's attempt: the run made G3 in full (its spirals adopted), or what is next best (not
-// adopted) and why not.
+// What one attempt gives: the run made G3 in full (its spirals adopted), or what is next best
+// (not adopted) and why not.
 struct G3Attempt {
   bool met = false;
   std::optional<PartialG3> partial;
@@ -808,8 +808,9 @@ G3Attempt try_g3(FairedRun& result, const RunReference& source, const SmoothRun&
 // - the same, but cut where κ changes fast too once a solve stalls (a stall is mostly a spiral
 //   whose cubic κ cannot follow a steep rise);
 // - that with the smooth mean, whose Newton does not stall where a secant crosses zero (dkg's T).
-// A run the first meets is as it was; first with the second, of Because We Learn's guided runs
-// cut for their signs many came out otherwise, 8 curvature extrema more in all. The second and
+// A run the first meets is as it was (with the second first, many of Because We Learn's guided
+// runs, cut for their signs and then stalled, came out otherwise: 8 curvature extrema more in
+// all). The second and
 // third are taken only where κ varies at most twice as much as along the G2 curve (a run of
 // Leckerli's F came out G3 varying 5.6 times as much, one of dkg's T 10.6 times; of the 521
 // runs of dkg the first attempt makes G3, 7 vary over 1.5 times as much, the most 5.7). a–z
@@ -818,13 +819,13 @@ G3Attempt try_g3(FairedRun& result, const RunReference& source, const SmoothRun&
 // None in full: the first attempt's partial G3, else G2 and why.
 void reexpress_as_g3(FairedRun& result, const RunReference& source, const SmoothRun& run, double budget,
                      double zero_curvature) {
-  const double most_variation = 2.0 * curvature_variation_along(pieces_of(result.chains));
   const auto attempt = [&](SlopeRule rule, CutPlacement after_stall, std::optional<double> most) {
     return try_g3(result, source, run, budget, zero_curvature, rule, after_stall, most);
   };
   G3Attempt first = attempt(SlopeRule::harmonic_mean, CutPlacement::by_length, std::nullopt);
-  if (first.met ||
-      attempt(SlopeRule::harmonic_mean, CutPlacement::by_length_and_curvature, most_variation).met ||
+  if (first.met) return;
+  const double most_variation = 2.0 * curvature_variation_along(pieces_of(result.chains));
+  if (attempt(SlopeRule::harmonic_mean, CutPlacement::by_length_and_curvature, most_variation).met ||
       attempt(SlopeRule::smooth_mean, CutPlacement::by_length_and_curvature, most_variation).met)
     return;
   if (first.partial) adopt(result, *first.partial);
