@@ -702,6 +702,7 @@ struct G3Attempt {
   bool met = false;
   std::optional<PartialG3> partial;
   std::string why;
+  bool stalled = false;  ///< whether a round's solve stalled (so cuts after it could differ)
 };
 
 void adopt(FairedRun& result, const PartialG3& g3) {
@@ -739,6 +740,7 @@ G3Attempt try_g3(FairedRun& result, const RunReference& source, const SmoothRun&
   std::optional<PartialG3> held;  // the first run solved with its line joins held to G2
   std::optional<PartialG3> strayed;  // the G3 run that strayed least, within g3_overrun of the budget
   CutPlacement placement = CutPlacement::by_length;
+  bool stalled = false;
   for (int round = 0; round < max_g3_rounds; ++round) {
     std::optional<G3Problem> problem = g3_problem(result.chains, run, pieces, placement);
     if (!problem) return {true, std::nullopt, ""};  // no chain: nothing to re-express
@@ -796,11 +798,12 @@ G3Attempt try_g3(FairedRun& result, const RunReference& source, const SmoothRun&
       why = g3.reason;
       split.assign(pieces.size(), true);
       placement = after_stall;
+      stalled = true;
     }
     for (std::size_t i = 0; i < pieces.size(); ++i)
       if (split[i]) pieces[i] *= 2;
   }
-  return {false, held ? std::move(held) : std::move(strayed), why};
+  return {false, held ? std::move(held) : std::move(strayed), why, stalled};
 }
 
 // The run made G3 in full by the first of three attempts that does it:
@@ -825,7 +828,9 @@ void reexpress_as_g3(FairedRun& result, const RunReference& source, const Smooth
   G3Attempt first = attempt(SlopeRule::harmonic_mean, CutPlacement::by_length, std::nullopt);
   if (first.met) return;
   const double most_variation = 2.0 * curvature_variation_along(pieces_of(result.chains));
-  if (attempt(SlopeRule::harmonic_mean, CutPlacement::by_length_and_curvature, most_variation).met ||
+  // Where no solve of the first stalled, the second would repeat it round for round.
+  if ((first.stalled &&
+       attempt(SlopeRule::harmonic_mean, CutPlacement::by_length_and_curvature, most_variation).met) ||
       attempt(SlopeRule::smooth_mean, CutPlacement::by_length_and_curvature, most_variation).met)
     return;
   if (first.partial) adopt(result, *first.partial);
