@@ -121,10 +121,11 @@ TEST(G3Fairing, ARunStallingThroughFourCutsComesOutG3AfterSix) {
   expect_g3("a", fair_g3("uni0061", settings, test::inter_variable), settings);
 }
 
-TEST(G3Fairing, ARunHeldToG2AtItsLinesWhenCutWhereCurvatureChangesComesOutG3CutEvenly) {
-  // Because We Learn's L, rounded after: its stroke stalls, and cut where κ changes fast as well
-  // as by length it solves only with its two line joins held to G2, by either mean of the
-  // secants. Cut at equal lengths through six rounds (the third attempt), it is G3 there too.
+TEST(G3Fairing, ARunG3AtItsLinesOnlyWhenCutEvenlyComesOutG3) {
+  // Because We Learn's L, rounded after: its solve stalls. Cut at equal lengths through six
+  // rounds (the first attempt, 352 spirals) it is G3 at its two line joins too; cut where κ
+  // changes fast as well as by length, by either mean of the secants, it solved only with those
+  // joins held to G2. So the attempt that cuts evenly comes first.
   FairSettings settings;
   expect_g3("L", fair_g3("L", settings, test::because_we_learn, Rounding::integers, FairProfile::handwriting), settings);
 }
