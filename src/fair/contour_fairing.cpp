@@ -449,9 +449,10 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
       // curvature extrema inside cubics for dκ/ds matched at nodes (Because We Learn a–z A–Z,
       // extrema 0.4985× of the source's without it, 0.5025× with it, over the fairing bar of
       // 0.5×; dkg's g2-jumps 0.76 % of the joins without it, 0.61 % with it, within 2 %).
-      const ToleranceBand band(sampled_source.points(), answers, 0.95 * settings.tolerance_units);
+      std::optional<ToleranceBand> band;
+      if (!(hand && g3)) band.emplace(sampled_source.points(), answers, 0.95 * settings.tolerance_units);
       std::vector<const ToleranceBand*> bands{nullptr};
-      if (!(hand && g3)) bands.insert(bands.begin(), &band);
+      if (band) bands.insert(bands.begin(), &*band);
       const HandleStepLimits first = limits;
       for (const ToleranceBand* within : bands) {
         limits = first;
