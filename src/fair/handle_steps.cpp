@@ -11,6 +11,7 @@
 
 #include "fair/cubic_change.hpp"
 #include "geom/curvature.hpp"
+#include "geom/join.hpp"
 
 namespace gf {
 
@@ -562,7 +563,7 @@ class NodeChange {
     return cost;
   }
 
-  // The jumps at the neighbour before, at node i and at the neighbour after (join_jump, with
+  // The jumps at the neighbour before, at node i (none at a corner) and at the neighbour after (join_jump, with
   // only the two cubics at i evaluated where the contour has room).
   std::array<double, 3> jumps_now() const {
     if (nodes_.size() < 4) return {join_jump(joins_, h_, flat_), join_jump(joins_, i_, flat_), join_jump(joins_, j_, flat_)};
@@ -573,7 +574,8 @@ class NodeChange {
       if (beyond) return jump(*beyond, near, flat_);
       return joins_.meets_line(k) ? jump(near, 0.0, flat_) : 0.0;
     };
-    return {at_end(h_, beyond_h_, ks_h), jump(ke_h, ks_i, flat_), at_end(j_, beyond_j_, ke_i)};
+    const double at_i = joins_.joins_cubics(i_) ? jump(ke_h, ks_i, flat_) : 0.0;  // a corner has none
+    return {at_end(h_, beyond_h_, ks_h), at_i, at_end(j_, beyond_j_, ke_i)};
   }
 
   const std::vector<OutlineNode>& nodes_;
@@ -789,6 +791,59 @@ std::vector<std::size_t> seat_line_joins(std::vector<OutlineNode>& nodes, const 
     if (!best) continue;
     steps[i] = best_step;
     seated.push_back(i);
+  }
+  return seated;
+}
+
+// How far a corner with both handles turns, radians; π where a handle lies on it (its
+// tangent then comes from farther points, which moving the handle does not touch).
+double corner_turn(const OutlineNode& node) {
+  const Vec2 in = node.point - *node.in_handle, out = *node.out_handle - node.point;
+  if (norm(in) == 0.0 || norm(out) == 0.0) return std::numbers::pi;
+  return turning_angle(in, out);
+}
+
+// A corner whose cubic meets a line at the far end keeps no grid direction: its handle may go
+// to any grid point, and cubic_choices offers the line's whole step nearest it, where κ = 0 at
+// the join. Where that moves the cubic too far (DejaVu Serif's R: the leg's corner 1.81 units
+// against an allowance of 1.71), the corner is tried at the grid points up to two units from
+// its own, its handle at the line's whole steps up to two either side, its other handle where
+// it is; it must still turn by the kink limit (or as little as it did). Returns the corners moved.
+std::vector<std::size_t> seat_line_joins_at_corners(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal,
+                                                    std::span<const std::optional<Vec2>> steps, const OutlineJoins& joins,
+                                                    std::span<const std::size_t> corners, CubicJudge& judge,
+                                                    double flat) {
+  const std::size_t n = nodes.size();
+  std::vector<std::size_t> seated;
+  if (n < 3) return seated;
+  for (const std::size_t i : corners) {
+    const std::size_t h = (i + n - 1) % n, j = (i + 1) % n;
+    if (nodes[i].smooth || !joins.interior(i) || !joins.is_cubic(h) || !joins.is_cubic(i)) continue;
+    // The join on the line: at the start of the cubic arriving at i, or at the end of the one leaving it.
+    const bool before = joins.meets_line(h) && join_jump(joins, h, flat) > target_jump;
+    const bool after = !before && joins.meets_line(j) && join_jump(joins, j, flat) > target_jump;
+    if (!before && !after) continue;
+    const std::size_t at = before ? h : j;
+    if (!steps[at]) continue;
+    const Vec2 join = nodes[at].point, line_far = nodes[before ? (h + n - 1) % n : (j + 1) % n].point;
+    const double least_turn = std::min(radians(JoinThresholds{}.kink_max_deg), std::abs(corner_turn(ideal[i])));
+    const NodeChange change(nodes, joins, judge, flat, i);
+    const OutlineNode kept = nodes[i];
+    double best_cost = change.cost();
+    std::optional<OutlineNode> best;
+    std::optional<Vec2>& handle = before ? nodes[i].in_handle : nodes[i].out_handle;
+    const double nearest = whole_steps(join, before ? *kept.in_handle : *kept.out_handle, *steps[at], 1.0);
+    for (const Vec2 p : node_places(kept.point, ideal[i].point, 2))
+      for (double m = nearest - 2.0; m <= nearest + 2.0; ++m) {
+        const Vec2 on_line = join + *steps[at] * m;
+        if (dot(on_line - join, line_far - join) >= 0.0) continue;  // on the cubic's side of the join
+        nodes[i].point = p;
+        handle = on_line;
+        if (std::abs(corner_turn(nodes[i])) < least_turn) continue;
+        if (const std::optional<double> c = change.cost_under(best_cost)) best_cost = *c, best = nodes[i];
+      }
+    nodes[i] = best ? *best : kept;
+    if (best) seated.push_back(i);
   }
   return seated;
 }
@@ -1024,11 +1079,18 @@ void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<Outl
   if (runs.empty()) return;
   std::vector<std::size_t> run_of(n, runs.size());  // the run each node inside one belongs to
   if (cycle) run_of[0] = 0;                          // a run that closes on itself: its seam too
-  for (std::size_t r = 0; r < runs.size(); ++r)
+  std::vector<std::size_t> run_starting_at(n, runs.size());
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    run_starting_at[runs[r].front()] = r;
     for (std::size_t j = (runs[r].back() + 1) % n; joins.joins_cubics(j) && j != runs[r].front(); j = (j + 1) % n) {
       runs[r].push_back(j);
       run_of[j] = r;
     }
+  }
+  // The corners between two cubics, where a run starts (seat_line_joins_at_corners).
+  std::vector<std::size_t> corners;
+  for (std::size_t i = 0; i < n; ++i)
+    if (!nodes[i].smooth && joins.interior(i) && joins.is_cubic(i) && joins.is_cubic((i + n - 1) % n)) corners.push_back(i);
 
   // A nudged node changes the curvature its neighbours' handles give (its handles are their
   // far handles), and the steps chosen are the centre of the next choice's reach: a run is
@@ -1061,6 +1123,9 @@ void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<Outl
       again[run_of[i]] = true;
     for (const std::size_t i : seat_line_joins(nodes, ideal, steps, joins, inside, judge, limits.flat_curvature))
       again[run_of[i]] = true;
+    for (const std::size_t i : seat_line_joins_at_corners(nodes, ideal, steps, joins, corners, judge, limits.flat_curvature))
+      for (const std::size_t r : {run_starting_at[i], run_of[(i + n - 1) % n], run_starting_at[(i + n - 1) % n]})
+        if (r < runs.size()) again[r] = true;
     for (std::size_t r = 0; r < runs.size(); ++r) again[r] = again[r] && still_jumps(runs[r]);
     if (std::none_of(again.begin(), again.end(), [](bool b) { return b; })) break;
   }

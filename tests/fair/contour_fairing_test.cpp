@@ -435,6 +435,17 @@ TEST(ContourFairing, RoundingMovesACubicAsFarAsTheSourceAllows) {
   EXPECT_EQ(inflections(f.result.glyph.outline, f.upm), 0);
 }
 
+TEST(ContourFairing, ACornersCurveSeatsOnItsLine) {
+  // DejaVu Serif's R again: the leg's other side runs from the corner under the bowl into a
+  // line of step (18, −37), 41 units. The corner's handle at the line's nearest whole step
+  // moved the cubic 1.81 units against an allowance of 1.71, so it stayed 0.07 units off the
+  // line: κ·UPM −0.059 where the curve meets it, over the check's 0.05. The corner is tried
+  // at the grid points around it too (two units over, the handle on the line), still a corner.
+  FairedGlyph f;
+  expect_faired(test::dejavu_serif, "R", FairProfile::text, &f);
+  EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm), 0);
+}
+
 TEST(ContourFairing, ACurveSeatsOnItsLineFromTwoUnitsOff) {
   // Lato's c: the lower terminal's cap (κ·UPM −48 at its top, a node at y = 223.98) meets a
   // line of step (3, −4), and its far handle lies on that line at whole steps only where the

@@ -329,7 +329,9 @@ def main():
         print(f"{'PASS' if ok else 'FAIL'}  {name:36s} {value:.4g}")
     if args.json:
         with open(args.json, "w") as f:
-            json.dump({"glyphs": rows, "bars": [{"bar": n, "value": v, "pass": ok} for n, v, ok in bars]}, f, indent=1)
+            # numpy's scalars (bool_, float64) are not JSON: plain Python values out.
+            json.dump({"glyphs": rows, "bars": [{"bar": n, "value": float(v), "pass": bool(ok)} for n, v, ok in bars]},
+                      f, indent=1, default=lambda x: x.item() if hasattr(x, "item") else str(x))
     return 1 if failed else 0
 
 
