@@ -13,6 +13,7 @@
 #include "fair/g3_cubics.hpp"
 #include "fair/grid_rounding.hpp"
 #include "fair/kink_fillet.hpp"
+#include "fair/rounding_retry.hpp"
 #include "fair/run_fairing.hpp"
 #include "fair/tight_turn.hpp"
 #include "geom/arc_length.hpp"
@@ -441,8 +442,8 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
       // the handles after it take other whole steps (DejaVu Sans's chi: 4.4 units from the
       // source at a tolerance of 2.56, and the contour was kept unfaired), or moves a corner
       // to a grid neighbour past the tolerance (FreeSerif's V, at 1.25): rounded again with
-      // the lines' ends kept within their allowance, then both ways on half the allowance, up
-      // to three times. First, cubics may move past their allowance where they stay within the
+      // the lines' ends kept within their allowance, then both ways on half the allowance
+      // about where it strayed (halve_allowances), up to three times. First, cubics may move past their allowance where they stay within the
       // band around the source (measured exactly: what the sampling leaves is the 5 % kept),
       // twice (the lines' ends free, then kept within their allowance); where that strays, as
       // without the band. Not on handwriting under G3: there the band let rounding trade
@@ -458,15 +459,17 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
         limits = first;
         limits.band = within;
         const int last_retry = within ? 1 : 2 * rounding_retries + 1;
+        std::vector<std::size_t> strayed;  // the cubics about where the last rounding strayed
         for (int retry = 0;; ++retry) {
           limits.any_grid_neighbour = retry % 2 == 0;
-          if (retry > 0 && limits.any_grid_neighbour) {
-            limits.allowance *= 0.5;
-            for (double& e : limits.allowance_by_cubic) e *= 0.5;
-          }
+          if (retry > 0 && limits.any_grid_neighbour) halve_allowances(limits, strayed);
           faired = to_contour(round_to_grid(a.nodes, source.closed, limits), source.closed);
-          d = distance_between(SampledContour(faired), sampled_source);
+          const SampledContour sampled_faired(faired);
+          d = distance_between(sampled_faired, sampled_source);
           if (d <= settings.tolerance_units || retry == last_retry) break;
+          const std::vector<double> by_segment =
+              distance_by_piece(sampled_faired.grid, sampled_faired.samples.segment_of, sampled_source.grid);
+          strayed = cubics_about_strays(by_segment, settings.tolerance_units, limits.allowance_by_cubic.size());
         }
         if (d <= settings.tolerance_units) break;
       }
