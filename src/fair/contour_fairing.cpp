@@ -39,7 +39,7 @@ constexpr int text_g3_polish_rounds = 2;
 // its curvature variation 0.922, 0.937, 0.952, 0.955, 0.935× of the source's (the bar 0.95×).
 constexpr double text_slope_jump_weight = 8.0, handwriting_slope_jump_weight = 5.0;
 constexpr double text_counted_jump_cost = 10.0 * text_slope_jump_weight;
-constexpr int rounding_retries = 3;  // on half the allowance each, when rounding strays (twice over: halve_allowances)
+constexpr int rounding_retries = 3;  // halvings where rounding strayed, then as many of every cubic's
 // Cubics shorter than this (units) are merged away before rounding (outline_nodes): 2 took
 // Because We Create's missing extrema 9 → 6, 3 to 12.
 constexpr double tiny_cubic_chord = 2.0;
@@ -444,15 +444,15 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
       // to a grid neighbour past the tolerance (FreeSerif's V, at 1.25): rounded again with
       // the lines' ends kept within their allowance, then both ways on half the allowance of
       // the cubics about where it strayed (halve_allowances), up to three times, then of every
-      // cubic, up to three times more. First, cubics may move
-      // past their allowance where they stay within the band around the source (measured
-      // exactly: what the sampling leaves is the 5 % kept), twice (the lines' ends free, then
-      // kept within their allowance); where that strays, as without the band (retried with the
-      // band as without it, EB Garamond a–z A–Z had g2-jumps 220 → 204, but its $ a 4-unit
-      // cubic folded into a zigzag). Not on handwriting under G3: there the band let rounding trade
-      // curvature extrema inside cubics for dκ/ds matched at nodes (Because We Learn a–z A–Z,
-      // extrema 0.4985× of the source's without it, 0.5025× with it, over the fairing bar of
-      // 0.5×; dkg's g2-jumps 0.76 % of the joins without it, 0.61 % with it, within 2 %).
+      // cubic, up to three times more. First, cubics may move past their allowance where they
+      // stay within the band around the source (measured exactly: what the sampling leaves is
+      // the 5 % kept), twice (the lines' ends free, then kept within their allowance); where
+      // that strays, as without the band (retried with the band as often, EB Garamond a–z A–Z
+      // had g2-jumps 220 → 204, but its $ a 4-unit cubic folded into a zigzag). Not on
+      // handwriting under G3: there the band let rounding trade curvature extrema inside
+      // cubics for dκ/ds matched at nodes (Because We Learn a–z A–Z, extrema 0.4985× of the
+      // source's without it, 0.5025× with it, over the fairing bar of 0.5×; dkg's g2-jumps
+      // 0.76 % of the joins without it, 0.61 % with it, within 2 %).
       std::optional<ToleranceBand> band;
       if (!(hand && g3)) band.emplace(sampled_source.points(), answers, 0.95 * settings.tolerance_units);
       std::vector<const ToleranceBand*> bands{nullptr};
