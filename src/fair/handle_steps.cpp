@@ -139,6 +139,33 @@ std::vector<Vec2> handles_meeting_line(const OutlineNode& node, std::optional<Ve
   return {line_end.point + line_dir * whole_steps(line_end.point, h, line_dir, 1.0)};
 }
 
+// How far node k turns, radians (absolute), with its in-handle or out-handle replaced where
+// given; a side with no handle (a line) runs from or to the neighbouring node; π at an open
+// outline's ends and where a side has no length (its tangent comes from farther points).
+double turn_at(const std::vector<OutlineNode>& nodes, bool closed, std::size_t k, std::optional<Vec2> in = {},
+               std::optional<Vec2> out = {}) {
+  const std::size_t n = nodes.size();
+  if (!closed && (k == 0 || k + 1 == n)) return std::numbers::pi;
+  const OutlineNode& node = nodes[k];
+  const Vec2 from = in ? *in : node.in_handle ? *node.in_handle : nodes[(k + n - 1) % n].point;
+  const Vec2 to = out ? *out : node.out_handle ? *node.out_handle : nodes[(k + 1) % n].point;
+  const Vec2 a = node.point - from, b = to - node.point;
+  if (norm(a) == 0.0 || norm(b) == 0.0) return std::numbers::pi;
+  return std::abs(turning_angle(a, b));
+}
+
+// Whether node k of the unrounded outline is a corner between a line and a cubic that turns by
+// a degree more than the kink limit: rounding must not turn it under the limit (cubic_choices).
+// One within that degree is left to the kink pass (fair/contour_fairing), which makes it smooth
+// where rounding straightens it (Lato's Y crotch, 3.2°: kept a corner, it left the arm's line a
+// step the curve above could not land on).
+bool corner_to_keep(const std::vector<OutlineNode>& ideal, bool closed, std::size_t k) {
+  const OutlineNode& node = ideal[k];
+  if (node.smooth || node.in_handle.has_value() == node.out_handle.has_value()) return false;
+  const double turn = turn_at(ideal, closed, k);
+  return turn >= radians(JoinThresholds{}.kink_max_deg + 1.0) && turn < std::numbers::pi;
+}
+
 // Which nodes of an outline join two cubics, meet a line, or start a cubic.
 struct OutlineJoins {
   const std::vector<OutlineNode>& nodes;
@@ -226,7 +253,8 @@ class CubicJudge {
              const OutlineJoins& joins, const HandleStepLimits& limits)
       : unrounded_(rounded.size()), allowed_(rounded.size(), 0.0), ideal_(rounded.size()), seen_(rounded.size()),
         inflection_handles_(limits.inflection_handles), node_turns_(limits.node_turns), slope_jump_weight_(limits.slope_jump_weight),
-        counted_jump_cost_(limits.counted_jump_cost), band_(limits.band) {
+        counted_jump_cost_(limits.counted_jump_cost), band_(limits.band), keeps_corner_(rounded.size(), false),
+        closed_(joins.closed) {
     for (std::size_t i = 0; i < rounded.size(); ++i) {
       if (!joins.is_cubic(i)) continue;
       unrounded_[i] = along_lines(outline_cubic(ideal, i), rounded, i, joins);
@@ -237,7 +265,13 @@ class CubicJudge {
     }
     for (std::size_t i = 0; i < rounded.size(); ++i)
       if (joins.is_cubic(i)) ideal_[i] = measure(i, unrounded_[i]);
+    for (std::size_t k = 0; k < rounded.size(); ++k) keeps_corner_[k] = corner_to_keep(ideal, closed_, k);
   }
+
+  bool closed() const { return closed_; }
+  /// Whether node k is a corner between a line and a cubic that rounding must leave turning by
+  /// the kink limit (corner_to_keep).
+  bool keeps_corner(std::size_t k) const { return keeps_corner_[k]; }
 
   double allowed(std::size_t i) const { return allowed_[i]; }
   /// HandleStepLimits::node_turns.
@@ -303,6 +337,8 @@ class CubicJudge {
   bool inflection_handles_, node_turns_;
   double slope_jump_weight_, counted_jump_cost_;
   const ToleranceBand* band_;
+  std::vector<bool> keeps_corner_;
+  bool closed_;
 };
 
 // One cubic of the outline and every choice of its two handles (state = out·ins + in).
@@ -360,6 +396,12 @@ CubicChoices cubic_choices(const std::vector<OutlineNode>& nodes, std::span<cons
         if (t.extrema.all > ideal.extrema.all) cost += wrong_way;
         // Nor carry one that sat within half a unit of its node farther off it.
         if (t.extrema.off_node > ideal.extrema.off_node) cost += wrong_way;
+        // Nor turn a corner at a line into a kink, or smooth: the kink pass then makes it smooth
+        // and fairs the contour again, and the grid may give that join no G2 (Lato's S: a 4.3°
+        // corner rounded straight, then κ·UPM 3.4 where its curve left the line).
+        const double kink = radians(JoinThresholds{}.kink_max_deg);
+        if (judge.keeps_corner(i) && turn_at(nodes, judge.closed(), i, {}, out) < kink) cost += wrong_way;
+        if (judge.keeps_corner(j) && turn_at(nodes, judge.closed(), j, in) < kink) cost += wrong_way;
         // Nor fold back on itself past its chord.
         if (t.overreach > ideal.overreach) cost += wrong_way * (1.0 + t.overreach);
         // Nor, short, loop or cusp within it.

@@ -460,6 +460,17 @@ TEST(ContourFairing, ACurveSeatsOnItsLineFromTwoUnitsOff) {
   }
 }
 
+TEST(ContourFairing, ACornerAtALineStaysACornerOnTheGrid) {
+  // Lato's S: its lower terminal leaves a line at a corner of 4.7°. A unit's move of the
+  // curve's handle put it on the line's direction, so the corner came out straight; made smooth
+  // and faired again, the curve could leave the line with κ·UPM 3.4 at best on the grid. A
+  // corner at a line now keeps the kink limit (3°) through rounding, and expect_faired checks
+  // every corner does.
+  FairedGlyph f;
+  expect_faired(test::lato, "S", FairProfile::text, &f);
+  EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm), 0);
+}
+
 // A smooth node a unit off a nearly straight stroke, its tangent a degree off the axis: rounded
 // along the axis, the cubic from the stroke has to come back to it and turns into an S (Inter's
 // b and p: one inflection the source lacks; its g: κ −31 per em against +0.25 there). The
