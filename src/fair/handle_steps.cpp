@@ -837,14 +837,6 @@ std::vector<std::size_t> seat_line_joins(std::vector<OutlineNode>& nodes, const 
   return seated;
 }
 
-// How far a corner with both handles turns, radians; π where a handle lies on it (its
-// tangent then comes from farther points, which moving the handle does not touch).
-double corner_turn(const OutlineNode& node) {
-  const Vec2 in = node.point - *node.in_handle, out = *node.out_handle - node.point;
-  if (norm(in) == 0.0 || norm(out) == 0.0) return std::numbers::pi;
-  return turning_angle(in, out);
-}
-
 // A corner whose cubic meets a line at the far end keeps no grid direction: its handle may go
 // to any grid point, and cubic_choices offers the line's whole step nearest it, where κ = 0 at
 // the join. Where that moves the cubic too far (DejaVu Serif's R: the leg's corner 1.81 units
@@ -872,7 +864,7 @@ std::vector<std::size_t> seat_line_joins_at_corners(std::vector<OutlineNode>& no
       continue;
     }
     const Vec2 join = nodes[at].point, line_far = nodes[before ? (h + n - 1) % n : (j + 1) % n].point;
-    const double least_turn = std::min(radians(JoinThresholds{}.kink_max_deg), std::abs(corner_turn(ideal[i])));
+    const double least_turn = std::min(radians(JoinThresholds{}.kink_max_deg), turn_at(ideal, joins.closed, i));
     const NodeChange change(nodes, joins, judge, flat, i);
     const OutlineNode kept = nodes[i];
     double best_cost = change.cost();
@@ -885,7 +877,7 @@ std::vector<std::size_t> seat_line_joins_at_corners(std::vector<OutlineNode>& no
         if (dot(on_line - join, line_far - join) >= 0.0) continue;  // on the cubic's side of the join
         nodes[i].point = p;
         handle = on_line;
-        if (std::abs(corner_turn(nodes[i])) < least_turn) continue;
+        if (turn_at(nodes, joins.closed, i) < least_turn) continue;
         if (const std::optional<double> c = change.cost_under(best_cost)) best_cost = *c, best = nodes[i];
       }
     nodes[i] = best ? *best : kept;
