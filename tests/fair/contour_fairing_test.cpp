@@ -464,8 +464,8 @@ TEST(ContourFairing, ACornerAtALineStaysACornerOnTheGrid) {
   // Lato's S: its lower terminal leaves a line at a corner of 4.7°. A unit's move of the
   // curve's handle put it on the line's direction, so the corner came out straight; made smooth
   // and faired again, the curve could leave the line with κ·UPM 3.4 at best on the grid. A
-  // corner at a line now keeps the kink limit (3°) through rounding, and expect_faired checks
-  // every corner does.
+  // corner at a line that turned 4° or more keeps the kink limit (3°) through rounding, and
+  // expect_faired checks that every corner does.
   FairedGlyph f;
   expect_faired(test::lato, "S", FairProfile::text, &f);
   EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm), 0);
