@@ -780,6 +780,19 @@ std::vector<std::size_t> seat_flat_nodes(std::vector<OutlineNode>& nodes, const 
   return seated;
 }
 
+// Which neighbour of node i is a line join still jumping past the target: the one before (the
+// cubic arriving at i starts on the line; that first) or the one after. None where neither is.
+struct JumpingLineJoin {
+  std::size_t at;  ///< the join's node
+  bool before;     ///< whether it is node i's neighbour before
+};
+std::optional<JumpingLineJoin> jumping_line_join(const OutlineJoins& joins, std::size_t i, double flat) {
+  const std::size_t n = joins.size(), h = (i + n - 1) % n, j = (i + 1) % n;
+  if (joins.meets_line(h) && join_jump(joins, h, flat) > target_jump) return JumpingLineJoin{h, true};
+  if (joins.meets_line(j) && join_jump(joins, j, flat) > target_jump) return JumpingLineJoin{j, false};
+  return std::nullopt;
+}
+
 // A curve leaving a line keeps κ = 0 at the join on the grid only where its far handle lies
 // exactly on the line, a whole number of the far node's steps from that node; along a diagonal
 // line the far node's own direction seldom crosses it at one (Comic Neue's K: a 22-unit cap
@@ -793,16 +806,14 @@ std::vector<std::size_t> seat_flat_nodes(std::vector<OutlineNode>& nodes, const 
 std::vector<std::size_t> seat_line_joins(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal,
                                          std::vector<std::optional<Vec2>>& steps, const OutlineJoins& joins,
                                          std::span<const std::size_t> candidates, CubicJudge& judge, double flat) {
-  const std::size_t n = nodes.size();
   std::vector<std::size_t> seated;
   for (const std::size_t i : candidates) {
     if (!joins.joins_cubics(i) || !steps[i]) continue;
-    const std::size_t h = (i + n - 1) % n, j = (i + 1) % n;
     // The join on the line: before i (its cubic arrives at i) or after it; sign is i's handle's.
-    const bool before = joins.meets_line(h) && join_jump(joins, h, flat) > target_jump;
-    const bool after = !before && joins.meets_line(j) && join_jump(joins, j, flat) > target_jump;
-    if (!before && !after) continue;
-    const OutlineNode& join = nodes[before ? h : j];
+    const std::optional<JumpingLineJoin> line_join = jumping_line_join(joins, i, flat);
+    if (!line_join) continue;
+    const bool before = line_join->before;
+    const OutlineNode& join = nodes[line_join->at];
     // The join's tangent, in the contour's direction (h → i → j).
     const Vec2 into = before ? *join.out_handle - join.point : join.point - *join.in_handle;
     const double sign = before ? -1.0 : 1.0;
@@ -842,7 +853,8 @@ std::vector<std::size_t> seat_line_joins(std::vector<OutlineNode>& nodes, const 
 // the join. Where that moves the cubic too far (DejaVu Serif's R: the leg's corner 1.81 units
 // against an allowance of 1.71), the corner is tried at the grid points up to two units from
 // its own, its handle at the line's whole steps up to two either side, its other handle where
-// it is; it must still turn by the kink limit (or as little as it did). Each corner is tried
+// it is; it must still turn by the kink limit (or as little as it did). `corners`: interior
+// corners between two cubics (choose_handle_steps lists them). Each corner is tried
 // once: a tried one leaves `corners` (again every pass, it cost Because We Learn's a–z A–Z 3 %
 // more time for nothing). Returns the corners moved.
 std::vector<std::size_t> seat_line_joins_at_corners(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal,
@@ -854,15 +866,14 @@ std::vector<std::size_t> seat_line_joins_at_corners(std::vector<OutlineNode>& no
   std::vector<std::size_t> untried;
   for (const std::size_t i : corners) {
     const std::size_t h = (i + n - 1) % n, j = (i + 1) % n;
-    if (nodes[i].smooth || !joins.interior(i) || !joins.is_cubic(h) || !joins.is_cubic(i)) continue;
     // The join on the line: at the start of the cubic arriving at i, or at the end of the one leaving it.
-    const bool before = joins.meets_line(h) && join_jump(joins, h, flat) > target_jump;
-    const bool after = !before && joins.meets_line(j) && join_jump(joins, j, flat) > target_jump;
-    const std::size_t at = before ? h : j;
-    if ((!before && !after) || !steps[at]) {
+    const std::optional<JumpingLineJoin> line_join = jumping_line_join(joins, i, flat);
+    if (!line_join || !steps[line_join->at]) {
       untried.push_back(i);
       continue;
     }
+    const bool before = line_join->before;
+    const std::size_t at = line_join->at;
     const Vec2 join = nodes[at].point, line_far = nodes[before ? (h + n - 1) % n : (j + 1) % n].point;
     const double least_turn = std::min(radians(JoinThresholds{}.kink_max_deg), turn_at(ideal, joins.closed, i));
     const NodeChange change(nodes, joins, judge, flat, i);
