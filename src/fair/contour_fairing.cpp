@@ -16,6 +16,7 @@
 #include "fair/rounding_retry.hpp"
 #include "fair/run_fairing.hpp"
 #include "fair/tight_turn.hpp"
+#include "fair/upright_lines.hpp"
 #include "geom/arc_length.hpp"
 #include "geom/curvature.hpp"
 #include "geom/polyline_distance.hpp"
@@ -555,10 +556,12 @@ void fillet_kinks(ContourFairing& out, const Contour& source, const FairSettings
   if (grid) take(fillet_kinks_at_moved_vertices(out.contour, 0.9 * t));
 }
 
-// The contour faired on `curve` (the source, or the same curve split at its tight `turns`):
-// planned, its runs faired, and corners that came out as kinks made smooth.
-ContourFairing fair_curve(const Contour& source, const Contour& curve, std::span<const TightTurn> turns,
-                          const FairSettings& settings) {
+// The contour faired on `curve` (the source, or the same curve split at its tight `turns`, its
+// nearly upright lines perhaps stood up): planned, its runs faired, and corners that came out
+// as kinks made smooth. Its distances are measured from `reference`: `curve` itself, or the
+// source where lines stood up.
+ContourFairing fair_curve(const Contour& source, const Contour& curve, const Contour& reference,
+                          std::span<const TightTurn> turns, const FairSettings& settings) {
   ContourFairing out;
   out.contour = source;
   const auto plan_with = [&](std::span<const std::size_t> smooth_nodes) {
@@ -579,7 +582,7 @@ ContourFairing fair_curve(const Contour& source, const Contour& curve, std::span
       out.pieces.push_back(line_piece(std::get<Line>(piece).start(), std::get<Line>(piece).end(), false));
     return out;
   }
-  const SampledContour sampled_source(curve);
+  const SampledContour sampled_source(reference);
   std::vector<std::size_t> kinked, smooth_nodes;
   FairedRuns cache;
   out = fair_planned(curve, plan, sampled_source, settings, cache, kinked);
@@ -597,6 +600,9 @@ ContourFairing fair_curve(const Contour& source, const Contour& curve, std::span
   if (!out.faired) out.contour = source;  // as it was, not split at its turns
   return out;
 }
+
+// An upright line's ends move by at most a quarter of the tolerance: the rest is the fairing's.
+constexpr double upright_move_share = 0.25;
 
 }  // namespace
 
@@ -620,16 +626,28 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& requested
     }
     settings.tolerance_units = std::min(settings.tolerance_units, 0.5 * thick);
   }
+  // On the grid, nearly upright lines a curve meets stand up before the fairing
+  // (fair/upright_lines.hpp), within a quarter of the tolerance; the fairing's distances are
+  // still measured from the source. (Taking the move off the tolerance instead changed the
+  // fairing of whole contours: Breip's I came out with a spike by its notch.)
+  UprightLines upright{source};
+  if (settings.rounding == Rounding::integers) {
+    UprightLimits limits;
+    limits.max_move_units = std::min(limits.max_move_units, upright_move_share * settings.tolerance_units);
+    upright = stand_lines_upright(source, limits);
+  }
+  const Contour& stood = upright.contour;
+  const bool moved = upright.lines > 0;
   // Handwriting's tight turns are corners (fair/tight_turn.hpp), unless the contour then fails.
   std::optional<TightTurns> turned;
   if (settings.profile == FairProfile::handwriting) {
     TightTurnLimits limits;
     limits.min_turn_deg = settings.corner_angle_deg, limits.deviation_units = settings.tolerance_units;
-    if (TightTurns t = find_tight_turns(source, limits); !t.turns.empty()) turned = std::move(t);
+    if (TightTurns t = find_tight_turns(stood, limits); !t.turns.empty()) turned = std::move(t);
   }
-  if (turned) out = fair_curve(source, turned->contour, turned->turns, settings);
+  if (turned) out = fair_curve(source, turned->contour, moved ? source : turned->contour, turned->turns, settings);
   if (!turned || !out.faired || !out.runs_as_drawn.empty()) {
-    ContourFairing plain = fair_curve(source, source, {}, settings);
+    ContourFairing plain = fair_curve(source, stood, moved ? source : stood, {}, settings);
     if (!out.faired || (plain.faired && plain.runs_as_drawn.size() < out.runs_as_drawn.size())) out = std::move(plain);
   }
   if (out.faired) fillet_kinks(out, source, settings);

@@ -435,6 +435,27 @@ TEST(ContourFairing, RoundingMovesACubicAsFarAsTheSourceAllows) {
   EXPECT_EQ(inflections(f.result.glyph.outline, f.upm), 0);
 }
 
+TEST(ContourFairing, ACapMeetsANearlyUprightStemWithoutAnS) {
+  // Comic Neue's i: its stem's lines lean 0.8°, and on the grid the nearest direction steps
+  // (1, 63), so rounding stood them upright, after the fairing had bent each cap to the slant.
+  // Each cap then left its line and swung 2.7 units aside to its faired extremum: an S, 4
+  // inflections in a convex contour. Stood up before the fairing, the caps meet upright lines.
+  const Contour source = test::comic_neue_i_stem();
+  FairOptions options;
+  options.profile = FairProfile::handwriting;
+  const FairSettings settings = resolve_settings(options, 1000.0);
+  const ContourFairing r = fair_contour(source, settings);
+  ASSERT_TRUE(r.faired) << r.reason;
+  EXPECT_EQ(inflections(source, 1000.0), 0);
+  EXPECT_EQ(inflections(r.contour, 1000.0), 0);
+  EXPECT_LE(brute_force_hausdorff(source, r.contour), settings.tolerance_units);
+  EXPECT_NEAR(r.deviation, brute_force_hausdorff(source, r.contour), 0.05);  // measured from the source
+  int upright = 0;
+  for (const Segment& s : r.contour.segments)
+    upright += is_line(s) && start_point(s).x == end_point(s).x && distance(start_point(s), end_point(s)) > 300.0;
+  EXPECT_EQ(upright, 2);
+}
+
 TEST(ContourFairing, ACornersCurveSeatsOnItsLine) {
   // DejaVu Serif's R again: the leg's other side runs from the corner under the bowl into a
   // line of step (18, −37), 41 units. The corner's handle at the line's nearest whole step

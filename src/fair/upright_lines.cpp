@@ -1,0 +1,113 @@
+#include "fair/upright_lines.hpp"
+
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <optional>
+
+#include "fair/contour_plan.hpp"
+#include "geom/curvature.hpp"
+
+namespace gf {
+
+namespace {
+
+constexpr double shortest_curve_share = 4.0;  // a neighbouring curve's chord, in moves
+constexpr double collinear_line_deg = 10.0;   // a neighbouring line this near the axis: a kink
+
+bool straight(const Segment& s) {
+  const Cubic* c = std::get_if<Cubic>(&s);
+  return is_line(s) || (c && is_straight(*c));
+}
+
+// Segment `s` with its end (or start) node moved by `v`: a line (or a straight cubic) just its
+// end; a curve takes its handle along, turned onto `along` (unit, the direction of travel)
+// where the curve meets the line tangentially, so the join stays tangential (Breip's I: a curve
+// 2.4° from its line, which stood up, was 3.5° off it, a corner), else kept parallel (a
+// corner's tangent kept).
+Segment moved_end(const Segment& s, SegmentEnd end, Vec2 v, std::optional<Vec2> along) {
+  const bool at_start = end == SegmentEnd::start;
+  if (straight(s)) {
+    const Vec2 a = start_point(s), b = end_point(s);
+    return Line{at_start ? a + v : a, at_start ? b : b + v};
+  }
+  Cubic c = std::get<Cubic>(s);
+  const int node = at_start ? 0 : 3, handle = at_start ? 1 : 2;
+  const double reach = distance(c.p[node], c.p[handle]);
+  c.p[node] = c.p[node] + v;
+  c.p[handle] = along && reach > 0.0 ? c.p[node] + (at_start ? reach : -reach) * *along : c.p[handle] + v;
+  return c;
+}
+
+}  // namespace
+
+UprightLines stand_lines_upright(const Contour& source, const UprightLimits& limits) {
+  UprightLines out{source, 0.0, 0};
+  const Contour contour = with_cubics(source);
+  Contour result = contour;
+  const std::size_t n = contour.segments.size();
+  std::vector<bool> node_moved(contour.node_count(), false);
+  const double kink = radians(kink_limit_deg), max_angle = radians(limits.max_angle_deg);
+  const auto node_after = [&](std::size_t i) { return contour.closed ? (i + 1) % n : i + 1; };
+
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!is_line(contour.segments[i])) continue;
+    const std::size_t a_node = i, b_node = node_after(i);
+    const Vec2 a = contour.node_point(a_node), b = contour.node_point(b_node);
+    const Vec2 d = b - a;
+    const bool vertical = std::abs(d.y) >= std::abs(d.x);
+    const double across = vertical ? d.x : d.y, along = vertical ? d.y : d.x;
+    const double move = 0.5 * std::abs(across);
+    if (move < 1e-6 || move > limits.max_move_units || std::atan2(std::abs(across), std::abs(along)) > max_angle) continue;
+    if (node_moved[a_node] || node_moved[b_node]) continue;
+
+    const Segment* before = (contour.closed || i > 0) ? &contour.segments[(i + n - 1) % n] : nullptr;
+    const Segment* after = (contour.closed || i + 1 < n) ? &contour.segments[(i + 1) % n] : nullptr;
+    const Vec2 axis = vertical ? Vec2{0.0, along > 0.0 ? 1.0 : -1.0} : Vec2{along > 0.0 ? 1.0 : -1.0, 0.0};
+    // A neighbour the move would spoil, and whether a curve meets the line tangentially there.
+    bool spoiled = false;
+    const auto tangential_at = [&](const Segment* s, SegmentEnd its_end, std::size_t node) {
+      if (!s) return false;
+      const std::optional<Vec2> t = end_tangent(*s, its_end);
+      if (!t) return false;
+      if (straight(*s)) {
+        const double off_axis = std::abs(turning_angle(axis, *t));
+        spoiled = spoiled || std::min(off_axis, std::numbers::pi - off_axis) < radians(collinear_line_deg);
+        return false;
+      }
+      spoiled = spoiled || distance(start_point(*s), end_point(*s)) < shortest_curve_share * move;
+      return contour.nodes[node].smooth.value_or(true) && std::abs(turning_angle(*t, d)) < kink;
+    };
+    const bool tangent_before = tangential_at(before, SegmentEnd::end, a_node);
+    const bool tangent_after = tangential_at(after, SegmentEnd::start, b_node);
+    if (spoiled || !(tangent_before || tangent_after)) continue;
+
+    const Vec2 mid = 0.5 * (a + b);
+    const Vec2 a_to = vertical ? Vec2{mid.x, a.y} : Vec2{a.x, mid.y};
+    const Vec2 b_to = vertical ? Vec2{mid.x, b.y} : Vec2{b.x, mid.y};
+    result.segments[i] = Line{a_to, b_to};
+    if (before) {
+      Segment& s = result.segments[(i + n - 1) % n];
+      s = moved_end(s, SegmentEnd::end, a_to - a, tangent_before ? std::optional(axis) : std::nullopt);
+    }
+    if (after) {
+      Segment& s = result.segments[(i + 1) % n];
+      s = moved_end(s, SegmentEnd::start, b_to - b, tangent_after ? std::optional(axis) : std::nullopt);
+    }
+    node_moved[a_node] = node_moved[b_node] = true;
+    ++out.lines;
+  }
+  if (out.lines == 0) return out;
+  // A Bézier curve moves by at most the most any of its control points does.
+  for (std::size_t i = 0; i < n; ++i) {
+    std::vector<Vec2> was, now;
+    for_each_point(contour.segments[i], [&](Vec2 q) { was.push_back(q); });
+    for_each_point(result.segments[i], [&](Vec2 q) { now.push_back(q); });
+    if (was.size() != now.size()) was = {was.front(), was.back()};  // a straight cubic made a line
+    for (std::size_t k = 0; k < was.size(); ++k) out.moved = std::max(out.moved, distance(was[k], now[k]));
+  }
+  out.contour = std::move(result);
+  return out;
+}
+
+}  // namespace gf

@@ -1,0 +1,88 @@
+// Nearly upright lines a curve meets tangentially stand on the axis before the fairing: the
+// line turned about its middle, each end moved across the axis only, a curve's handle moved
+// with its node (its tangent kept); steep slants, corners and kinks between lines are left.
+#include "fair/upright_lines.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "geom/curvature.hpp"
+#include "point_set_distance.hpp"
+#include "test_shapes.hpp"
+
+namespace gf {
+namespace {
+
+std::vector<Vec2> dense(const Contour& c) {
+  std::vector<Vec2> out;
+  for (const Segment& s : c.segments)
+    for (int k = 0; k <= 200; ++k) out.push_back(point_at(s, k / 200.0));
+  return out;
+}
+
+TEST(UprightLines, AStemOffTheVerticalStandsUpright) {
+  const Contour source = test::comic_neue_i_stem();
+  const UprightLines r = stand_lines_upright(source, UprightLimits{});
+  ASSERT_EQ(r.lines, 2);
+  EXPECT_DOUBLE_EQ(r.moved, 3.0);  // half of each line's 6 units across
+  for (const std::size_t i : {1u, 4u}) {
+    const Line& line = std::get<Line>(r.contour.segments[i]);
+    const Line& was = std::get<Line>(source.segments[i]);
+    EXPECT_DOUBLE_EQ(line.start().x, line.end().x);
+    EXPECT_DOUBLE_EQ(line.start().x, 0.5 * (was.start().x + was.end().x));
+    EXPECT_DOUBLE_EQ(line.start().y, was.start().y);  // the ends keep their heights
+    EXPECT_DOUBLE_EQ(line.end().y, was.end().y);
+  }
+  // The curves keep their tangents where they meet the lines, and their far ends.
+  for (std::size_t i = 0; i < source.segments.size(); ++i) {
+    for (const SegmentEnd end : {SegmentEnd::start, SegmentEnd::end}) {
+      const Vec2 a = *end_tangent(source.segments[i], end), b = *end_tangent(r.contour.segments[i], end);
+      if (!is_line(source.segments[i])) EXPECT_NEAR(turning_angle(a, b), 0.0, 1e-12) << i;
+    }
+  }
+  EXPECT_EQ(start_point(r.contour.segments[0]), start_point(source.segments[0]));
+  EXPECT_EQ(end_point(r.contour.segments[2]), end_point(source.segments[2]));
+  // Nothing moved further than it said.
+  EXPECT_LE(test::polyline_hausdorff(dense(source), dense(r.contour)), r.moved + 1e-9);
+}
+
+TEST(UprightLines, ALineMovingTooFarOrTooSteepKeepsItsSlant) {
+  const Contour source = test::comic_neue_i_stem();
+  UprightLimits tight;
+  tight.max_move_units = 2.9;
+  EXPECT_EQ(stand_lines_upright(source, tight).lines, 0);
+  EXPECT_EQ(stand_lines_upright(source, tight).contour, source);
+  UprightLimits steep;
+  steep.max_angle_deg = 0.7;  // the stem leans 0.79°
+  EXPECT_EQ(stand_lines_upright(source, steep).lines, 0);
+}
+
+TEST(UprightLines, ALineAtCornersOrBesideALineOnItsAxisKeepsItsSlant) {
+  // A slanted stem on a baseline, reaching a curve at a 40° corner: no tangential curve.
+  Contour corner;
+  corner.segments = {Line{{{0, 0}, {60, 0}}}, Line{{{60, 0}, {62, 300}}},
+                     Cubic{{{62, 300}, {40, 330}, {10, 330}, {0, 300}}}, Line{{{0, 300}, {0, 0}}}};
+  corner.nodes.assign(4, NodeFlags{});
+  EXPECT_EQ(stand_lines_upright(corner, UprightLimits{}).lines, 0);
+  // The same stem meeting the curve tangentially stands upright; the baseline stays level.
+  Contour tangent = corner;
+  tangent.segments[2] = Cubic{{{62, 300}, {62.2, 330}, {10, 330}, {0, 300}}};
+  const UprightLines stood = stand_lines_upright(tangent, UprightLimits{});
+  ASSERT_EQ(stood.lines, 1);
+  EXPECT_EQ(std::get<Line>(stood.contour.segments[0]).end(), (Vec2{61, 0}));
+  EXPECT_EQ(std::get<Line>(stood.contour.segments[1]).end(), (Vec2{61, 300}));
+  // A flag saying corner is a corner, whatever the angle.
+  Contour flagged = tangent;
+  flagged.nodes[2].smooth = false;
+  EXPECT_EQ(stand_lines_upright(flagged, UprightLimits{}).lines, 0);
+  // Below it a line 1.6° further round: a kink between two lines, the fillet pass's to mend.
+  Contour kinked;
+  kinked.segments = {Line{{{0, -290}, {50, -290}}}, Line{{{50, -290}, {60, 0}}}, tangent.segments[1],
+                     tangent.segments[2], Line{{{0, 300}, {0, -290}}}};
+  kinked.nodes.assign(5, NodeFlags{});
+  EXPECT_EQ(stand_lines_upright(kinked, UprightLimits{}).lines, 0);
+}
+
+}  // namespace
+}  // namespace gf
