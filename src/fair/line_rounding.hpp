@@ -5,7 +5,8 @@
 // be at least that long. So the ends of each run of lines meeting at corners are chosen
 // together (Viterbi over the run): each end at its nearest grid point or a neighbour, or any
 // grid point within what the tolerance leaves there (up to 3 units: a line a degree off the
-// vertical may stand upright), the line turning no more than a node may; and where
+// vertical may stand upright; fair/upright_lines stands most such lines up before the fairing),
+// the line turning no more than a node may; and where
 // a curve's handle would then grow or shrink by more than a quarter, the curve's end may also
 // slide along its line (a curve leaves a G2 line join straight, κ = 0, so starting it a few
 // units earlier or later along the line, its handle's tip kept, barely moves it) to where the

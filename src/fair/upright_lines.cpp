@@ -39,6 +39,18 @@ Segment moved_end(const Segment& s, SegmentEnd end, Vec2 v, std::optional<Vec2> 
   return c;
 }
 
+// How far the farthest control point of `was` moved in `now` (a Bézier curve moves by at most
+// that); a straight cubic made a line compares its ends.
+double largest_move(const Segment& was, const Segment& now) {
+  std::vector<Vec2> a, b;
+  for_each_point(was, [&](Vec2 q) { a.push_back(q); });
+  for_each_point(now, [&](Vec2 q) { b.push_back(q); });
+  if (a.size() != b.size()) a = {a.front(), a.back()};
+  double out = 0.0;
+  for (std::size_t k = 0; k < a.size(); ++k) out = std::max(out, distance(a[k], b[k]));
+  return out;
+}
+
 }  // namespace
 
 UprightLines stand_lines_upright(const Contour& source, const UprightLimits& limits) {
@@ -85,27 +97,28 @@ UprightLines stand_lines_upright(const Contour& source, const UprightLimits& lim
     const Vec2 mid = 0.5 * (a + b);
     const Vec2 a_to = vertical ? Vec2{mid.x, a.y} : Vec2{a.x, mid.y};
     const Vec2 b_to = vertical ? Vec2{mid.x, b.y} : Vec2{b.x, mid.y};
-    result.segments[i] = Line{a_to, b_to};
-    if (before) {
-      Segment& s = result.segments[(i + n - 1) % n];
-      s = moved_end(s, SegmentEnd::end, a_to - a, tangent_before ? std::optional(axis) : std::nullopt);
-    }
-    if (after) {
-      Segment& s = result.segments[(i + 1) % n];
-      s = moved_end(s, SegmentEnd::start, b_to - b, tangent_after ? std::optional(axis) : std::nullopt);
-    }
+    // On what earlier lines left (a curve between two stood lines moves at both ends).
+    Contour trial = result;
+    const std::size_t i_before = (i + n - 1) % n, i_after = (i + 1) % n;
+    if (before)
+      trial.segments[i_before] = moved_end(trial.segments[i_before], SegmentEnd::end, a_to - a,
+                                           tangent_before ? std::optional(axis) : std::nullopt);
+    if (after)
+      trial.segments[i_after] = moved_end(trial.segments[i_after], SegmentEnd::start, b_to - b,
+                                          tangent_after ? std::optional(axis) : std::nullopt);
+    trial.segments[i] = Line{a_to, b_to};
+    // A long handle turned onto the axis moves far (DejaVu Sans's ☏: a quadratic's 317-unit
+    // handle 3° off the level, 17 units): no control point may move past the limit.
+    double moved = move;
+    for (const std::size_t k : {i_before, i_after})
+      moved = std::max(moved, largest_move(contour.segments[k], trial.segments[k]));
+    if (moved > limits.max_move_units) continue;
+    result = std::move(trial);
     node_moved[a_node] = node_moved[b_node] = true;
+    out.moved = std::max(out.moved, moved);
     ++out.lines;
   }
   if (out.lines == 0) return out;
-  // A Bézier curve moves by at most the most any of its control points does.
-  for (std::size_t i = 0; i < n; ++i) {
-    std::vector<Vec2> was, now;
-    for_each_point(contour.segments[i], [&](Vec2 q) { was.push_back(q); });
-    for_each_point(result.segments[i], [&](Vec2 q) { now.push_back(q); });
-    if (was.size() != now.size()) was = {was.front(), was.back()};  // a straight cubic made a line
-    for (std::size_t k = 0; k < was.size(); ++k) out.moved = std::max(out.moved, distance(was[k], now[k]));
-  }
   out.contour = std::move(result);
   return out;
 }

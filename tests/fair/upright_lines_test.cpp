@@ -1,6 +1,7 @@
 // Nearly upright lines a curve meets tangentially stand on the axis before the fairing: the
 // line turned about its middle, each end moved across the axis only, a curve's handle moved
-// with its node (its tangent kept); steep slants, corners and kinks between lines are left.
+// with its node and onto the axis; steep slants, corners, kinks between lines and handles that
+// would move too far are left.
 #include "fair/upright_lines.hpp"
 
 #include <gtest/gtest.h>
@@ -72,6 +73,11 @@ TEST(UprightLines, ALineAtCornersOrBesideALineOnItsAxisKeepsItsSlant) {
   ASSERT_EQ(stood.lines, 1);
   EXPECT_EQ(std::get<Line>(stood.contour.segments[0]).end(), (Vec2{61, 0}));
   EXPECT_EQ(std::get<Line>(stood.contour.segments[1]).end(), (Vec2{61, 300}));
+  // A handle that turning onto the axis would move past the limit: 600 units along the
+  // stem's 0.38° lean, 4 units across the vertical.
+  Contour long_handle = tangent;
+  long_handle.segments[2] = Cubic{{{62, 300}, {66, 900}, {10, 330}, {0, 300}}};
+  EXPECT_EQ(stand_lines_upright(long_handle, UprightLimits{}).lines, 0);
   // A flag saying corner is a corner, whatever the angle.
   Contour flagged = tangent;
   flagged.nodes[2].smooth = false;
