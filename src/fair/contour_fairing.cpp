@@ -637,7 +637,7 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& requested
     upright = stand_lines_upright(source, limits);
   }
   const Contour& stood = upright.contour;
-  const bool moved = upright.lines > 0;
+  const bool any_stood = upright.lines > 0;
   // Handwriting's tight turns are corners (fair/tight_turn.hpp), unless the contour then fails.
   std::optional<TightTurns> turned;
   if (settings.profile == FairProfile::handwriting) {
@@ -645,9 +645,9 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& requested
     limits.min_turn_deg = settings.corner_angle_deg, limits.deviation_units = settings.tolerance_units;
     if (TightTurns t = find_tight_turns(stood, limits); !t.turns.empty()) turned = std::move(t);
   }
-  if (turned) out = fair_curve(source, turned->contour, moved ? source : turned->contour, turned->turns, settings);
+  if (turned) out = fair_curve(source, turned->contour, any_stood ? source : turned->contour, turned->turns, settings);
   if (!turned || !out.faired || !out.runs_as_drawn.empty()) {
-    ContourFairing plain = fair_curve(source, stood, moved ? source : stood, {}, settings);
+    ContourFairing plain = fair_curve(source, stood, any_stood ? source : stood, {}, settings);
     if (!out.faired || (plain.faired && plain.runs_as_drawn.size() < out.runs_as_drawn.size())) out = std::move(plain);
   }
   if (out.faired) fillet_kinks(out, source, settings);

@@ -1,9 +1,10 @@
 #include "fair/upright_lines.hpp"
 
-#include <array>
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <vector>
 
 #include "fair/contour_plan.hpp"
 #include "geom/curvature.hpp"

@@ -14,7 +14,7 @@ namespace gf {
 
 struct UprightLimits {
   double max_angle_deg = 2.0;  ///< off the axis; more is a slant the grid can step (1, 28) along
-  double max_move_units = 3.0;  ///< the most an end may move
+  double max_move_units = 3.0;  ///< the most any control point may move
 };
 
 struct UprightLines {
@@ -25,11 +25,11 @@ struct UprightLines {
 
 /// `contour` with each line that a curve meets tangentially (turning less than the kink limit,
 /// not flagged a corner) and that lies within `max_angle_deg` of an axis put on the axis
-/// through its middle, where that moves its ends by at most `max_move_units`. Each end node
+/// through its middle, where no control point moves more than `max_move_units`. Each end node
 /// moves across the axis only, so a line it shares at a corner keeps its level (a stem on a
 /// baseline); a curve takes its handle along, turned onto the axis where it met the line
 /// tangentially (the join stays tangential), kept parallel at a corner. Left slanted: a line
-/// whose neighbour was just moved (the node would be pulled two ways), and one whose neighbour
+/// sharing a node with one stood up (the node would be pulled two ways), and one whose neighbour
 /// at an end is a curve shorter than four times the move, or a line within 10° of the same axis
 /// (a kink the fillet pass owns).
 UprightLines stand_lines_upright(const Contour& contour, const UprightLimits& limits);
