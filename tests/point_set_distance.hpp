@@ -6,9 +6,19 @@
 #include <limits>
 #include <vector>
 
+#include "geom/contour.hpp"
 #include "geom/vec2.hpp"
 
 namespace gf::test {
+
+/// `per_segment` points of each segment of `c`, evenly in t from its start (its end is the next
+/// segment's start).
+inline std::vector<Vec2> contour_points(const Contour& c, int per_segment) {
+  std::vector<Vec2> out;
+  for (const Segment& s : c.segments)
+    for (int k = 0; k < per_segment; ++k) out.push_back(point_at(s, double(k) / per_segment));
+  return out;
+}
 
 /// The two-sided Hausdorff distance between two point sets. Between curves sampled with
 /// spacing h it errs high by up to about h²/(8d) at a distance d.

@@ -1,5 +1,5 @@
 // Shapes tests build by hand: a closed polygon of lines, a node of an unrounded outline, and
-// Comic Neue's i stem.
+// two real contours: Comic Neue's i stem and DejaVu Sans Bold's u.
 #pragma once
 
 #include <optional>
@@ -33,6 +33,25 @@ inline Contour comic_neue_i_stem() {
                 Cubic{{{117, 493}, {100, 493}, {84, 478}, {84, 460}}}, Line{{{84, 460}, {78, 26}}},
                 Cubic{{{78, 26}, {78, 9}, {93, -6}, {111, -6}}}};
   c.nodes.assign(6, NodeFlags{});
+  return c;
+}
+
+/// DejaVu Sans Bold's u (2048 units per em) as its TrueType quadratics, implied nodes made
+/// explicit: the inner stem's line (520, 1120)–(520, 1008), then a flat S two units over to
+/// (518, 596), then the bowl.
+inline Contour dejavu_sans_bold_u() {
+  Contour c;
+  c.segments = {Line{{{160, 436}, {160, 1120}}}, Line{{{160, 1120}, {520, 1120}}}, Line{{{520, 1120}, {520, 1008}}},
+                Quad{{{520, 1008}, {520, 917}, {519, 779.5}}}, Quad{{{519, 779.5}, {518, 642}, {518, 596}}},
+                Quad{{{518, 596}, {518, 461}, {525, 401.5}}}, Quad{{{525, 401.5}, {532, 342}, {549, 315}}},
+                Quad{{{549, 315}, {571, 280}, {606.5, 261}}}, Quad{{{606.5, 261}, {642, 242}, {688, 242}}},
+                Quad{{{688, 242}, {800, 242}, {864, 328}}}, Quad{{{864, 328}, {928, 414}, {928, 567}}},
+                Line{{{928, 567}, {928, 1120}}}, Line{{{928, 1120}, {1286, 1120}}}, Line{{{1286, 1120}, {1286, 0}}},
+                Line{{{1286, 0}, {928, 0}}}, Line{{{928, 0}, {928, 162}}}, Quad{{{928, 162}, {847, 64}, {756.5, 17.5}}},
+                Quad{{{756.5, 17.5}, {666, -29}, {557, -29}}}, Quad{{{557, -29}, {363, -29}, {261.5, 90}}},
+                Quad{{{261.5, 90}, {160, 209}, {160, 436}}}};
+  c.nodes.assign(c.segments.size(), NodeFlags{});
+  for (const std::size_t implied : {4u, 6u, 8u, 10u, 17u, 19u}) c.nodes[implied].implied = true;
   return c;
 }
 

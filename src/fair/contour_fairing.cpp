@@ -15,6 +15,7 @@
 #include "fair/kink_fillet.hpp"
 #include "fair/rounding_retry.hpp"
 #include "fair/run_fairing.hpp"
+#include "fair/stem_jogs.hpp"
 #include "fair/tight_turn.hpp"
 #include "fair/upright_lines.hpp"
 #include "geom/arc_length.hpp"
@@ -601,8 +602,9 @@ ContourFairing fair_curve(const Contour& source, const Contour& curve, const Con
   return out;
 }
 
-// An upright line's ends move by at most a quarter of the tolerance: the rest is the fairing's.
-constexpr double upright_move_share = 0.25;
+// An upright line's ends move by at most a quarter of the tolerance, a straightened jog's by
+// half (a jog is noise, and its stem straight within it) and 3 units: the rest is the fairing's.
+constexpr double upright_move_share = 0.25, jog_move_share = 0.5, most_jog_move = 3.0;
 
 }  // namespace
 
@@ -626,18 +628,22 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& requested
     }
     settings.tolerance_units = std::min(settings.tolerance_units, 0.5 * thick);
   }
-  // On the grid, nearly upright lines a curve meets stand up before the fairing
-  // (fair/upright_lines.hpp), within a quarter of the tolerance; the fairing's distances are
-  // still measured from the source. (Taking the move off the tolerance instead changed the
-  // fairing of whole contours: Breip's I came out with a spike by its notch.)
-  UprightLines upright{source};
+  // On the grid, stem jogs are straightened (fair/stem_jogs.hpp: moves up to half the
+  // tolerance) and then nearly upright lines a curve meets stand up (fair/upright_lines.hpp:
+  // up to a quarter), before the fairing; its distances are still measured from the source.
+  // (Taking the move off the tolerance instead changed the fairing of whole contours: Breip's
+  // I came out with a spike by its notch.)
+  MovedContour straightened{source}, upright{source};
   if (settings.rounding == Rounding::integers) {
+    JogLimits jogs;
+    jogs.max_move_units = std::min(most_jog_move, jog_move_share * settings.tolerance_units);
+    straightened = straighten_stem_jogs(source, jogs);
     UprightLimits limits;
     limits.max_move_units = std::min(limits.max_move_units, upright_move_share * settings.tolerance_units);
-    upright = stand_lines_upright(source, limits);
+    upright = stand_lines_upright(straightened.contour, limits);
   }
   const Contour& stood = upright.contour;
-  const bool any_stood = upright.lines > 0;
+  const bool any_stood = straightened.changes + upright.changes > 0;
   // Handwriting's tight turns are corners (fair/tight_turn.hpp), unless the contour then fails.
   std::optional<TightTurns> turned;
   if (settings.profile == FairProfile::handwriting) {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "fair/contour_plan.hpp"
+#include "fair/node_moves.hpp"
 #include "geom/curvature.hpp"
 
 namespace gf {
@@ -16,46 +17,10 @@ namespace {
 constexpr double shortest_curve_share = 4.0;  // a neighbouring curve's chord, in moves
 constexpr double collinear_line_deg = 10.0;   // a neighbouring line this near the axis: a kink
 
-bool straight(const Segment& s) {
-  const Cubic* c = std::get_if<Cubic>(&s);
-  return is_line(s) || (c && is_straight(*c));
-}
-
-// Segment `s` with its end (or start) node moved by `v`: a line (or a straight cubic) just its
-// end; a curve takes its handle along, turned onto `along` (unit, the direction of travel)
-// where the curve meets the line tangentially, so the join stays tangential (Breip's I: a curve
-// 2.4° from its line, which stood up, was 3.5° off it, a corner), else kept parallel (a
-// corner's tangent kept).
-Segment moved_end(const Segment& s, SegmentEnd end, Vec2 v, std::optional<Vec2> along) {
-  const bool at_start = end == SegmentEnd::start;
-  if (straight(s)) {
-    const Vec2 a = start_point(s), b = end_point(s);
-    return Line{at_start ? a + v : a, at_start ? b : b + v};
-  }
-  Cubic c = std::get<Cubic>(s);
-  const int node = at_start ? 0 : 3, handle = at_start ? 1 : 2;
-  const double reach = distance(c.p[node], c.p[handle]);
-  c.p[node] = c.p[node] + v;
-  c.p[handle] = along && reach > 0.0 ? c.p[node] + (at_start ? reach : -reach) * *along : c.p[handle] + v;
-  return c;
-}
-
-// How far the farthest control point of `was` moved in `now` (a Bézier curve moves by at most
-// that); a straight cubic made a line compares its ends.
-double largest_move(const Segment& was, const Segment& now) {
-  std::vector<Vec2> a, b;
-  for_each_point(was, [&](Vec2 q) { a.push_back(q); });
-  for_each_point(now, [&](Vec2 q) { b.push_back(q); });
-  if (a.size() != b.size()) a = {a.front(), a.back()};
-  double out = 0.0;
-  for (std::size_t k = 0; k < a.size(); ++k) out = std::max(out, distance(a[k], b[k]));
-  return out;
-}
-
 }  // namespace
 
-UprightLines stand_lines_upright(const Contour& source, const UprightLimits& limits) {
-  UprightLines out{source, 0.0, 0};
+MovedContour stand_lines_upright(const Contour& source, const UprightLimits& limits) {
+  MovedContour out{source, 0.0, 0};
   const Contour contour = with_cubics(source);
   Contour result = contour;
   const std::size_t n = contour.segments.size();
@@ -83,7 +48,7 @@ UprightLines stand_lines_upright(const Contour& source, const UprightLimits& lim
       if (!s) return false;
       const std::optional<Vec2> t = end_tangent(*s, its_end);
       if (!t) return false;
-      if (straight(*s)) {
+      if (is_straight_segment(*s)) {
         const double off_axis = std::abs(turning_angle(axis, *t));
         spoiled = spoiled || std::min(off_axis, std::numbers::pi - off_axis) < radians(collinear_line_deg);
         return false;
@@ -102,10 +67,10 @@ UprightLines stand_lines_upright(const Contour& source, const UprightLimits& lim
     Contour trial = result;
     const std::size_t i_before = (i + n - 1) % n, i_after = (i + 1) % n;
     if (before)
-      trial.segments[i_before] = moved_end(trial.segments[i_before], SegmentEnd::end, a_to - a,
+      trial.segments[i_before] = with_end_moved(trial.segments[i_before], SegmentEnd::end, a_to - a,
                                            tangent_before ? std::optional(axis) : std::nullopt);
     if (after)
-      trial.segments[i_after] = moved_end(trial.segments[i_after], SegmentEnd::start, b_to - b,
+      trial.segments[i_after] = with_end_moved(trial.segments[i_after], SegmentEnd::start, b_to - b,
                                           tangent_after ? std::optional(axis) : std::nullopt);
     trial.segments[i] = Line{a_to, b_to};
     // A long handle turned onto the axis moves far (DejaVu Sans's ☏: a quadratic's 317-unit
@@ -117,9 +82,9 @@ UprightLines stand_lines_upright(const Contour& source, const UprightLimits& lim
     result = std::move(trial);
     node_moved[a_node] = node_moved[b_node] = true;
     out.moved = std::max(out.moved, moved);
-    ++out.lines;
+    ++out.changes;
   }
-  if (out.lines == 0) return out;
+  if (out.changes == 0) return out;
   out.contour = std::move(result);
   return out;
 }

@@ -8,19 +8,13 @@
 // curve is faired to the upright line, and its extremum is the join.
 #pragma once
 
-#include "geom/contour.hpp"
+#include "fair/node_moves.hpp"
 
 namespace gf {
 
 struct UprightLimits {
   double max_angle_deg = 2.0;  ///< off the axis; more is a slant the grid can step (1, 28) along
   double max_move_units = 3.0;  ///< the most any control point may move
-};
-
-struct UprightLines {
-  Contour contour;  ///< with_cubics of the source when a line stood up, else the source
-  double moved = 0.0;  ///< units: the most any point of the contour moved (a bound)
-  int lines = 0;       ///< how many stood up
 };
 
 /// `contour` with each line that a curve meets tangentially (turning less than the kink limit,
@@ -32,6 +26,6 @@ struct UprightLines {
 /// sharing a node with one stood up (the node would be pulled two ways), and one whose neighbour
 /// at an end is a curve shorter than four times the move, or a line within 10° of the same axis
 /// (a kink the fillet pass owns).
-UprightLines stand_lines_upright(const Contour& contour, const UprightLimits& limits);
+MovedContour stand_lines_upright(const Contour& contour, const UprightLimits& limits);
 
 }  // namespace gf

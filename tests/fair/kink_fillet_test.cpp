@@ -19,12 +19,7 @@ using test::polygon;
 
 double degrees(Vec2 a, Vec2 b) { return std::abs(turning_angle(a, b)) * 180.0 / std::numbers::pi; }
 
-std::vector<Vec2> dense(const Contour& c) {
-  std::vector<Vec2> out;
-  for (const Segment& s : c.segments)
-    for (int k = 0; k < 200; ++k) out.push_back(point_at(s, k / 200.0));
-  return out;
-}
+std::vector<Vec2> dense(const Contour& c) { return test::contour_points(c, 200); }
 
 // The fillets of a filleted polygon, each checked: every point on the grid, every join smooth
 // (0°) or a corner (3° or more), each fillet leaving its lines with κ = 0 exactly.

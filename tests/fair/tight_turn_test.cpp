@@ -41,12 +41,7 @@ Contour reversal(double r, double turn) {
   return c;
 }
 
-std::vector<Vec2> dense(const Contour& c) {
-  std::vector<Vec2> out;
-  for (const Segment& s : c.segments)
-    for (int k = 0; k < 400; ++k) out.push_back(point_at(s, k / 400.0));
-  return out;
-}
+std::vector<Vec2> dense(const Contour& c) { return test::contour_points(c, 400); }
 
 constexpr TightTurnLimits limits{30.0, 160.0, 5.0};
 

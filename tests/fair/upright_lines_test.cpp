@@ -15,17 +15,12 @@
 namespace gf {
 namespace {
 
-std::vector<Vec2> dense(const Contour& c) {
-  std::vector<Vec2> out;
-  for (const Segment& s : c.segments)
-    for (int k = 0; k <= 200; ++k) out.push_back(point_at(s, k / 200.0));
-  return out;
-}
+std::vector<Vec2> dense(const Contour& c) { return test::contour_points(c, 200); }
 
 TEST(UprightLines, AStemOffTheVerticalStandsUpright) {
   const Contour source = test::comic_neue_i_stem();
-  const UprightLines r = stand_lines_upright(source, UprightLimits{});
-  ASSERT_EQ(r.lines, 2);
+  const MovedContour r = stand_lines_upright(source, UprightLimits{});
+  ASSERT_EQ(r.changes, 2);
   EXPECT_DOUBLE_EQ(r.moved, 3.0);  // half of each line's 6 units across
   for (const std::size_t i : {1u, 4u}) {
     const Line& line = std::get<Line>(r.contour.segments[i]);
@@ -54,11 +49,11 @@ TEST(UprightLines, ALineMovingTooFarOrTooSteepKeepsItsSlant) {
   const Contour source = test::comic_neue_i_stem();
   UprightLimits tight;
   tight.max_move_units = 2.9;
-  EXPECT_EQ(stand_lines_upright(source, tight).lines, 0);
+  EXPECT_EQ(stand_lines_upright(source, tight).changes, 0);
   EXPECT_EQ(stand_lines_upright(source, tight).contour, source);
   UprightLimits steep;
   steep.max_angle_deg = 0.7;  // the stem leans 0.79°
-  EXPECT_EQ(stand_lines_upright(source, steep).lines, 0);
+  EXPECT_EQ(stand_lines_upright(source, steep).changes, 0);
 }
 
 TEST(UprightLines, ALineAtCornersOrBesideALineOnItsAxisKeepsItsSlant) {
@@ -67,12 +62,12 @@ TEST(UprightLines, ALineAtCornersOrBesideALineOnItsAxisKeepsItsSlant) {
   corner.segments = {Line{{{0, 0}, {60, 0}}}, Line{{{60, 0}, {62, 300}}},
                      Cubic{{{62, 300}, {40, 330}, {10, 330}, {0, 300}}}, Line{{{0, 300}, {0, 0}}}};
   corner.nodes.assign(4, NodeFlags{});
-  EXPECT_EQ(stand_lines_upright(corner, UprightLimits{}).lines, 0);
+  EXPECT_EQ(stand_lines_upright(corner, UprightLimits{}).changes, 0);
   // The same stem meeting the curve tangentially stands upright; the baseline stays level.
   Contour tangent = corner;
   tangent.segments[2] = Cubic{{{62, 300}, {62.2, 330}, {10, 330}, {0, 300}}};
-  const UprightLines stood = stand_lines_upright(tangent, UprightLimits{});
-  ASSERT_EQ(stood.lines, 1);
+  const MovedContour stood = stand_lines_upright(tangent, UprightLimits{});
+  ASSERT_EQ(stood.changes, 1);
   EXPECT_EQ(std::get<Line>(stood.contour.segments[0]).end(), (Vec2{61, 0}));
   EXPECT_EQ(std::get<Line>(stood.contour.segments[1]).end(), (Vec2{61, 300}));
   // The curve leaves the upright line along it, its handle as long as it was.
@@ -83,17 +78,17 @@ TEST(UprightLines, ALineAtCornersOrBesideALineOnItsAxisKeepsItsSlant) {
   // stem's 0.38° lean, 4 units across the vertical.
   Contour long_handle = tangent;
   long_handle.segments[2] = Cubic{{{62, 300}, {66, 900}, {10, 330}, {0, 300}}};
-  EXPECT_EQ(stand_lines_upright(long_handle, UprightLimits{}).lines, 0);
+  EXPECT_EQ(stand_lines_upright(long_handle, UprightLimits{}).changes, 0);
   // A flag saying corner is a corner, whatever the angle.
   Contour flagged = tangent;
   flagged.nodes[2].smooth = false;
-  EXPECT_EQ(stand_lines_upright(flagged, UprightLimits{}).lines, 0);
+  EXPECT_EQ(stand_lines_upright(flagged, UprightLimits{}).changes, 0);
   // Below it a line 1.6° further round: a kink between two lines, the fillet pass's to mend.
   Contour kinked;
   kinked.segments = {Line{{{0, -290}, {50, -290}}}, Line{{{50, -290}, {60, 0}}}, tangent.segments[1],
                      tangent.segments[2], Line{{{0, 300}, {0, -290}}}};
   kinked.nodes.assign(5, NodeFlags{});
-  EXPECT_EQ(stand_lines_upright(kinked, UprightLimits{}).lines, 0);
+  EXPECT_EQ(stand_lines_upright(kinked, UprightLimits{}).changes, 0);
 }
 
 }  // namespace

@@ -1,0 +1,82 @@
+// Stem jogs: a line, then a flat S that a curve continues from, becomes one straight line
+// halfway across the jog; a bend away from the line (a taper), a jog too wide or too steep, and
+// a line of no length are left alone.
+#include "fair/stem_jogs.hpp"
+
+#include <gtest/gtest.h>
+
+#include "point_set_distance.hpp"
+#include "test_shapes.hpp"
+
+namespace gf {
+namespace {
+
+std::vector<Vec2> dense(const Contour& c) { return test::contour_points(c, 200); }
+
+// A stem down x = 100, a flat S two units over to x = 98, then a bowl round to a second stem.
+Contour jogged(Cubic jog) {
+  Contour c;
+  c.segments = {Line{{{100, 1000}, {100, 800}}}, jog, Cubic{{{98, 500}, {98, 400}, {150, 350}, {250, 350}}},
+                Line{{{250, 350}, {250, 1000}}}, Line{{{250, 1000}, {100, 1000}}}};
+  c.nodes.assign(c.segments.size(), NodeFlags{});
+  return c;
+}
+
+TEST(StemJogs, AFlatSAfterAStemBecomesPartOfIt) {
+  const Contour source = jogged(Cubic{{{100, 800}, {100, 700}, {98, 600}, {98, 500}}});
+  const MovedContour r = straighten_stem_jogs(source, JogLimits{});
+  ASSERT_EQ(r.changes, 1);
+  EXPECT_DOUBLE_EQ(r.moved, 1.0);  // half the jog
+  ASSERT_EQ(r.contour.segments.size(), 4u);
+  const Line& stem = std::get<Line>(r.contour.segments[0]);
+  EXPECT_EQ(stem.start(), (Vec2{99, 1000}));
+  EXPECT_EQ(stem.end(), (Vec2{99, 500}));
+  // The bowl starts where the stem ends, leaving it along it; the top line stays level.
+  const Cubic& bowl = std::get<Cubic>(r.contour.segments[1]);
+  EXPECT_EQ(bowl.p[0], (Vec2{99, 500}));
+  EXPECT_EQ(bowl.p[1], (Vec2{99, 400}));
+  EXPECT_EQ(bowl.p[3], (Vec2{250, 350}));
+  EXPECT_EQ(std::get<Line>(r.contour.segments[3]).end(), (Vec2{99, 1000}));
+  EXPECT_LE(test::polyline_hausdorff(dense(source), dense(r.contour)), r.moved + 1e-9);
+}
+
+TEST(StemJogs, TheSameReadBackwardsIsStraightenedToo) {
+  // The contour reversed: the bowl, the S, then the stem.
+  const Contour forwards = jogged(Cubic{{{100, 800}, {100, 700}, {98, 600}, {98, 500}}});
+  Contour backwards;
+  for (auto s = forwards.segments.rbegin(); s != forwards.segments.rend(); ++s) {
+    if (const Line* l = std::get_if<Line>(&*s)) backwards.segments.push_back(Line{{l->end(), l->start()}});
+    else {
+      const Cubic& c = std::get<Cubic>(*s);
+      backwards.segments.push_back(Cubic{{c.p[3], c.p[2], c.p[1], c.p[0]}});
+    }
+  }
+  backwards.nodes.assign(backwards.segments.size(), NodeFlags{});
+  const MovedContour r = straighten_stem_jogs(backwards, JogLimits{});
+  ASSERT_EQ(r.changes, 1);
+  bool found = false;
+  for (const Segment& s : r.contour.segments)
+    if (const Line* l = std::get_if<Line>(&s); l && l->start() == Vec2{99, 500}) found = l->end() == Vec2{99, 1000};
+  EXPECT_TRUE(found);
+}
+
+TEST(StemJogs, ABendATooWideOrTooSteepJogAndALineOfNoLengthAreLeft) {
+  // A taper: the curve bends 2 units over and ends still bending (not back along the line).
+  EXPECT_EQ(straighten_stem_jogs(jogged(Cubic{{{100, 800}, {100, 700}, {99.5, 600}, {98, 500}}}), JogLimits{}).changes, 0);
+  // Four units across: past twice the limit of one unit.
+  EXPECT_EQ(straighten_stem_jogs(jogged(Cubic{{{100, 800}, {100, 700}, {96, 600}, {96, 500}}}), JogLimits{}).changes, 0);
+  JogLimits wide;
+  wide.max_move_units = 2.0;
+  EXPECT_EQ(straighten_stem_jogs(jogged(Cubic{{{100, 800}, {100, 700}, {96, 600}, {96, 500}}}), wide).changes, 1);
+  // Twenty units over 300: steeper than the kink limit, a stroke's own slant.
+  wide.max_move_units = 20.0;
+  EXPECT_EQ(straighten_stem_jogs(jogged(Cubic{{{100, 800}, {100, 700}, {80, 600}, {80, 500}}}), wide).changes, 0);
+  // A contour closed on a line of no length (Lato's N) has no direction there to read.
+  Contour closed_on_nothing = jogged(Cubic{{{100, 800}, {100, 700}, {98, 600}, {98, 500}}});
+  closed_on_nothing.segments.insert(closed_on_nothing.segments.begin(), Line{{{100, 1000}, {100, 1000}}});
+  closed_on_nothing.nodes.push_back(NodeFlags{});
+  EXPECT_EQ(straighten_stem_jogs(closed_on_nothing, JogLimits{}).changes, 1);
+}
+
+}  // namespace
+}  // namespace gf
