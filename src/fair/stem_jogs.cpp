@@ -1,9 +1,9 @@
 #include "fair/stem_jogs.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "fair/contour_plan.hpp"
@@ -13,7 +13,7 @@ namespace gf {
 namespace {
 
 constexpr int most_jog_cubics = 3;
-constexpr double least_jog_units = 1.0;  // narrower, rounding's half unit is the fairer fix
+constexpr double least_jog_units = 1.0;  // narrower, the grid's nearest points may straighten it
 constexpr double jog_slack_units = 0.5;  // how far a jog's control points may pass its far side
 constexpr double s_return = 0.25;        // of the farthest a jog turns, the most its ends may
 
