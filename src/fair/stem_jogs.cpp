@@ -16,6 +16,7 @@ constexpr int most_jog_cubics = 3;
 constexpr double least_jog_units = 1.0;  // narrower, the grid's nearest points may straighten it
 constexpr double jog_slack_units = 0.5;  // how far a jog's control points may pass its far side
 constexpr double s_return = 0.25;        // of the farthest a jog turns, the most its ends may
+constexpr double shortest_curve_share = 2.0;  // a moved curve's chord, in jog widths (4 moves)
 
 // The unit tangent of `c` at t, where its derivative does not vanish.
 std::optional<Vec2> tangent_at(const Cubic& c, double t) {
@@ -111,6 +112,12 @@ std::optional<std::pair<Contour, double>> straighten_first_jog(const Contour& c,
         const Segment& next_one = c.segments[*after];
         const Vec2 onwards = way > 0 ? end_point(next_one) - start_point(next_one) : start_point(next_one) - end_point(next_one);
         if (is_straight_segment(next_one) && std::abs(turning_angle(u, onwards)) < radians(kink_limit_deg)) break;
+        // A short curve at either end would be bent out of shape by the move.
+        const auto too_short = [&](std::optional<std::size_t> j) {
+          return j && !is_straight_segment(c.segments[*j]) &&
+                 distance(start_point(c.segments[*j]), end_point(c.segments[*j])) < shortest_curve_share * std::abs(*across);
+        };
+        if (too_short(before) || too_short(after)) break;
         const Vec2 shift = Vec2{-u.y, u.x} * (0.5 * *across);
         const Vec2 far = jog.back().p[3];
         Contour moved = c;

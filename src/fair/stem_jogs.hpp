@@ -22,8 +22,8 @@ struct JogLimits {
 /// `max_move_units` across and flatter than the kink limit, then a curve. The line and those
 /// cubics become one line parallel to the line, half the jog across; the line's start and the
 /// curve after the jog move by half the jog across the line (a curve takes its handle along,
-/// a line its end). The same read backwards: a curve, a jog, then the line. No control point
-/// moves more than `max_move_units`.
+/// a line its end; neither may be a curve shorter than twice the jog). The same read
+/// backwards: a curve, a jog, then the line. No control point moves more than `max_move_units`.
 MovedContour straighten_stem_jogs(const Contour& contour, const JogLimits& limits);
 
 }  // namespace gf
