@@ -558,9 +558,9 @@ void fillet_kinks(ContourFairing& out, const Contour& source, const FairSettings
 }
 
 // The contour faired on `curve` (the source, or the same curve split at its tight `turns`, its
-// nearly upright lines perhaps stood up): planned, its runs faired, and corners that came out
-// as kinks made smooth. Its distances are measured from `reference`: `curve` itself, or the
-// source where lines stood up.
+// stem jogs perhaps straightened and nearly upright lines stood up): planned, its runs faired,
+// and corners that came out as kinks made smooth. Its distances are measured from
+// `reference`: `curve` itself, or the source where anything was straightened.
 ContourFairing fair_curve(const Contour& source, const Contour& curve, const Contour& reference,
                           std::span<const TightTurn> turns, const FairSettings& settings) {
   ContourFairing out;
