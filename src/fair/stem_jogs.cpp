@@ -101,6 +101,9 @@ std::optional<std::pair<Contour, double>> straighten_first_jog(const Contour& c,
         const Cubic* next = cubic(at(std::ptrdiff_t(i) + way * k));
         if (!next) break;
         jog.push_back(way > 0 ? *next : reversed(*next));
+        // A node the source flags a corner (the line's end, or one inside the jog) ends the search.
+        const std::size_t node = way > 0 ? *at(std::ptrdiff_t(i) + k) : *at(std::ptrdiff_t(i) - k + 1);
+        if (!c.nodes[node].smooth.value_or(true)) break;
         const std::optional<double> across = jog_offset(to, u, jog, 2.0 * limit);
         if (!across) continue;
         // The curve after the jog (a cubic, or a line turning away from it) and the segment

@@ -1,6 +1,6 @@
 // Stem jogs: a line, then a flat S that a curve continues from, becomes one straight line
-// halfway across the jog; a bend away from the line (a taper), a jog too wide or too steep, and
-// a line of no length are left alone.
+// halfway across the jog; a bend away from the line (a taper), a jog too wide or too steep, a
+// flagged corner and a line of no length are left alone.
 #include "fair/stem_jogs.hpp"
 
 #include <gtest/gtest.h>
@@ -60,7 +60,7 @@ TEST(StemJogs, TheSameReadBackwardsIsStraightenedToo) {
   EXPECT_TRUE(found);
 }
 
-TEST(StemJogs, ABendATooWideOrTooSteepJogAndALineOfNoLengthAreLeft) {
+TEST(StemJogs, ABendATooWideOrTooSteepJogAFlaggedCornerAndALineOfNoLengthAreLeft) {
   // A taper: the curve bends 2 units over and ends still bending (not back along the line).
   EXPECT_EQ(straighten_stem_jogs(jogged(Cubic{{{100, 800}, {100, 700}, {99.5, 600}, {98, 500}}}), JogLimits{}).changes, 0);
   // Four units across: past twice the limit of one unit.
@@ -71,6 +71,10 @@ TEST(StemJogs, ABendATooWideOrTooSteepJogAndALineOfNoLengthAreLeft) {
   // Twenty units over 300: steeper than the kink limit, a stroke's own slant.
   wide.max_move_units = 20.0;
   EXPECT_EQ(straighten_stem_jogs(jogged(Cubic{{{100, 800}, {100, 700}, {80, 600}, {80, 500}}}), wide).changes, 0);
+  // A source that flags the line's end a corner.
+  Contour flagged = jogged(Cubic{{{100, 800}, {100, 700}, {98, 600}, {98, 500}}});
+  flagged.nodes[1].smooth = false;
+  EXPECT_EQ(straighten_stem_jogs(flagged, JogLimits{}).changes, 0);
   // A contour closed on a line of no length (Lato's N) has no direction there to read.
   Contour closed_on_nothing = jogged(Cubic{{{100, 800}, {100, 700}, {98, 600}, {98, 500}}});
   closed_on_nothing.segments.insert(closed_on_nothing.segments.begin(), Line{{{100, 1000}, {100, 1000}}});
