@@ -68,10 +68,10 @@ MovedContour stand_lines_upright(const Contour& source, const UprightLimits& lim
     const std::size_t i_before = (i + n - 1) % n, i_after = (i + 1) % n;
     if (before)
       trial.segments[i_before] = with_end_moved(trial.segments[i_before], SegmentEnd::end, a_to - a,
-                                           tangent_before ? std::optional(axis) : std::nullopt);
+                                                tangent_before ? std::optional(axis) : std::nullopt);
     if (after)
       trial.segments[i_after] = with_end_moved(trial.segments[i_after], SegmentEnd::start, b_to - b,
-                                          tangent_after ? std::optional(axis) : std::nullopt);
+                                               tangent_after ? std::optional(axis) : std::nullopt);
     trial.segments[i] = Line{a_to, b_to};
     // A long handle turned onto the axis moves far (DejaVu Sans's ☏: a quadratic's 317-unit
     // handle 3° off the level, 17 units): no control point may move past the limit.
