@@ -12,6 +12,7 @@
 #include "fair/cubic_writeback.hpp"
 #include "fair/g3_cubics.hpp"
 #include "fair/grid_rounding.hpp"
+#include "fair/kinked_corners.hpp"
 #include "fair/kink_fillet.hpp"
 #include "fair/rounding_retry.hpp"
 #include "fair/run_fairing.hpp"
@@ -140,12 +141,6 @@ class NodeAssembler {
 
  private:
   std::vector<OutlineNode> nodes_;
-};
-
-// A corner of the plan: the source node and where the faired pieces meet there.
-struct CornerJoin {
-  std::size_t source_node;
-  Vec2 point;
 };
 
 struct Attempt {
@@ -369,26 +364,6 @@ G3CubicReport carry_g3_into_cubics(std::vector<OutlineNode>& nodes, bool closed,
   for (const OutlineNode& node : nodes) cubics += node.out_handle.has_value();
   const int budget = static_cast<int>(std::floor(g3_node_share * double(cubics) + 0.5));
   return make_cubics_g3(nodes, closed, allowance, {settings.flat_curvature, budget});
-}
-
-// The corners of a faired contour (as the source nodes they stand for) that turn by less than
-// the kink limit. Each is found at its node nearest where the pieces met (rounding may have
-// moved it a unit).
-std::vector<std::size_t> kinked_corners(const Contour& faired, std::span<const CornerJoin> corners) {
-  std::vector<std::size_t> out;
-  const std::size_t n = faired.segments.size();
-  if (n < 2) return out;
-  const double kink = radians(kink_limit_deg);
-  for (const CornerJoin& c : corners) {
-    std::size_t k = 0;
-    for (std::size_t i = 1; i < n; ++i)
-      if (distance(faired.node_point(i), c.point) < distance(faired.node_point(k), c.point)) k = i;
-    if ((!faired.closed && k == 0) || faired.nodes[k].smooth.value_or(false)) continue;
-    const std::optional<Vec2> in = end_tangent(faired.segments[(k + n - 1) % n], SegmentEnd::end);
-    const std::optional<Vec2> out_tangent = end_tangent(faired.segments[k], SegmentEnd::start);
-    if (in && out_tangent && std::abs(turning_angle(*in, *out_tangent)) < kink) out.push_back(c.source_node);
-  }
-  return out;
 }
 
 // The contour faired on one plan: the budgets halved once when the first try strays, the
