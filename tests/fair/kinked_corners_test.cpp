@@ -32,14 +32,16 @@ TEST(KinkedCorners, ACornerBehindAShortLinesSmoothEndIsFound) {
   EXPECT_TRUE(kinked_corners(after_rounding(49.0), corners).empty());
 }
 
-TEST(KinkedCorners, ASmoothNodeWithNoShortLineBesideItIsNoCorner) {
+TEST(KinkedCorners, ASmoothNodeAtTheEndOfALongLineIsNoCorner) {
   Contour c = after_rounding(47.1);
-  // The line 11 units long: the smooth node at its end is too far from the corner (a kink of
-  // 2.1°) to stand for it.
-  c.segments[1] = Line{{{328, 227}, {336, 235}}};
-  std::get<Cubic>(c.segments[2]).p[0] = {336, 235};
-  const std::vector<CornerJoin> corners{{7, {336, 235}}};
-  EXPECT_TRUE(kinked_corners(c, corners).empty());
+  // The line 14 units long: the smooth node at its end is too far from the corner (a kink of
+  // 2.1°) to stand for it. At 6 units (dkg Bold's j under G3), it stands for it.
+  c.segments[1] = Line{{{328, 227}, {338, 237}}};
+  std::get<Cubic>(c.segments[2]).p[0] = {338, 237};
+  EXPECT_TRUE(kinked_corners(c, std::vector<CornerJoin>{{7, {338, 237}}}).empty());
+  c.segments[1] = Line{{{328, 227}, {332, 231}}};
+  std::get<Cubic>(c.segments[2]).p[0] = {332, 231};
+  EXPECT_EQ(kinked_corners(c, std::vector<CornerJoin>{{7, {332, 231}}}), std::vector<std::size_t>{7});
 }
 
 }  // namespace
