@@ -401,7 +401,7 @@ class RunPlacement {
     if (!(arrives ? l.curve_arrives : l.curve_leaves)) return std::nullopt;
     const std::size_t n = exact_.size();
     const Cubic c = arrives ? outline_cubic(exact_, (l.i + n - 1) % n) : outline_cubic(exact_, l.j);
-    const Cubic from_join = arrives ? Cubic{c.p[3], c.p[2], c.p[1], c.p[0]} : c;
+    const Cubic from_join = arrives ? c.reversed() : c;
     if (norm(from_join.p[1] - from_join.p[0]) == 0.0) return std::nullopt;
     return Slide(from_join, exact_[arrives ? l.j : l.i].point, std::min(off_line, limits_.allowance_at(l.i)));
   }

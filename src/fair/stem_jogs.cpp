@@ -18,14 +18,6 @@ constexpr double jog_slack_units = 0.5;  // how far a jog's control points may p
 constexpr double s_return = 0.25;        // of the farthest a jog turns, the most its ends may
 constexpr double shortest_curve_share = 2.0;  // a moved curve's chord, in jog widths (4 moves)
 
-// The unit tangent of `c` at t, where its derivative does not vanish.
-std::optional<Vec2> tangent_at(const Cubic& c, double t) {
-  const Vec2 d = c.hodograph().point_at(t);
-  const double len = norm(d);
-  if (len == 0.0) return std::nullopt;
-  return d / len;
-}
-
 // A jog read in the direction of travel: from the line's end `b` (the line along unit `u`),
 // the cubics `jog`, in order. How far across the line (signed, along u's left normal) the jog
 // ends, where it is one.
@@ -47,7 +39,8 @@ std::optional<double> jog_offset(Vec2 b, Vec2 u, std::span<const Cubic> jog, dou
   double farthest = 0.0;
   for (const Cubic& c : jog)
     for (int k = 1; k < 16; ++k)
-      if (const std::optional<Vec2> t = tangent_at(c, k / 16.0)) farthest = std::max(farthest, std::abs(turning_angle(u, *t)));
+      if (const Vec2 d = c.hodograph().point_at(k / 16.0); norm(d) > 0.0)
+        farthest = std::max(farthest, std::abs(turning_angle(u, d)));
   if (std::abs(turning_angle(u, *leaves)) > s_return * farthest || std::abs(turning_angle(u, *arrives)) > s_return * farthest)
     return std::nullopt;
   // Every control point between the line and the jog's far side, give or take the slack.
@@ -59,8 +52,6 @@ std::optional<double> jog_offset(Vec2 b, Vec2 u, std::span<const Cubic> jog, dou
   }
   return across;
 }
-
-Cubic reversed(const Cubic& c) { return Cubic{{c.p[3], c.p[2], c.p[1], c.p[0]}}; }
 
 // The contour with segments `gone` (indices, mod n) and the nodes starting them removed, and
 // segment `line_at` replaced by `line`.
@@ -100,7 +91,7 @@ std::optional<std::pair<Contour, double>> straighten_first_jog(const Contour& c,
       for (int k = 1; k <= most_jog_cubics; ++k) {
         const Cubic* next = cubic(at(std::ptrdiff_t(i) + way * k));
         if (!next) break;
-        jog.push_back(way > 0 ? *next : reversed(*next));
+        jog.push_back(way > 0 ? *next : next->reversed());
         // A node the source flags a corner (the line's end, or one inside the jog) ends the search.
         const std::size_t node = way > 0 ? *at(std::ptrdiff_t(i) + k) : *at(std::ptrdiff_t(i) - k + 1);
         if (!c.nodes[node].smooth.value_or(true)) break;

@@ -53,6 +53,13 @@ struct Bezier {
     return w[0];
   }
 
+  /// The same curve traversed the other way: its control points in reverse order.
+  Bezier reversed() const {
+    Bezier r;
+    std::reverse_copy(p.begin(), p.end(), r.p.begin());
+    return r;
+  }
+
   /// The derivative curve (hodograph), a Bézier of one degree less.
   Bezier<(Degree > 0 ? Degree - 1 : 0)> hodograph() const {
     Bezier<(Degree > 0 ? Degree - 1 : 0)> h;

@@ -44,13 +44,8 @@ TEST(StemJogs, TheSameReadBackwardsIsStraightenedToo) {
   // The contour reversed: the bowl, the S, then the stem.
   const Contour forwards = jogged(Cubic{{{100, 800}, {100, 700}, {98, 600}, {98, 500}}});
   Contour backwards;
-  for (auto s = forwards.segments.rbegin(); s != forwards.segments.rend(); ++s) {
-    if (const Line* l = std::get_if<Line>(&*s)) backwards.segments.push_back(Line{{l->end(), l->start()}});
-    else {
-      const Cubic& c = std::get<Cubic>(*s);
-      backwards.segments.push_back(Cubic{{c.p[3], c.p[2], c.p[1], c.p[0]}});
-    }
-  }
+  for (auto s = forwards.segments.rbegin(); s != forwards.segments.rend(); ++s)
+    backwards.segments.push_back(std::visit([](const auto& b) { return Segment{b.reversed()}; }, *s));
   backwards.nodes.assign(backwards.segments.size(), NodeFlags{});
   const MovedContour r = straighten_stem_jogs(backwards, JogLimits{});
   ASSERT_EQ(r.changes, 1);

@@ -65,10 +65,8 @@ TEST(Contour, ThicknessIsAStrokesWidthAndACirclesRadius) {
   EXPECT_NEAR(thickness(circle), r, 3e-4 * r);
   // Its reverse is as thick; a contour of no length has none.
   Contour reversed;
-  for (auto it = circle.segments.rbegin(); it != circle.segments.rend(); ++it) {
-    const Cubic& c = std::get<Cubic>(*it);
-    reversed.segments.push_back(Cubic{{c.p[3], c.p[2], c.p[1], c.p[0]}});
-  }
+  for (auto it = circle.segments.rbegin(); it != circle.segments.rend(); ++it)
+    reversed.segments.push_back(std::get<Cubic>(*it).reversed());
   reversed.nodes.assign(4, NodeFlags{});
   EXPECT_NEAR(thickness(reversed), thickness(circle), 1e-9);
   Contour point;
