@@ -25,6 +25,7 @@ void FairedSegmentsOutput::add(const GlyphFairing& glyph) {
     for (const FairedPiece& p : pieces) {
       json j{{"kind", to_string(p.kind)}, {"length", p.length}, {"smooth_start", p.smooth_start}};
       if (p.alpha) j["alpha"] = *p.alpha;
+      if (p.bumps) j["symmetric_bump"] = p.bumps->first, j["odd_bump"] = p.bumps->second;
       j["start"] = lac_point_json(p.start);
       j["end"] = lac_point_json(p.end);
       list.push_back(std::move(j));

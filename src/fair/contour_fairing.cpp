@@ -159,20 +159,21 @@ struct Attempt {
 
 FairedPiece line_piece(Vec2 a, Vec2 b, bool smooth_start) {
   const Vec2 t = (b - a) / distance(a, b);
-  return {FairedPieceKind::line, distance(a, b), {a, t, 0.0, 0.0}, {b, t, 0.0, 0.0}, std::nullopt, smooth_start};
+  return {FairedPieceKind::line, distance(a, b), {a, t, 0.0, 0.0}, {b, t, 0.0, 0.0}, std::nullopt, smooth_start, std::nullopt};
 }
 
 // The chain's pieces for export, the first one's join as `smooth_start` says.
 void record_chain(const FairedChain& chain, bool smooth_start, FairedPieces& out) {
   const std::size_t first = out.size();
   for (const LogAestheticSegment& s : chain.segments)
-    out.push_back({FairedPieceKind::log_aesthetic, s.length(), s.start(), s.end(), s.alpha(), true});
+    out.push_back({FairedPieceKind::log_aesthetic, s.length(), s.start(), s.end(), s.alpha(), true, std::nullopt});
   for (const PolynomialSpiral& s : chain.spirals)
-    out.push_back({FairedPieceKind::polynomial_spiral, s.length(), s.start(), s.end(), std::nullopt, true});
+    out.push_back({FairedPieceKind::polynomial_spiral, s.length(), s.start(), s.end(), std::nullopt, true,
+                   std::pair{s.symmetric_bump(), s.odd_bump()}});
   if (chain.guide) {
     LacPoint a = chain.start_frame(), b = chain.end_frame();
     a.curvature_derivative = b.curvature_derivative = std::nullopt;
-    out.push_back({FairedPieceKind::guide, chain.guide->s1 - chain.guide->s0, a, b, std::nullopt, true});
+    out.push_back({FairedPieceKind::guide, chain.guide->s1 - chain.guide->s0, a, b, std::nullopt, true, std::nullopt});
   }
   if (out.size() > first) out[first].smooth_start = smooth_start;
 }
@@ -196,7 +197,7 @@ std::vector<OutlineNode> drawn_nodes(const SmoothRun& run, FairedPieces& pieces)
                       std::nullopt};
     };
     pieces.push_back({FairedPieceKind::as_drawn, arc_length_estimate(s), frame(SegmentEnd::start, c.p[0]),
-                      frame(SegmentEnd::end, c.p[3]), std::nullopt, false});
+                      frame(SegmentEnd::end, c.p[3]), std::nullopt, false, std::nullopt});
   }
   drawn.back().point = run.cubics.back().p[3];
   drawn.back().smooth = false;

@@ -231,10 +231,31 @@ std::vector<double> cut_places(const PathPiece& piece, int n, CutPlacement place
   return out;
 }
 
-std::optional<G3Problem> g3_problem(const std::vector<FairedChain>& chains, const SmoothRun& run,
-                                    std::span<const int> pieces, CutPlacement placement) {
+std::optional<RunPieces> run_pieces(const std::vector<FairedChain>& chains) {
+  RunPieces out;
+  // Every chain read as pieces: its log-aesthetic segments, or its guide stretch cut where its
+  // curvature changes sign and every quarter turn (a C2 spline, whose κ′ jumps at its knots:
+  // re-expressed as spirals like any segment, it comes out G3 too).
+  for (const FairedChain& c : chains) {
+    if (c.segments.empty() && !c.guide) return std::nullopt;
+    // A guide's pieces cut at its curvature extrema too, as log-aesthetic segments are: one
+    // spiral's cubic κ(s) with κ′ = 0 at an extremum node follows a peak no piece straddles
+    // (a–z A–Z under G3, Open Sans's inflections 1.33× → 1.17× of the source's).
+    std::vector<PathPiece> own = c.guide ? guide_pieces(*c.guide, c.closed, true) : chain_pieces(c);
+    out.per_chain.push_back(own.size());
+    for (std::size_t k = 0; k < own.size(); ++k)
+      out.at_inflection.push_back((k == 0 && c.zero_curvature_start) || own[k].after_sign_change),
+          out.pieces.push_back(std::move(own[k]));
+  }
+  if (out.pieces.empty()) return std::nullopt;
+  return out;
+}
+
+G3Problem g3_problem(const RunPieces& segments, const SmoothRun& run, std::span<const std::vector<double>> cuts,
+                     bool equal_lengths) {
   G3Problem p;
   p.closed = run.closed;
+  p.pieces_per_chain = segments.per_chain;
   const auto end_kind = [](RunEndKind k) { return k == RunEndKind::line ? G3NodeKind::line : G3NodeKind::corner; };
   // The run's share of the line, less 1 % so that the line keeps a length, less what the G2
   // chain already slid back into it.
@@ -243,57 +264,49 @@ std::optional<G3Problem> g3_problem(const std::vector<FairedChain>& chains, cons
     const double slid_back = dot(at_start ? source_end - node : node - source_end, e.tangent);
     return std::max(0.99 * e.line_share - std::max(slid_back, 0.0), 0.0);
   };
-  // Every chain read as pieces: its log-aesthetic segments, or its guide stretch cut where its
-  // curvature changes sign and every quarter turn (a C2 spline, whose κ′ jumps at its knots:
-  // re-expressed as spirals like any segment, it comes out G3 too).
-  std::vector<PathPiece> segments;
-  // Whether the piece starts at κ = 0: where its chain meets the one before, or where a guide's
-  // curvature changes sign.
-  std::vector<bool> at_inflection;
-  for (const FairedChain& c : chains) {
-    if (c.segments.empty() && !c.guide) return std::nullopt;
-    // A guide's pieces cut at its curvature extrema too, as log-aesthetic segments are: one
-    // spiral's cubic κ(s) with κ′ = 0 at an extremum node follows a peak no piece straddles
-    // (a–z A–Z under G3, Open Sans's inflections 1.33× → 1.17× of the source's).
-    std::vector<PathPiece> own = c.guide ? guide_pieces(*c.guide, c.closed, true) : chain_pieces(c);
-    p.pieces_per_chain.push_back(own.size());
-    for (std::size_t k = 0; k < own.size(); ++k)
-      at_inflection.push_back((k == 0 && c.zero_curvature_start) || own[k].after_sign_change),
-          segments.push_back(std::move(own[k]));
-  }
-  if (segments.empty()) return std::nullopt;
-  const std::size_t m = segments.size();
+  const std::vector<PathPiece>& pieces = segments.pieces;
+  const std::size_t m = pieces.size();
   const auto start_of = [](const PathPiece& piece) { return piece.at(0.0); };
   const auto end_of = [](const PathPiece& piece) { return piece.at(piece.length); };
-  double angle = angle_of(start_of(segments.front()).tangent);
+  double angle = angle_of(start_of(pieces.front()).tangent);
   for (std::size_t i = 0; i < m; ++i) {
-    const PathPiece& seg = segments[i];
-    const int n = i < pieces.size() ? std::max(pieces[i], 1) : 1;
-    const std::vector<double> cuts = cut_places(seg, n, placement);
+    const PathPiece& seg = pieces[i];
+    const std::vector<double>& at = cuts[i];
+    const std::size_t n = at.size() - 1;
     LacPoint last = start_of(seg);
-    for (int k = 0; k < n; ++k) {
+    for (std::size_t k = 0; k < n; ++k) {
       G3NodeKind kind = G3NodeKind::smooth;
       double kappa = last.curvature;
       if (k == 0) {
-        if (at_inflection[i] && (run.closed || i > 0)) kind = G3NodeKind::inflection;
+        if (segments.at_inflection[i] && (run.closed || i > 0)) kind = G3NodeKind::inflection;
         if (!run.closed && i == 0) kind = end_kind(run.start.kind);
         // κ: the mean of the two sides (equal once the G2 solve converged).
-        if (i > 0 || run.closed) kappa = 0.5 * (kappa + end_of(segments[(i + m - 1) % m]).curvature);
+        if (i > 0 || run.closed) kappa = 0.5 * (kappa + end_of(pieces[(i + m - 1) % m]).curvature);
       }
       p.nodes.push_back({last.point, angle, kappa, kind, !run.closed && i == 0 && k == 0 ? room(run.start, last.point, true) : 0.0});
-      const LacPoint next = k + 1 == n ? end_of(seg) : seg.at(cuts[k + 1]);
+      const LacPoint next = k + 1 == n ? end_of(seg) : seg.at(at[k + 1]);
       // At equal lengths exactly L / n each, as before cuts were placed otherwise.
-      p.lengths.push_back(placement == CutPlacement::by_length ? seg.length / n : cuts[k + 1] - cuts[k]);
+      p.lengths.push_back(equal_lengths ? seg.length / static_cast<double>(n) : at[k + 1] - at[k]);
       p.run_piece.push_back(i);
       angle += turning_angle(last.tangent, next.tangent);
       last = next;
     }
   }
   if (!run.closed) {
-    const LacPoint end = end_of(segments.back());
+    const LacPoint end = end_of(pieces.back());
     p.nodes.push_back({end.point, angle, end.curvature, end_kind(run.end.kind), room(run.end, end.point, false)});
   }
   return p;
+}
+
+std::optional<G3Problem> g3_problem(const std::vector<FairedChain>& chains, const SmoothRun& run,
+                                    std::span<const int> pieces, CutPlacement placement) {
+  const std::optional<RunPieces> segments = run_pieces(chains);
+  if (!segments) return std::nullopt;
+  std::vector<std::vector<double>> cuts;
+  for (std::size_t i = 0; i < segments->pieces.size(); ++i)
+    cuts.push_back(cut_places(segments->pieces[i], i < pieces.size() ? std::max(pieces[i], 1) : 1, placement));
+  return g3_problem(*segments, run, cuts, placement == CutPlacement::by_length);
 }
 
 void adopt_spirals(std::vector<FairedChain>& chains, const G3Problem& problem, std::vector<PolynomialSpiral> spirals) {

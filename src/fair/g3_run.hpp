@@ -107,6 +107,24 @@ enum class CutPlacement { by_length, by_length_and_curvature };
 /// up to s, Σ|Δκ| (64 samples, linear between them); where κ is constant, at equal lengths.
 std::vector<double> cut_places(const PathPiece& piece, int n, CutPlacement placement);
 
+/// A run's chains read as pieces: a log-aesthetic segment, or a guide stretch's piece (cut where
+/// its curvature changes sign, every quarter turn and at its curvature extrema). They hold
+/// references into the chains, which must outlive them.
+struct RunPieces {
+  std::vector<PathPiece> pieces;
+  std::vector<bool> at_inflection;  ///< the piece starts at κ = 0: where its chain meets the one before, or a guide's κ changes sign
+  std::vector<std::size_t> per_chain;
+};
+
+/// Nullopt when a chain has neither segments nor a guide, or there is no chain at all.
+std::optional<RunPieces> run_pieces(const std::vector<FairedChain>& chains);
+
+/// The G3 problem with piece i cut at `cuts[i]` (arc lengths from its start, 0 and its length
+/// included), each node with the curve's own point, tangent and κ there; `equal_lengths`: the
+/// lengths as the piece's length over the cuts (cut_places by length), else their differences.
+G3Problem g3_problem(const RunPieces& pieces, const SmoothRun& run, std::span<const std::vector<double>> cuts,
+                     bool equal_lengths);
+
 /// `pieces[i]`: how many G3 segments the run's segment (or guide piece) i becomes (1 when not
 /// given), cut where `placement` says with its own point, tangent and κ there: more freedom
 /// where κ′ = 0 at an extremum would otherwise round the curvature's peak too wide, or where κ

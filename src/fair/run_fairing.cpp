@@ -8,6 +8,7 @@
 
 #include "aesthetic/lcg_slope.hpp"
 #include "fair/g2_chain.hpp"
+#include "fair/g3_local.hpp"
 #include "fair/g3_run.hpp"
 #include "fair/initial_tangents.hpp"
 #include "fair/junctions.hpp"
@@ -54,6 +55,8 @@ constexpr double max_held_turn = 0.2;
 // (Cantarell's S strayed 0.308 units of 0.30 through six rounds, FreeSerif's s 0.354, and
 // more rounds moved neither).
 constexpr double g3_overrun = 1.2;
+// Halvings of the pieces whose spirals fail, G3 piece by piece (try_local_g3).
+constexpr int max_local_rounds = 5;
 constexpr int max_guide_refinements = 3;  // doublings of a smoothing guide's spans
 constexpr double transition_shift_share = 0.25;  // of the budget, spent where a κ = 0 end leaves its line earlier
 
@@ -806,6 +809,50 @@ G3Attempt try_g3(FairedRun& result, const RunReference& source, const SmoothRun&
   return {false, held ? std::move(held) : std::move(strayed), why, stalled};
 }
 
+// G3 piece by piece (fair/g3_local.hpp) where no whole-run attempt meets it: the G2 curve's
+// pieces refitted between their own nodes, one κ′ shared at each node; a piece whose spiral
+// turns κ back or across zero, or strays past the budget, is cut in two at its middle, at most
+// `max_local_rounds` times. Kept only where κ changes sign no more often than along the G2
+// curve and varies at most `most_variation`.
+bool try_local_g3(FairedRun& result, const RunReference& source, const SmoothRun& run, double budget,
+                  double zero_curvature, double most_variation) {
+  const std::optional<RunPieces> pieces = run_pieces(result.chains);
+  if (!pieces) return false;
+  std::vector<std::vector<double>> cuts;
+  for (const PathPiece& p : pieces->pieces) cuts.push_back({0.0, p.length});
+  for (int round = 0; round < max_local_rounds; ++round) {
+    G3Problem problem = g3_problem(*pieces, run, cuts, false);
+    const LocalG3 local = fit_g3_locally(problem, local_targets(*pieces, cuts, run.closed), zero_curvature);
+    std::vector<bool> failed;
+    for (const std::optional<PolynomialSpiral>& s : local.spirals) failed.push_back(!s);
+    if (local.ok()) {
+      G3Result g3;
+      g3.spirals = local.found(), g3.ends = local.ends;
+      const std::vector<double> d = distance_by_spiral(g3, problem, source, budget);
+      for (std::size_t i = 0; i < d.size(); ++i) failed[i] = d[i] > budget;
+      if (std::none_of(failed.begin(), failed.end(), [](bool f) { return f; })) {
+        const std::vector<PathPiece> faired = curve_pieces(g3.spirals);
+        if (sign_changes_along(faired, zero_curvature) > sign_changes_along(result.chains, zero_curvature) ||
+            curvature_variation_along(faired) > most_variation)
+          return false;
+        const double worst = *std::max_element(d.begin(), d.end());
+        adopt(result, PartialG3{std::move(problem), std::move(g3.spirals), worst, 0});
+        return true;
+      }
+    }
+    // Segment i is the interval of its run piece that starts at the piece's i − first cut.
+    std::vector<std::vector<double>> next = cuts;
+    for (std::size_t i = 0, first = 0; i < failed.size(); ++i) {
+      const std::size_t p = problem.run_piece[i];
+      if (i > 0 && p != problem.run_piece[i - 1]) first = i;
+      if (failed[i]) next[p].push_back(0.5 * (cuts[p][i - first] + cuts[p][i - first + 1]));
+    }
+    for (std::vector<double>& c : next) std::sort(c.begin(), c.end());
+    cuts = std::move(next);
+  }
+  return false;
+}
+
 // The run made G3 in full by the first of three attempts that does it:
 // - Fritsch–Butland κ′ (g3_run.hpp's SlopeRule), cut at equal lengths;
 // - the same, but cut where κ changes fast too once a solve stalls (a stall is mostly a spiral
@@ -833,6 +880,7 @@ void reexpress_as_g3(FairedRun& result, const RunReference& source, const Smooth
        attempt(SlopeRule::harmonic_mean, CutPlacement::by_length_and_curvature, most_variation).met) ||
       attempt(SlopeRule::smooth_mean, CutPlacement::by_length_and_curvature, most_variation).met)
     return;
+  if (try_local_g3(result, source, run, budget, zero_curvature, most_variation)) return;
   if (first.partial) adopt(result, *first.partial);
   else result.g3_shortfall = first.why;
 }

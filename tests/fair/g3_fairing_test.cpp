@@ -1,7 +1,7 @@
 // --continuity g3 on whole glyphs of a real font (the S and the a stalled until a stall was
 // cut): every smooth run comes out G3, and the faired pieces the fairing reports (what `fair
 // --segments` exports) are checked from their own data:
-// each spiral rebuilt from its start frame, length and end κ, κ′ reaches the end it reports
+// each spiral rebuilt from its start frame, length, end κ, κ′ and bumps reaches the end it reports
 // and keeps κ monotone, and at every smooth join the two sides agree in point, tangent, κ and
 // κ′ (a line's κ′ being 0), line joins included.
 #include "fair/glyph_fairing.hpp"
@@ -53,7 +53,8 @@ void expect_g3(const std::string& name, const GlyphFairing& r, const FairSetting
       if (p.kind == FairedPieceKind::polynomial_spiral) {
         ++spirals;
         const CurvatureEnd start{p.start.point, angle_of(p.start.tangent), p.start.curvature, *p.start.curvature_derivative};
-        const PolynomialSpiral rebuilt(start, p.length, p.end.curvature, *p.end.curvature_derivative, 0.0, 0.0);
+        const auto [c1, c2] = p.bumps.value_or(std::pair{0.0, 0.0});
+        const PolynomialSpiral rebuilt(start, p.length, p.end.curvature, *p.end.curvature_derivative, c1, c2);
         EXPECT_LE(distance(rebuilt.end().point, p.end.point), 1e-6) << name << " piece " << i;
         EXPECT_NEAR(cross(rebuilt.end().tangent, p.end.tangent), 0.0, 1e-9) << name << " piece " << i;
         EXPECT_TRUE(rebuilt.curvature_monotone()) << name << " piece " << i;

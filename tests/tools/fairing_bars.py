@@ -22,8 +22,8 @@ between cubics of |κ′− − κ′+| / max(|κ′−|, |κ′+|), and (given 
 the G2 output. Given --segments (what `glyphfair fair --segments` wrote), the bar on the
 faired segments: at every smooth join between pieces the same relative κ′ jump at most 1e-6
 (κ′ = 0 on both sides matching), each polynomial spiral first rebuilt here from its start
-frame, length and end κ, κ′ (κ(s) the cubic Hermite, position by Simpson's rule) and required
-to reach the end point and tangent it reports.
+frame, length, end κ, κ′ and bumps (κ(s) the cubic Hermite plus the bumps, position by
+Simpson's rule) and required to reach the end point and tangent it reports.
 
 usage: fairing_bars.py FONT FAIRED.ufo --profile handwriting|text [--glyphs a,b,...]
                        [--continuity g3 [--g2-ufo G2.ufo] [--segments SEGMENTS.json]] [--json OUT]
@@ -178,17 +178,21 @@ def glyph_contours(glyphset, name, decompose):
 
 
 def spiral_end(piece, steps=400):
-    """The far end of a polynomial spiral piece, from its start frame, length and end κ, κ′."""
+    """The far end of a polynomial spiral piece, from its start frame, length, end κ, κ′ and
+    bumps (c1·16u²(1−u)² + c2·20u²(1−u)²(2u−1) added to κ; 0 where not given)."""
     a, b = piece["start"], piece["end"]
     L = piece["length"]
     k0, d0, k1, d1 = a["curvature"], L * a["dcurvature_ds"], b["curvature"], L * b["dcurvature_ds"]
+    c1, c2 = piece.get("symmetric_bump", 0.0), piece.get("odd_bump", 0.0)
 
-    def theta(u):  # θ0 + L ∫ Hermite(κ0, κ0′, κ1, κ1′)
+    def theta(u):  # θ0 + L ∫ (Hermite(κ0, κ0′, κ1, κ1′) + bumps)
         h00 = u - u**3 + u**4 / 2
         h10 = u**2 / 2 - 2 * u**3 / 3 + u**4 / 4
         h01 = u**3 - u**4 / 2
         h11 = u**4 / 4 - u**3 / 3
-        return a["tangent_angle"] + L * (k0 * h00 + d0 * h10 + k1 * h01 + d1 * h11)
+        b1 = 16 * (u**3 / 3 - u**4 / 2 + u**5 / 5)
+        b2 = 20 * (-(u**3) / 3 + u**4 - u**5 + u**6 / 3)
+        return a["tangent_angle"] + L * (k0 * h00 + d0 * h10 + k1 * h01 + d1 * h11 + c1 * b1 + c2 * b2)
 
     us = np.linspace(0.0, 1.0, steps + 1)
     w = np.ones(steps + 1)
