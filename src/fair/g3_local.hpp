@@ -2,9 +2,9 @@
 // node keeps the G2 curve's point, tangent and κ and takes one κ′ for both its sides; each piece
 // between two nodes becomes the polynomial spiral, bumps included (aesthetic/polynomial_spiral.hpp),
 // that meets both its ends' frames. No node moves, so no junction that cannot be met holds the
-// others back; the bumps pay for the κ′ changed at the nodes. Where a spiral cannot keep its
-// piece's curvature monotone and of one sign, the caller cuts the piece in two: a shorter piece
-// is nearer its own cubic κ(s).
+// others back; the bumps pay for the κ′ changed at the nodes. Where a spiral's κ turns or changes
+// sign more often than the G2 curve's between the same nodes, the caller cuts the piece in two:
+// a shorter piece is nearer its own cubic κ(s).
 #pragma once
 
 #include <optional>
@@ -22,8 +22,8 @@ struct NodeSlopes {
 };
 
 /// How κ runs along a segment: how often it turns (by a thousandth of the run's largest |κ| at
-/// its nodes or more: less is noise) and changes sign (|κ| under that, or the zero given, having
-/// no sign), from 32 samples.
+/// its nodes or more: less is noise) and changes sign (|κ| under the zero given having no sign),
+/// from 33 samples.
 struct SegmentShape {
   int turns = 0;
   int sign_changes = 0;
