@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "fair/cubic_change.hpp"
-
 namespace gf {
 
 namespace {
@@ -20,20 +18,20 @@ std::optional<double> slope_at(const PathPiece& piece, double s, bool ahead) {
   return (piece.at(other).curvature - piece.at(s).curvature) / (other - s);
 }
 
-// How κ runs over `curvatures` (in order): its turns, by `noise` or more, and its sign changes,
-// |κ| under `zero` having no sign.
-SegmentShape shape_of(const std::vector<double>& curvatures, double noise, double zero) {
+// How κ runs over `curvatures` (in order): how far it turns back (Σ|Δκ| − |κ(end) − κ(start)|)
+// and how often it changes sign, |κ| under `zero` having no sign.
+SegmentShape shape_of(const std::vector<double>& curvatures, double zero) {
   SegmentShape out;
-  TurnCounter turns;
-  double last_sign = 0.0;
-  for (const double c : curvatures) {
-    turns.add(c, noise);
+  double walked = 0.0, last_sign = 0.0;
+  for (std::size_t k = 0; k < curvatures.size(); ++k) {
+    const double c = curvatures[k];
+    if (k > 0) walked += std::abs(c - curvatures[k - 1]);
     if (std::abs(c) < zero) continue;
     const double sign = c > 0.0 ? 1.0 : -1.0;
     out.sign_changes += last_sign != 0.0 && sign != last_sign;
     last_sign = sign;
   }
-  out.turns = turns.turns;
+  out.turn_back = walked - std::abs(curvatures.back() - curvatures.front());
   return out;
 }
 
@@ -101,9 +99,9 @@ LocalG3 fit_g3_locally(const G3Problem& problem, const LocalTargets& targets, do
       if (!f.ok()) return std::nullopt;
       std::vector<double> kappa;
       for (const LacPoint& q : f.spiral->sample(shape_samples)) kappa.push_back(q.curvature);
-      const SegmentShape shape = shape_of(kappa, noise, zero);
-      const SegmentShape g2 = shape_of(targets.curvatures[i], noise, zero);
-      if (shape.turns > g2.turns || shape.sign_changes > g2.sign_changes) return std::nullopt;
+      const SegmentShape shape = shape_of(kappa, std::max(zero, noise));
+      const SegmentShape g2 = shape_of(targets.curvatures[i], std::max(zero, noise));
+      if (shape.turn_back > g2.turn_back + noise || shape.sign_changes > g2.sign_changes) return std::nullopt;
       return f.spiral;
     };
     std::optional<PolynomialSpiral> spiral = fit(out.ends[i], out.ends[k]);

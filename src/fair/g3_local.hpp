@@ -2,9 +2,9 @@
 // node keeps the G2 curve's point, tangent and κ and takes one κ′ for both its sides; each piece
 // between two nodes becomes the polynomial spiral, bumps included (aesthetic/polynomial_spiral.hpp),
 // that meets both its ends' frames. No node moves, so no junction that cannot be met holds the
-// others back; the bumps pay for the κ′ changed at the nodes. Where a spiral's κ turns or changes
-// sign more often than the G2 curve's between the same nodes, the caller cuts the piece in two:
-// a shorter piece is nearer its own cubic κ(s).
+// others back; the bumps pay for the κ′ changed at the nodes. Where a spiral's κ turns back
+// farther or changes sign more often than the G2 curve's between the same nodes, the caller cuts
+// the piece in two: a shorter piece is nearer its own cubic κ(s).
 #pragma once
 
 #include <optional>
@@ -21,11 +21,11 @@ struct NodeSlopes {
   std::optional<double> before, after;
 };
 
-/// How κ runs along a segment: how often it turns (by a thousandth of the run's largest |κ| at
-/// its nodes or more: less is noise) and changes sign (|κ| under the zero given having no sign),
-/// from 33 samples.
+/// How κ runs along a segment, from 33 samples: how far it turns back (Σ|Δκ| − |κ(end) −
+/// κ(start)|, 0 where monotone) and how often it changes sign (|κ| under the zero given, or a
+/// thousandth of the run's largest |κ| at its nodes, having no sign: less is noise).
 struct SegmentShape {
-  int turns = 0;
+  double turn_back = 0.0;
   int sign_changes = 0;
 };
 
@@ -53,8 +53,9 @@ struct LocalG3 {
 };
 
 /// Each segment of `problem` fitted on its own between its nodes' frames: kept where the fit
-/// converges and its κ turns and changes sign (SegmentShape) no more often than the G2 curve's
-/// there. A line end that gives no such spiral slides along its line.
+/// converges and its κ turns back no farther, plus a thousandth of the run's largest |κ| at its
+/// nodes, and changes sign no more often (SegmentShape) than the G2 curve's there. A line end
+/// that gives no such spiral slides along its line.
 LocalG3 fit_g3_locally(const G3Problem& problem, const LocalTargets& targets, double zero);
 
 }  // namespace gf
