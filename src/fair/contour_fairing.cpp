@@ -627,9 +627,11 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& requested
     limits.min_turn_deg = settings.corner_angle_deg, limits.deviation_units = settings.tolerance_units;
     if (TightTurns t = find_tight_turns(stood, limits); !t.turns.empty()) turned = std::move(t);
   }
-  if (turned) out = fair_curve(source, turned->contour, any_stood ? source : turned->contour, turned->turns, settings);
+  // What the fairing of `curve` measures its distances from.
+  const auto reference_for = [&](const Contour& curve) -> const Contour& { return any_stood ? source : curve; };
+  if (turned) out = fair_curve(source, turned->contour, reference_for(turned->contour), turned->turns, settings);
   if (!turned || !out.faired || !out.runs_as_drawn.empty()) {
-    ContourFairing plain = fair_curve(source, stood, any_stood ? source : stood, {}, settings);
+    ContourFairing plain = fair_curve(source, stood, reference_for(stood), {}, settings);
     if (!out.faired || (plain.faired && plain.runs_as_drawn.size() < out.runs_as_drawn.size())) out = std::move(plain);
   }
   if (out.faired) fillet_kinks(out, source, settings);

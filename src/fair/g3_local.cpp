@@ -12,10 +12,11 @@ constexpr double noise_share = 1e-3;  // of a run's largest |κ|: turning back b
 
 // κ′ of `piece` at s, on the side ahead of s or behind it.
 std::optional<double> slope_at(const PathPiece& piece, double s, bool ahead) {
-  if (const std::optional<double> own = piece.at(s).curvature_derivative) return own;
+  const LacPoint here = piece.at(s);
+  if (here.curvature_derivative) return here.curvature_derivative;
   const double other = std::clamp(s + (ahead ? 1.0 : -1.0) * piece.length / 64.0, 0.0, piece.length);
   if (other == s) return std::nullopt;
-  return (piece.at(other).curvature - piece.at(s).curvature) / (other - s);
+  return (piece.at(other).curvature - here.curvature) / (other - s);
 }
 
 // How κ runs over `curvatures` (in order): how far it turns back (Σ|Δκ| − |κ(end) − κ(start)|)
@@ -91,6 +92,7 @@ LocalG3 fit_g3_locally(const G3Problem& problem, const LocalTargets& targets, do
   const std::size_t m = problem.lengths.size();
   for (std::size_t i = 0; i < m; ++i) {
     const std::size_t k = problem.closed ? (i + 1) % m : i + 1;
+    const SegmentShape g2 = shape_of(targets.curvatures[i], std::max(zero, noise));
     // The spiral from a to b, if it keeps the G2 curve's shape there.
     const auto fit = [&](const CurvatureEnd& a, CurvatureEnd b) -> std::optional<PolynomialSpiral> {
       // A closed run's last segment ends where its first starts, a whole turn on.
@@ -100,7 +102,6 @@ LocalG3 fit_g3_locally(const G3Problem& problem, const LocalTargets& targets, do
       std::vector<double> kappa;
       for (const LacPoint& q : f.spiral->sample(shape_samples)) kappa.push_back(q.curvature);
       const SegmentShape shape = shape_of(kappa, std::max(zero, noise));
-      const SegmentShape g2 = shape_of(targets.curvatures[i], std::max(zero, noise));
       if (shape.turn_back > g2.turn_back + noise || shape.sign_changes > g2.sign_changes) return std::nullopt;
       return f.spiral;
     };

@@ -25,6 +25,8 @@ constexpr double target_jump = 0.03;  // below the check's 5 %, with room for it
 constexpr double checked_jump = 0.05;  // the check's g2-jump (HandleStepLimits::counted_jump_cost)
 constexpr double wrong_way = 1e4;     // an inflection or extremum the unrounded cubic lacks
 constexpr double infeasible = std::numeric_limits<double>::infinity();
+constexpr double kink_deg = JoinThresholds{}.kink_max_deg;  // geom/join.hpp's kink limit
+constexpr double kink_limit = radians(kink_deg);
 // Curvature variation a rounded cubic adds inside, relative to its unrounded largest |κ|: free
 // up to 5 %, then weighed a third of a matching curvature jump (whose cost rises 100 per unit),
 // so G2 stays first. Measured: Because We Learn TV 0.59 → 0.55× with g2-jumps 11.0 → 10.7 %.
@@ -163,7 +165,7 @@ bool corner_to_keep(const std::vector<OutlineNode>& ideal, bool closed, std::siz
   const OutlineNode& node = ideal[k];
   if (node.smooth || node.in_handle.has_value() == node.out_handle.has_value()) return false;
   const double turn = turn_at(ideal, closed, k);
-  return turn >= radians(JoinThresholds{}.kink_max_deg + 1.0) && turn < std::numbers::pi;
+  return turn >= radians(kink_deg + 1.0) && turn < std::numbers::pi;
 }
 
 // Which nodes of an outline join two cubics, meet a line, or start a cubic.
@@ -399,9 +401,8 @@ CubicChoices cubic_choices(const std::vector<OutlineNode>& nodes, std::span<cons
         // Nor turn a corner at a line into a kink, or smooth: the kink pass then makes it smooth
         // and fairs the contour again, and the grid may give that join no G2 (Lato's S: a 4.3°
         // corner rounded straight, then κ·UPM 3.4 where its curve left the line).
-        const double kink = radians(JoinThresholds{}.kink_max_deg);
-        if (judge.keeps_corner(i) && turn_at(nodes, judge.closed(), i, {}, out) < kink) cost += wrong_way;
-        if (judge.keeps_corner(j) && turn_at(nodes, judge.closed(), j, in) < kink) cost += wrong_way;
+        if (judge.keeps_corner(i) && turn_at(nodes, judge.closed(), i, {}, out) < kink_limit) cost += wrong_way;
+        if (judge.keeps_corner(j) && turn_at(nodes, judge.closed(), j, in) < kink_limit) cost += wrong_way;
         // Nor fold back on itself past its chord.
         if (t.overreach > ideal.overreach) cost += wrong_way * (1.0 + t.overreach);
         // Nor, short, loop or cusp within it.
@@ -875,7 +876,7 @@ std::vector<std::size_t> seat_line_joins_at_corners(std::vector<OutlineNode>& no
     const bool before = line_join->before;
     const std::size_t at = line_join->at;
     const Vec2 join = nodes[at].point, line_far = nodes[before ? (h + n - 1) % n : (j + 1) % n].point;
-    const double least_turn = std::min(radians(JoinThresholds{}.kink_max_deg), turn_at(ideal, joins.closed, i));
+    const double least_turn = std::min(kink_limit, turn_at(ideal, joins.closed, i));
     const NodeChange change(nodes, joins, judge, flat, i);
     const OutlineNode kept = nodes[i];
     double best_cost = change.cost();
