@@ -13,6 +13,7 @@ inline const std::string inter_variable = fonts + "/Inter/Inter-subset.var.ttf";
 inline const std::string inconsolata = fonts + "/Inconsolata/Inconsolata-subset.otf";
 inline const std::string cantarell = fonts + "/Cantarell/Cantarell-Regular-subset.otf";  // S
 inline const std::string lato = fonts + "/Lato/Lato-Regular-subset.ttf";  // c, t, S
+inline const std::string kristi = fonts + "/Kristi/Kristi-subset.ttf";  // N
 inline const std::string cff2_variable = fonts + "/Inter/GlyphfairProbe-CFF2.var.otf";
 
 }  // namespace gf::test

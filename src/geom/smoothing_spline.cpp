@@ -120,8 +120,13 @@ class SmoothingProblem {
         c.origin = j == 0 ? points.front() : points.back();
         continue;
       }
-      const bool start_held = !closed && j == 1 && ends.start_tangent && norm(*ends.start_tangent) > 0.0;
-      const bool end_held = !closed && j == n - 2 && ends.end_tangent && norm(*ends.end_tangent) > 0.0;
+      // Held on an end's tangent line: the control next to the end, and the one after it where
+      // the end is straight.
+      const bool straight = ends.straight_ends && n >= 6;
+      const bool start_held = !closed && (j == 1 || (straight && j == 2)) && ends.start_tangent &&
+                              norm(*ends.start_tangent) > 0.0;
+      const bool end_held = !closed && (j == n - 2 || (straight && j == n - 3)) && ends.end_tangent &&
+                            norm(*ends.end_tangent) > 0.0;
       if (start_held || end_held) {
         const Vec2 t = start_held ? *ends.start_tangent : -*ends.end_tangent;
         c.origin = start_held ? points.front() : points.back();

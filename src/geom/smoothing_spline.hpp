@@ -26,6 +26,10 @@ struct SmoothingEnds {
   /// a third of a span's length ahead, so the curve cannot follow points that double back
   /// there and hook round.
   std::optional<Vec2> start_tangent, end_tangent;
+  /// Where a tangent is held, κ = 0 there too: the next control is held on the tangent line as
+  /// well (r'' along r'), as a curve leaving a line with κ = 0 does. Only on a spline of three
+  /// spans or more, whose two ends then hold different controls.
+  bool straight_ends = false;
 };
 
 /// Lobes of the curvature (stretches where it keeps one sign) that turn less than

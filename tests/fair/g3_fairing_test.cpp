@@ -115,6 +115,16 @@ TEST(G3Fairing, NodesTheSolveCarriesAcrossZeroAreHeldAndTheRunComesOutG3) {
   expect_g3("R", fair_g3("R", settings, test::because_we_learn, Rounding::integers, FairProfile::handwriting), settings);
 }
 
+TEST(G3Fairing, ARunWhoseGuideBendsAtItsLineComesOutG3OnAStraightEndedGuide) {
+  // Kristi's N: the smoothing guide of its right stroke holds the line's tangent where the run
+  // leaves the stem but bends at once (κ·UPM 1.9), so the G2 curve jumps to κ = 0 at the line.
+  // No spiral leaving the line with κ = κ′ = 0 follows it without turning κ back, and every G3
+  // attempt fell short (3 smooth joins of the segments off G3). Faired again on a guide held
+  // straight at its lines, the run is G3.
+  FairSettings settings;
+  expect_g3("N", fair_g3("N", settings, test::kristi, Rounding::none, FairProfile::handwriting), settings);
+}
+
 TEST(G3Fairing, ARunStallingThroughFourCutsComesOutG3AfterSix) {
   // Inter's a: one of its runs stalled 0.003 from meeting its junctions after four rounds of
   // cutting every segment in two, and stayed G2; the fifth and sixth rounds solve it.

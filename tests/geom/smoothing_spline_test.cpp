@@ -1,9 +1,10 @@
 // The smoothing spline against oracles: a parabola lies in the penalty's null space (no third
 // derivative), so a tight fit smooths as hard as it can and still keeps its curvature; a circle with
 // noise inside the tolerance comes back within the tolerance with its curvature of one sign
-// and near 1/R; held end tangents and interpolated ends are exact; a noisy rounded rectangle keeps
-// its curvature's eight extrema, its variation and its straight sides under the sparse penalty,
-// and, its sides waving, loses most of its inflections where small lobes are merged.
+// and near 1/R; held end tangents and interpolated ends are exact, and so is κ = 0 at ends held
+// straight; a noisy rounded rectangle keeps its curvature's eight extrema, its variation and its
+// straight sides under the sparse penalty, and, its sides waving, loses most of its inflections
+// where small lobes are merged.
 #include "geom/smoothing_spline.hpp"
 
 #include <gtest/gtest.h>
@@ -86,6 +87,45 @@ TEST(SmoothingSpline, HeldEndTangentsAndEndPointsAreExact) {
   EXPECT_GT(t0.y, 0.0);
   EXPECT_NEAR(t1.x, 0.0, 1e-9);
   EXPECT_LT(t1.y, 0.0);
+}
+
+// A half circle of radius 40 whose ends meet lines tangentially: held only in direction, the
+// spline leaves each end as bent as the circle (κ·r near 1); held straight too, it leaves each
+// with κ = 0 exactly (its first three controls on the line), still within the tolerance, and
+// its tangents as held. The fairing asks for this where G3 must leave a line with κ = κ′ = 0.
+TEST(SmoothingSpline, StraightEndsLeaveTheirLinesWithZeroCurvature) {
+  const double r = 40.0, tolerance = 2.0;
+  std::vector<Vec2> pts;
+  for (int i = 0; i <= 250; ++i) {
+    const double a = std::numbers::pi * i / 250 - std::numbers::pi / 2;
+    pts.push_back({r * std::cos(a), r * std::sin(a)});
+  }
+  SmoothingEnds ends;
+  ends.start_tangent = Vec2{1.0, 0.0};
+  ends.end_tangent = Vec2{-1.0, 0.0};
+  const auto end_curvatures = [](const BSplineFit& fit) {
+    return std::pair{*curvature(derivatives_at(fit.spans.front(), 0.0)),
+                     *curvature(derivatives_at(fit.spans.back(), 1.0))};
+  };
+  const BSplineFit bent = fit_smoothing_spline(pts, tolerance, 12, false, ends, SmoothingPenalty::sparse);
+  ASSERT_FALSE(bent.spans.empty());
+  EXPECT_GT(end_curvatures(bent).first * r, 0.5);
+  EXPECT_GT(end_curvatures(bent).second * r, 0.5);
+  ends.straight_ends = true;
+  const BSplineFit straight = fit_smoothing_spline(pts, tolerance, 12, false, ends, SmoothingPenalty::sparse);
+  ASSERT_FALSE(straight.spans.empty());
+  EXPECT_LE(straight.max_residual, tolerance * 1.001);
+  EXPECT_NEAR(end_curvatures(straight).first * r, 0.0, 1e-9);
+  EXPECT_NEAR(end_curvatures(straight).second * r, 0.0, 1e-9);
+  const Vec2 t0 = straight.spans.front().p[1] - straight.spans.front().p[0];
+  const Vec2 t1 = straight.spans.back().p[3] - straight.spans.back().p[2];
+  EXPECT_NEAR(t0.y, 0.0, 1e-9);
+  EXPECT_GT(t0.x, 0.0);
+  EXPECT_NEAR(t1.y, 0.0, 1e-9);
+  EXPECT_LT(t1.x, 0.0);
+  // κ then rises into the circle's: a fair ramp, one sign along the whole run.
+  for (const Cubic& c : straight.spans)
+    for (int k = 1; k <= 8; ++k) EXPECT_GT(*curvature(derivatives_at(c, k / 8.0)), -1e-12);
 }
 
 }  // namespace
