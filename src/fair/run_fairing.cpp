@@ -973,6 +973,23 @@ FairedRun fair_run_on(const SmoothRun& run, const RunReference& source, const st
 // G3 at every smooth join: spirals throughout, no line join held to G2.
 bool fully_g3(const FairedRun& r) { return r.g3() && r.g2_line_joins == 0; }
 
+// The whole run as one stretch of its guide (no chain), re-expressed as G3 (fair_run).
+FairedRun g3_on_guide(const SmoothRun& run, const RunReference& source, const SmoothRun& guide,
+                      const FairSettings& settings, double budget) {
+  const auto ref = std::make_shared<const RunReference>(guide);
+  ChainSpan span;
+  span.s = {0.0, ref->length()};
+  span.closed = run.closed;
+  span.zero_start = !run.closed && run.start.kind == RunEndKind::line;
+  span.zero_end = !run.closed && run.end.kind == RunEndKind::line;
+  FairedRun result;
+  result.chains.push_back(guide_stretch(span, ref, guide, settings.feature_window_units));
+  result.guide_stretches = 1;
+  result.ok = true;
+  reexpress_as_g3(result, source, run, budget, 2e-6 * settings.flat_curvature);
+  return result;
+}
+
 }  // namespace
 
 FairedRun fair_run(const SmoothRun& run, const FairSettings& settings, double budget, RunBasis basis) {
@@ -995,22 +1012,29 @@ FairedRun fair_run(const SmoothRun& run, const FairSettings& settings, double bu
   if (settings.profile == FairProfile::handwriting) {
     const std::optional<SmoothRun> smoothed = guide(SmoothingPenalty::sparse, false);
     FairedRun faired = fair_on(smoothed, max_rounds, !smoothed);
-    // A guide that still bends where it meets a line (κ·UPM 22 at dkg Bold's Q tail) leaves
-    // the G2 curve a jump of κ there, which no spiral leaving the line with κ = κ′ = 0 follows
-    // without turning back: where G3 falls short of a run that meets a line, the run is faired
-    // again on a guide that leaves its lines straight, and that is kept where it comes G3. Only
-    // there: on every run, the handwriting fonts' G2 bars came out worse (Breip's g2-jumps
-    // 0.98 → 2.09 %, Comic Neue's TV 0.705× → 0.819×).
+    // Where G3 falls short of a guided run with chains, two more tries, each kept only where it
+    // comes G3 in full:
+    // - A run that meets a line is faired again on a guide held straight at its lines. A guide
+    //   that still bends where it meets a line (κ·UPM 22 at dkg Bold's Q tail) leaves the G2
+    //   curve a jump of κ there, which no spiral leaving the line with κ = κ′ = 0 follows
+    //   without turning back. Only here: on every run, the handwriting fonts' G2 bars came out
+    //   worse (Breip's g2-jumps 0.98 → 2.09 %, Comic Neue's TV 0.705× → 0.819×).
+    // - Then the run is re-expressed from its guide alone (held straight where it meets a
+    //   line). A guide stretch between chains takes their frames at its ends, the guide's mean
+    //   point and tangent over the feature window, off its own (dkg's T: 0.0055 rad, with the
+    //   guide's κ changing sign a unit before the join); one stretch has its own throughout.
+    if (settings.continuity != Continuity::g3 || !smoothed || !faired.ok || faired.chains.empty() || fully_g3(faired))
+      return faired;
     const bool meets_line =
         !run.closed && (run.start.kind == RunEndKind::line || run.end.kind == RunEndKind::line);
-    if (settings.continuity == Continuity::g3 && faired.ok && meets_line && !fully_g3(faired)) {
-      const std::optional<SmoothRun> straight = guide(SmoothingPenalty::sparse, true);
-      if (straight) {
-        FairedRun again = fair_on(straight, max_rounds, false);
-        if (again.ok && fully_g3(again)) return again;
-      }
+    const std::optional<SmoothRun> retry_guide = meets_line ? guide(SmoothingPenalty::sparse, true) : smoothed;
+    if (!retry_guide) return faired;
+    if (meets_line) {
+      FairedRun again = fair_on(retry_guide, max_rounds, false);
+      if (again.ok && fully_g3(again)) return again;
     }
-    return faired;
+    FairedRun on_guide = g3_on_guide(run, source, *retry_guide, settings, budget);
+    return fully_g3(on_guide) ? on_guide : faired;
   }
   if (basis != RunBasis::guide)
     return fair_on(std::nullopt, max_rounds, basis == RunBasis::own_with_jumps);
