@@ -64,6 +64,17 @@ TEST(SmoothingSpline, ANoisyCircleComesBackRoundWithinTheTolerance) {
   EXPECT_NEAR(distance(fit.spans.back().p[3], fit.spans.front().p[0]), 0.0, 1e-9);
 }
 
+// The fit leaves its start along `start` and arrives at its end along `end` (unit vectors), to
+// 1e-9 across them.
+void expect_end_tangents(const BSplineFit& fit, Vec2 start, Vec2 end) {
+  const Vec2 t0 = fit.spans.front().p[1] - fit.spans.front().p[0];
+  const Vec2 t1 = fit.spans.back().p[3] - fit.spans.back().p[2];
+  EXPECT_NEAR(cross(t0, start), 0.0, 1e-9);
+  EXPECT_GT(dot(t0, start), 0.0);
+  EXPECT_NEAR(cross(t1, end), 0.0, 1e-9);
+  EXPECT_GT(dot(t1, end), 0.0);
+}
+
 TEST(SmoothingSpline, HeldEndTangentsAndEndPointsAreExact) {
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> noise(-1.0, 1.0);
@@ -81,12 +92,7 @@ TEST(SmoothingSpline, HeldEndTangentsAndEndPointsAreExact) {
   EXPECT_LE(fit.max_residual, 3.0 * 1.001);
   EXPECT_EQ(fit.spans.front().p[0], pts.front());
   EXPECT_EQ(fit.spans.back().p[3], pts.back());
-  const Vec2 t0 = fit.spans.front().p[1] - fit.spans.front().p[0];
-  const Vec2 t1 = fit.spans.back().p[3] - fit.spans.back().p[2];
-  EXPECT_NEAR(t0.x, 0.0, 1e-9);
-  EXPECT_GT(t0.y, 0.0);
-  EXPECT_NEAR(t1.x, 0.0, 1e-9);
-  EXPECT_LT(t1.y, 0.0);
+  expect_end_tangents(fit, {0.0, 1.0}, {0.0, -1.0});
 }
 
 // A half circle of radius 40 whose ends meet lines tangentially: held only in direction, the
@@ -117,12 +123,7 @@ TEST(SmoothingSpline, StraightEndsLeaveTheirLinesWithZeroCurvature) {
   EXPECT_LE(straight.max_residual, tolerance * 1.001);
   EXPECT_NEAR(end_curvatures(straight).first * r, 0.0, 1e-9);
   EXPECT_NEAR(end_curvatures(straight).second * r, 0.0, 1e-9);
-  const Vec2 t0 = straight.spans.front().p[1] - straight.spans.front().p[0];
-  const Vec2 t1 = straight.spans.back().p[3] - straight.spans.back().p[2];
-  EXPECT_NEAR(t0.y, 0.0, 1e-9);
-  EXPECT_GT(t0.x, 0.0);
-  EXPECT_NEAR(t1.y, 0.0, 1e-9);
-  EXPECT_LT(t1.x, 0.0);
+  expect_end_tangents(straight, {1.0, 0.0}, {-1.0, 0.0});
   // κ then rises into the circle's: a fair ramp, one sign along the whole run.
   for (const Cubic& c : straight.spans)
     for (int k = 1; k <= 8; ++k) EXPECT_GT(*curvature(derivatives_at(c, k / 8.0)), -1e-12);
