@@ -902,6 +902,9 @@ LacPoint FairedChain::end_frame() const {
 
 namespace {
 
+// |κ| under which G3 counts no sign: the check's |κ|·UPM of 1e-6.
+double unsigned_curvature(const FairSettings& settings) { return 2e-6 * settings.flat_curvature; }
+
 // The run faired on `guide` (its smoothing guide) or, without one, on its source itself, in at
 // most `rounds` rounds; `keep_stalled` and `leave_lines` as fair_chain takes them.
 FairedRun fair_run_on(const SmoothRun& run, const RunReference& source, const std::optional<SmoothRun>& guide,
@@ -958,7 +961,7 @@ FairedRun fair_run_on(const SmoothRun& run, const RunReference& source, const st
     if (cuts.empty() && drops.empty()) {
       result.ok = true;
       if (settings.continuity == Continuity::g3)
-        reexpress_as_g3(result, source, run, budget, 2e-6 * settings.flat_curvature);  // the check's |κ|·UPM of 1e-6
+        reexpress_as_g3(result, source, run, budget, unsigned_curvature(settings));
       return result;
     }
     for (const double c : cuts) junctions.push_back({c, JunctionKind::split});
@@ -986,7 +989,7 @@ FairedRun g3_on_guide(const SmoothRun& run, const RunReference& source, const Sm
   result.chains.push_back(guide_stretch(span, ref, guide, settings.feature_window_units));
   result.guide_stretches = 1;
   result.ok = true;
-  reexpress_as_g3(result, source, run, budget, 2e-6 * settings.flat_curvature);
+  reexpress_as_g3(result, source, run, budget, unsigned_curvature(settings));
   return result;
 }
 
