@@ -294,7 +294,7 @@ Attempt fair_with_budgets(const ContourPlan& plan, const FairSettings& settings,
       }
       assembler.append(std::move(cubics.nodes), join_smooth);
     }
-    previous_ends_smooth = !run.closed && run.end.kind == RunEndKind::line;
+    previous_ends_smooth = run.ends_at_line();
     if (!assembler.nodes().empty()) assembler.nodes().back().smooth = previous_ends_smooth;
   }
   if (plan.closed) {

@@ -31,6 +31,9 @@ struct SmoothRun {
   bool closed = false;        ///< the whole contour (no corner, no line)
   RunEnd start, end;          ///< open runs only
   bool operator==(const SmoothRun&) const = default;
+  /// An open run that leaves a line at its start (meets one at its end) tangentially.
+  bool starts_at_line() const { return !closed && start.kind == RunEndKind::line; }
+  bool ends_at_line() const { return !closed && end.kind == RunEndKind::line; }
 };
 
 struct ContourPlan {

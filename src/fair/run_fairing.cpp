@@ -518,8 +518,8 @@ std::optional<SmoothRun> guide_for(const SmoothRun& run, const RunReference& sou
     points.push_back(source.point_at(L * i / count));
   }
   SmoothingEnds ends;
-  if (!run.closed && run.start.kind == RunEndKind::line) ends.start_tangent = run.start.tangent;
-  if (!run.closed && run.end.kind == RunEndKind::line) ends.end_tangent = run.end.tangent;
+  if (run.starts_at_line()) ends.start_tangent = run.start.tangent;
+  if (run.ends_at_line()) ends.end_tangent = run.end.tangent;
   ends.straight_ends = straight_line_ends;
   int spans = std::clamp(static_cast<int>(std::ceil(L / (0.5 * window))), run.closed ? 4 : 1, 80);
   const auto within = [&](const BSplineFit& f) { return !f.spans.empty() && f.max_residual <= 1.05 * tolerance; };
@@ -914,8 +914,7 @@ FairedRun fair_run_on(const SmoothRun& run, const RunReference& source, const st
   const auto guide_ref = guide ? std::make_shared<const RunReference>(*guide) : nullptr;
   const RunReference& ref = guide_ref ? *guide_ref : source;
   const double L = ref.length();
-  std::vector<Junction> junctions = select_junctions(ref, !run.closed && run.start.kind == RunEndKind::line,
-                                                     !run.closed && run.end.kind == RunEndKind::line,
+  std::vector<Junction> junctions = select_junctions(ref, run.starts_at_line(), run.ends_at_line(),
                                                      junction_options(settings));
   bool too_far = false;
   // A span that asked for no change is the same span in every later round (the rounds only
@@ -983,8 +982,8 @@ FairedRun g3_on_guide(const SmoothRun& run, const RunReference& source, const Sm
   ChainSpan span;
   span.s = {0.0, ref->length()};
   span.closed = run.closed;
-  span.zero_start = !run.closed && run.start.kind == RunEndKind::line;
-  span.zero_end = !run.closed && run.end.kind == RunEndKind::line;
+  span.zero_start = run.starts_at_line();
+  span.zero_end = run.ends_at_line();
   FairedRun result;
   result.chains.push_back(guide_stretch(span, ref, guide, settings.feature_window_units));
   result.guide_stretches = 1;
@@ -1028,8 +1027,7 @@ FairedRun fair_run(const SmoothRun& run, const FairSettings& settings, double bu
     //   guide's κ changing sign a unit before the join); one stretch has its own throughout.
     if (settings.continuity != Continuity::g3 || !smoothed || !faired.ok || faired.chains.empty() || fully_g3(faired))
       return faired;
-    const bool meets_line =
-        !run.closed && (run.start.kind == RunEndKind::line || run.end.kind == RunEndKind::line);
+    const bool meets_line = run.starts_at_line() || run.ends_at_line();
     const std::optional<SmoothRun> retry_guide = meets_line ? guide(SmoothingPenalty::sparse, true) : smoothed;
     if (!retry_guide) return faired;
     if (meets_line) {
