@@ -159,21 +159,24 @@ struct Attempt {
 
 FairedPiece line_piece(Vec2 a, Vec2 b, bool smooth_start) {
   const Vec2 t = (b - a) / distance(a, b);
-  return {FairedPieceKind::line, distance(a, b), {a, t, 0.0, 0.0}, {b, t, 0.0, 0.0}, std::nullopt, smooth_start, std::nullopt};
+  return {.kind = FairedPieceKind::line, .length = distance(a, b), .start = {a, t, 0.0, 0.0}, .end = {b, t, 0.0, 0.0},
+          .smooth_start = smooth_start};
 }
 
 // The chain's pieces for export, the first one's join as `smooth_start` says.
 void record_chain(const FairedChain& chain, bool smooth_start, FairedPieces& out) {
   const std::size_t first = out.size();
   for (const LogAestheticSegment& s : chain.segments)
-    out.push_back({FairedPieceKind::log_aesthetic, s.length(), s.start(), s.end(), s.alpha(), true, std::nullopt});
+    out.push_back({.kind = FairedPieceKind::log_aesthetic, .length = s.length(), .start = s.start(), .end = s.end(),
+                   .alpha = s.alpha(), .smooth_start = true});
   for (const PolynomialSpiral& s : chain.spirals)
-    out.push_back({FairedPieceKind::polynomial_spiral, s.length(), s.start(), s.end(), std::nullopt, true,
-                   std::pair{s.symmetric_bump(), s.odd_bump()}});
+    out.push_back({.kind = FairedPieceKind::polynomial_spiral, .length = s.length(), .start = s.start(), .end = s.end(),
+                   .smooth_start = true, .bumps = std::pair{s.symmetric_bump(), s.odd_bump()}});
   if (chain.guide) {
     LacPoint a = chain.start_frame(), b = chain.end_frame();
     a.curvature_derivative = b.curvature_derivative = std::nullopt;
-    out.push_back({FairedPieceKind::guide, chain.guide->s1 - chain.guide->s0, a, b, std::nullopt, true, std::nullopt});
+    out.push_back({.kind = FairedPieceKind::guide, .length = chain.guide->s1 - chain.guide->s0, .start = a, .end = b,
+                   .smooth_start = true});
   }
   if (out.size() > first) out[first].smooth_start = smooth_start;
 }
@@ -196,8 +199,8 @@ std::vector<OutlineNode> drawn_nodes(const SmoothRun& run, FairedPieces& pieces)
       return LacPoint{at, end_tangent(s, end).value_or(Vec2{}), end_curvature(s, end).curvature.value_or(0.0),
                       std::nullopt};
     };
-    pieces.push_back({FairedPieceKind::as_drawn, arc_length_estimate(s), frame(SegmentEnd::start, c.p[0]),
-                      frame(SegmentEnd::end, c.p[3]), std::nullopt, false, std::nullopt});
+    pieces.push_back({.kind = FairedPieceKind::as_drawn, .length = arc_length_estimate(s),
+                      .start = frame(SegmentEnd::start, c.p[0]), .end = frame(SegmentEnd::end, c.p[3])});
   }
   drawn.back().point = run.cubics.back().p[3];
   drawn.back().smooth = false;

@@ -50,6 +50,11 @@ bool is_straight(const Cubic& c) {
   return true;
 }
 
+bool is_straight_segment(const Segment& s) {
+  const Cubic* c = std::get_if<Cubic>(&s);
+  return is_line(s) || (c && is_straight(*c));
+}
+
 ContourPlan plan_contour(const Contour& source, double corner_angle_deg, std::span<const std::size_t> smooth_nodes) {
   const Contour contour = with_cubics(source);
   const auto made_smooth = [&](std::size_t node) {
@@ -59,7 +64,7 @@ ContourPlan plan_contour(const Contour& source, double corner_angle_deg, std::sp
   for (std::size_t i = 0; i < contour.segments.size(); ++i) {
     const Segment& s = contour.segments[i];
     if (is_degenerate(s)) continue;
-    const bool straight = is_line(s) || is_straight(std::get<Cubic>(s));
+    const bool straight = is_straight_segment(s);
     const Segment piece = straight ? Segment{Line{start_point(s), end_point(s)}} : s;
     // Two lines meeting at a join made smooth are one line.
     if (straight && !pieces.empty() && pieces.back().straight && made_smooth(i))

@@ -48,6 +48,8 @@ inline constexpr double kink_limit_deg = JoinThresholds{}.kink_max_deg;
 
 /// A cubic whose control points lie on its chord, in order, is a line.
 bool is_straight(const Cubic& c);
+/// A line, or a cubic that is_straight.
+bool is_straight_segment(const Segment& s);
 
 /// Corners: joins whose smooth flag says so where the source has flags, else joins turning by
 /// more than `corner_angle_deg` (and a curve meeting a line at 3° or more: only a tangential

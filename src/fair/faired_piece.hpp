@@ -17,11 +17,11 @@ enum class FairedPieceKind { line, log_aesthetic, polynomial_spiral, guide, as_d
 struct FairedPiece {
   FairedPieceKind kind;
   double length;
-  LacPoint start, end;          ///< κ′ nullopt where unbounded (a log-aesthetic inflection end) or not known (a guide's)
-  std::optional<double> alpha;  ///< log-aesthetic segments: the LCG slope
-  bool smooth_start = false;    ///< the join with the piece before is smooth, not a corner
+  LacPoint start, end;            ///< κ′ nullopt where unbounded (a log-aesthetic inflection end) or not known (a guide's)
+  std::optional<double> alpha{};  ///< log-aesthetic segments: the LCG slope
+  bool smooth_start = false;      ///< the join with the piece before is smooth, not a corner
   /// Polynomial spirals: the symmetric and odd bumps c₁, c₂ (aesthetic/polynomial_spiral.hpp).
-  std::optional<std::pair<double, double>> bumps;
+  std::optional<std::pair<double, double>> bumps{};
 };
 
 /// A contour's pieces in order; empty when the contour was kept unfaired.

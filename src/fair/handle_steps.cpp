@@ -9,6 +9,7 @@
 #include <numbers>
 #include <utility>
 
+#include "fair/contour_plan.hpp"
 #include "fair/cubic_change.hpp"
 #include "geom/curvature.hpp"
 #include "geom/join.hpp"
@@ -25,8 +26,7 @@ constexpr double target_jump = 0.03;  // below the check's 5 %, with room for it
 constexpr double checked_jump = 0.05;  // the check's g2-jump (HandleStepLimits::counted_jump_cost)
 constexpr double wrong_way = 1e4;     // an inflection or extremum the unrounded cubic lacks
 constexpr double infeasible = std::numeric_limits<double>::infinity();
-constexpr double kink_deg = JoinThresholds{}.kink_max_deg;  // geom/join.hpp's kink limit
-constexpr double kink_limit = radians(kink_deg);
+constexpr double kink_limit = radians(kink_limit_deg);  // fair/contour_plan.hpp's
 // Curvature variation a rounded cubic adds inside, relative to its unrounded largest |κ|: free
 // up to 5 %, then weighed a third of a matching curvature jump (whose cost rises 100 per unit),
 // so G2 stays first. Measured: Because We Learn TV 0.59 → 0.55× with g2-jumps 11.0 → 10.7 %.
@@ -165,7 +165,7 @@ bool corner_to_keep(const std::vector<OutlineNode>& ideal, bool closed, std::siz
   const OutlineNode& node = ideal[k];
   if (node.smooth || node.in_handle.has_value() == node.out_handle.has_value()) return false;
   const double turn = turn_at(ideal, closed, k);
-  return turn >= radians(kink_deg + 1.0) && turn < std::numbers::pi;
+  return turn >= radians(kink_limit_deg + 1.0) && turn < std::numbers::pi;
 }
 
 // Which nodes of an outline join two cubics, meet a line, or start a cubic.

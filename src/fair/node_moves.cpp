@@ -7,11 +7,6 @@
 
 namespace gf {
 
-bool is_straight_segment(const Segment& s) {
-  const Cubic* c = std::get_if<Cubic>(&s);
-  return is_line(s) || (c && is_straight(*c));
-}
-
 Segment with_end_moved(const Segment& s, SegmentEnd end, Vec2 v, std::optional<Vec2> along) {
   const bool at_start = end == SegmentEnd::start;
   if (is_straight_segment(s)) {

@@ -17,9 +17,6 @@ struct MovedContour {
   int changes = 0;     ///< how many lines stood up or jogs straightened
 };
 
-/// A line, or a cubic whose control points lie on its chord in order.
-bool is_straight_segment(const Segment& s);
-
 /// `s` with its node at `end` moved by `v`: a line (or a straight cubic) just its end; a curve
 /// takes its handle along, turned onto `along` (unit, the direction of travel) where given, so
 /// that a tangential join stays tangential, else kept parallel (its tangent kept).
