@@ -62,7 +62,8 @@ struct FairedRun {
 };
 
 /// What a text run is faired on. First its own outline, where a chain whose G2 solve stalls
-/// fails the run; then, for a contour that could not be faired so, its smoothing guide; last,
+/// fails the run; then, for a contour that could not be faired so, its smoothing guide (or, where
+/// no guide comes within the budget, its own outline again where that comes G2); last,
 /// for one that could not be faired on its guides either, its own outline again, a stalled
 /// chain kept with the curvature jumps its junctions have left (the cubic writeback meets their
 /// mean) while none exceeds the largest |κ| its segments' ends had before the solve. Kept with
