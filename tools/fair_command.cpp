@@ -86,6 +86,7 @@ int FairCommand::run() const {
               g2_runs = 0, g2_line_joins = 0;
   double deviation = 0.0, mismatch = 0.0;
   G3CubicReport g3_cubics;
+  G3JoinCount g3_joins;
   FairedContours faired_contours;  // composites repeat their components' contours
   stream_glyphs<GlyphFairing>(
       source, chunk_size, progress, name, [&](const Glyph& g) { return fair_glyph(g, settings, faired_contours); },
@@ -104,6 +105,7 @@ int FairCommand::run() const {
         g2_line_joins += static_cast<std::size_t>(r.g2_line_joins);
         g2_runs += r.g3_shortfalls.size();
         g3_cubics += r.g3_cubics;
+        g3_joins += r.g3_joins;
         if (segments) segments->add(r);
         contours_kept += r.kept.size();
         runs_as_drawn += r.runs_as_drawn.size();
@@ -137,7 +139,9 @@ int FairCommand::run() const {
     std::cerr << "; G3 on " << g3_runs << " of " << g3_runs + g2_runs << " smooth runs (" << g2_line_joins
               << " of their line joins G2 only: too little line to slide along); written cubics G3 (before rounding) on "
               << g3_cubics.runs_g3 << " of " << g3_cubics.runs << " runs of smooth nodes, nearer it on "
-              << g3_cubics.runs_moved - g3_cubics.runs_g3 << " more, " << g3_cubics.nodes_added << " nodes added";
+              << g3_cubics.runs_moved - g3_cubics.runs_g3 << " more, " << g3_cubics.nodes_added
+              << " nodes added; as written, dκ/ds within 5 % across " << g3_joins.matched << " of " << g3_joins.joins
+              << " smooth joins between curves";
   std::cerr << "\n";
   return exit_code::ok;
 }

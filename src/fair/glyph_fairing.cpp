@@ -22,6 +22,7 @@ GlyphFairing fair_glyph(const Glyph& source, const FairSettings& requested, Fair
       out.g3_runs += c.g3_runs;
       out.g2_line_joins += c.g2_line_joins;
       out.g3_cubics += c.g3_cubics;
+      if (settings.continuity == Continuity::g3) out.g3_joins += g3_joins_of(c.contour);
       for (const std::string& why : c.g3_shortfalls) out.g3_shortfalls.push_back(contour + why);
       for (const std::string& why : c.runs_as_drawn) out.runs_as_drawn.push_back(contour + why);
     } else {

@@ -834,10 +834,11 @@ TEST(ContourFairing, ARunNoChainFairsIsKeptAsDrawnAndTheRestFaired) {
     const auto is_as_drawn = [](const FairedPiece& p) { return p.kind == FairedPieceKind::as_drawn; };
     EXPECT_EQ(std::count_if(r.pieces[i].begin(), r.pieces[i].end(), is_as_drawn), counter ? 4 : 0) << "contour " << i;
     if (counter) continue;
-    for (const Segment& s : faired.segments)
-      if (!is_line(s))
-        EXPECT_EQ(std::find(source.segments.begin(), source.segments.end(), s), source.segments.end())
-            << "a source curve left unfaired";
+    for (const Segment& s : faired.segments) {
+      if (is_line(s)) continue;
+      EXPECT_EQ(std::find(source.segments.begin(), source.segments.end(), s), source.segments.end())
+          << "a source curve left unfaired";
+    }
   }
 }
 
