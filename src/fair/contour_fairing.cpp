@@ -431,7 +431,7 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
       limits.flat_curvature = settings.flat_curvature;
       limits.allowance = 0.95 * (settings.tolerance_units - d);
       limits.polish_rounds = hand ? handwriting_polish_rounds : g3 ? text_g3_polish_rounds : 1;
-      limits.polish_only_at_jumps = !hand;
+      limits.polish_only_at_jumps = g3 && !hand;
       limits.inflection_handles = limits.node_turns = hand;
       limits.slope_jump_weight = !g3 ? 0.0 : hand ? handwriting_slope_jump_weight : text_slope_jump_weight;
       limits.counted_jump_cost = g3 && !hand ? text_counted_jump_cost : 0.0;
