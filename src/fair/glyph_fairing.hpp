@@ -24,7 +24,7 @@ struct GlyphFairing {
   int g2_line_joins = 0;    ///< and their line joins held to G2
   std::vector<std::string> g3_shortfalls;  ///< "contour i: why", for each run that stayed G2
   G3CubicReport g3_cubics;                 ///< --continuity g3: the written cubics' runs, summed
-  G3JoinCount g3_joins;  ///< --continuity g3: the written outline's joins between curves, rounded or not
+  G3JoinCount g3_joins;  ///< --continuity g3: the faired contours' joins between curves as written
   std::vector<std::string> runs_as_drawn;  ///< "contour i: where and why", for each run kept as drawn
   std::vector<FairedPieces> pieces;        ///< per contour, the faired curve before the writeback
 };

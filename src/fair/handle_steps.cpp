@@ -434,6 +434,13 @@ CubicChoices cubic_choices(const std::vector<OutlineNode>& nodes, std::span<cons
   return c;
 }
 
+// What the join between state s of cubic a and state t of the cubic b after it costs: its jump
+// of κ and, where asked, of dκ/ds (not the turns at its node).
+double join_cost(const CubicJudge& judge, const CubicChoices& a, std::size_t s, const CubicChoices& b, std::size_t t,
+                 double flat) {
+  return judge.g2_cost(jump(a.k_end[s], b.k_start[t], flat)) + judge.slope_cost(*a.traits[s], *b.traits[t]);
+}
+
 // The cheapest states of a run of cubics joined at smooth nodes; `first`, for a run that
 // closes on itself, fixes the first cubic's state and adds the join from the last back to it.
 struct RunChoice {
@@ -463,8 +470,7 @@ RunChoice best_run(const std::vector<CubicChoices>& run, const CubicJudge& judge
       if (cur.cost[t] == infeasible) continue;
       for (const std::size_t s : order) {
         if (cost[s] == infeasible || cost[s] > next[t]) break;
-        const double c = cost[s] + judge.g2_cost(jump(prev.k_end[s], cur.k_start[t], flat)) +
-                         judge.slope_cost(*prev.traits[s], *cur.traits[t]);
+        const double c = cost[s] + join_cost(judge, prev, s, cur, t, flat);
         const auto better = [&](double v) { return v < next[t] || (v == next[t] && s < back[k][t]); };
         if (!better(c)) continue;  // a node's turns only add to it
         const double with_turns = c + judge.node_turn_cost(*prev.traits[s], *cur.traits[t], unrounded_turns);
@@ -478,8 +484,7 @@ RunChoice best_run(const std::vector<CubicChoices>& run, const CubicJudge& judge
   for (std::size_t s = 0; s < cost.size(); ++s) {
     double c = cost[s];
     if (first && c != infeasible)
-      c += judge.g2_cost(jump(run[n - 1].k_end[s], run[0].k_start[*first], flat)) +
-           judge.slope_cost(*run[n - 1].traits[s], *run[0].traits[*first]) +
+      c += join_cost(judge, run[n - 1], s, run[0], *first, flat) +
            judge.node_turn_cost(*run[n - 1].traits[s], *run[0].traits[*first],
                                 judge.unrounded_node_turns(run[n - 1].start, run[0].start));
     if (c < best.cost) best.cost = c, best.states.assign(n, 0), best.states[n - 1] = s;
@@ -923,8 +928,7 @@ std::vector<double> first_state_bounds(const std::vector<CubicChoices>& run, con
       double least = infeasible;
       for (const std::size_t t : order) {
         if (after[t] >= least) break;  // a join only adds
-        least = std::min(least, after[t] + judge.g2_cost(jump(prev.k_end[s], cur.k_start[t], flat)) +
-                                    judge.slope_cost(*prev.traits[s], *cur.traits[t]));
+        least = std::min(least, after[t] + join_cost(judge, prev, s, cur, t, flat));
       }
       here[s] = prev.cost[s] + least;
     }
@@ -937,8 +941,7 @@ std::vector<double> first_state_bounds(const std::vector<CubicChoices>& run, con
     double least = infeasible;
     for (std::size_t t = 0; t < last.states(); ++t)
       if (last.cost[t] != infeasible)
-        least = std::min(least, judge.g2_cost(jump(last.k_end[t], first.k_start[s], flat)) +
-                                    judge.slope_cost(*last.traits[t], *first.traits[s]));
+        least = std::min(least, join_cost(judge, last, t, first, s, flat));
     after[s] += least;
   }
   return after;
