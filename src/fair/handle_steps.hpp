@@ -45,7 +45,7 @@ struct HandleStepLimits {
   /// (stop 40); every jumping run, 939 → 883 for 7 % more (stop 46); every jumping run with
   /// the nodes beside its jumps, 826 for 40 % more. Since stop 60 (closed runs solved faster)
   /// text under G2 polishes beside its jumps too: whole DejaVu Sans 768 → 664 for 14 % more
-  /// time (21.6 → 24.6 s). Text under G3 polishes at its jumps only: beside them, Cantarell's
+  /// time (21.6 → 24.6 s; 612 with two rounds, 26.0 s). Text under G3 polishes at its jumps only: beside them, Cantarell's
   /// curvature variation came to 0.953× of the source's, over the bar.
   bool polish_only_at_jumps = false;
   /// At a smooth node flat on both sides before rounding (an inflection), the far handles'
