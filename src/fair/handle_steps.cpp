@@ -434,6 +434,14 @@ CubicChoices cubic_choices(const std::vector<OutlineNode>& nodes, std::span<cons
   return c;
 }
 
+// The indices of `costs`, cheapest first; ties in index order.
+std::vector<std::size_t> cheapest_first(std::span<const double> costs) {
+  std::vector<std::size_t> order(costs.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return costs[a] < costs[b]; });
+  return order;
+}
+
 // What the join between state s of cubic a and state t of the cubic b after it costs: its jump
 // of κ and, where asked, of dκ/ds (not the turns at its node).
 double join_cost(const CubicJudge& judge, const CubicChoices& a, std::size_t s, const CubicChoices& b, std::size_t t,
@@ -463,9 +471,7 @@ RunChoice best_run(const std::vector<CubicChoices>& run, const CubicJudge& judge
     // The states before, cheapest first: a join only adds to a state's cost, so once one costs
     // more than the best found, none after it can do better. Ties go to the lower state, as in
     // index order.
-    std::vector<std::size_t> order(prev.states());
-    std::iota(order.begin(), order.end(), std::size_t{0});
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cost[a] < cost[b]; });
+    const std::vector<std::size_t> order = cheapest_first(cost);
     for (std::size_t t = 0; t < cur.states(); ++t) {
       if (cur.cost[t] == infeasible) continue;
       for (const std::size_t s : order) {
@@ -919,9 +925,7 @@ std::vector<double> first_state_bounds(const std::vector<CubicChoices>& run, con
   std::vector<double> after = run.back().cost;  // the cheapest path from each state to the end
   for (std::size_t k = run.size() - 1; k > 0; --k) {
     const CubicChoices &prev = run[k - 1], &cur = run[k];
-    std::vector<std::size_t> order(cur.states());
-    std::iota(order.begin(), order.end(), std::size_t{0});
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return after[a] < after[b]; });
+    const std::vector<std::size_t> order = cheapest_first(after);
     std::vector<double> here(prev.states(), infeasible);
     for (std::size_t s = 0; s < prev.states(); ++s) {
       if (prev.cost[s] == infeasible) continue;
@@ -955,11 +959,8 @@ std::vector<double> first_state_bounds(const std::vector<CubicChoices>& run, con
 RunChoice best_cycle(const std::vector<CubicChoices>& run, const CubicJudge& judge, double flat) {
   RunChoice best;
   const std::vector<double> bound = first_state_bounds(run, judge, flat);
-  std::vector<std::size_t> order(run[0].states());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return bound[a] < bound[b]; });
   std::size_t best_first = 0;
-  for (const std::size_t first : order) {
+  for (const std::size_t first : cheapest_first(bound)) {
     // The bound adds the run's terms in another order: a margin for the last bits.
     if (bound[first] == infeasible || (best.cost != infeasible && bound[first] > best.cost * (1.0 + 1e-9) + 1e-9))
       break;

@@ -18,13 +18,13 @@ struct JogLimits {
 
 /// `contour` with each stem jog straightened: a line, then one to three cubics that leave it
 /// tangentially (within the kink limit; no node from the line's end on flagged a corner), stay
-/// within the jog's width of it and end parallel to it (within the kink limit, on its side of
-/// the join), at least one unit and at most twice `max_move_units` across and flatter than the
-/// kink limit, then a curve. The line and those
-/// cubics become one line parallel to the line, half the jog across; the line's start and the
-/// curve after the jog move by half the jog across the line (a curve takes its handle along,
-/// a line its end; neither may be a curve shorter than twice the jog). The same read
-/// backwards: a curve, a jog, then the line. No control point moves more than `max_move_units`.
+/// within the jog's width of it and end parallel to it (within the kink limit, on its side of the
+/// join), at least one unit and at most twice `max_move_units` across and flatter than the kink
+/// limit, then a curve. The line and those cubics become one line parallel to the line, half the
+/// jog across; the line's start and the curve after the jog move by half the jog across the line (a
+/// curve takes its handle along, a line its end; neither may be a curve shorter than twice the
+/// jog). The same read backwards: a curve, a jog, then the line. No control point moves more than
+/// `max_move_units`.
 MovedContour straighten_stem_jogs(const Contour& contour, const JogLimits& limits);
 
 }  // namespace gf

@@ -126,12 +126,12 @@ TEST(G3Fairing, ARunWhoseGuideBendsAtItsLineComesOutG3OnAStraightEndedGuide) {
 }
 
 TEST(G3Fairing, ARunWhoseChainsMeetItsGuideOffItsOwnFramesComesOutG3OnTheGuideAlone) {
-  // dkg's T, rounded after: the run along the bar's top, corner to corner, is log-aesthetic chains with two
-  // stretches of the guide between them. Where a stretch meets a chain at an inflection it takes
-  // the chain's frame (the guide's mean point and tangent over the feature window), 0.0055 rad
-  // off the guide's own tangent there, whose κ changes sign a unit or two before the join: every
-  // G3 attempt fell short (κ changed sign 9 times against the G2 curve's 5, and piece by piece
-  // the last units of each stretch would not bend so), 10 smooth joins off G3. The run
+  // dkg's T, rounded after: the run along the bar's top, corner to corner, is log-aesthetic chains
+  // with two stretches of the guide between them. Where a stretch meets a chain at an inflection
+  // it takes the chain's frame (the guide's mean point and tangent over the feature window),
+  // 0.0055 rad off the guide's own tangent there, whose κ changes sign a unit or two before the
+  // join: every G3 attempt fell short (κ changed sign 9 times against the G2 curve's 5, and piece
+  // by piece the last units of each stretch would not bend so), 10 smooth joins off G3. The run
   // re-expressed from its guide alone, one stretch with its own frames throughout, is G3.
   FairSettings settings;
   const GlyphFairing r = fair_g3("T", settings, test::handwriting_probe, Rounding::integers, FairProfile::handwriting);
