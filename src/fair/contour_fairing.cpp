@@ -16,6 +16,7 @@
 #include "fair/kink_fillet.hpp"
 #include "fair/rounding_retry.hpp"
 #include "fair/run_fairing.hpp"
+#include "fair/spurs.hpp"
 #include "fair/stem_jogs.hpp"
 #include "fair/tight_turn.hpp"
 #include "fair/upright_lines.hpp"
@@ -633,17 +634,22 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& requested
   // up to a quarter), before the fairing; its distances are still measured from the source.
   // (Taking the move off the tolerance instead changed the fairing of whole contours: Breip's
   // I came out with a spike by its notch.)
-  MovedContour straightened{source}, upright{source};
+  // Handwriting's spurs go first (fair/spurs.hpp): a scan's overshoot doubled back on itself.
+  MovedContour spurless{source}, straightened{source}, upright{source};
+  if (settings.profile == FairProfile::handwriting) spurless = cut_spurs(source, SpurLimits{});
+  straightened = spurless;
   if (settings.rounding == Rounding::integers) {
     JogLimits jogs;
     jogs.max_move_units = std::min(most_jog_move, jog_move_share * settings.tolerance_units);
-    straightened = straighten_stem_jogs(source, jogs);
+    straightened = straighten_stem_jogs(spurless.contour, jogs);
     UprightLimits limits;
     limits.max_move_units = std::min(limits.max_move_units, upright_move_share * settings.tolerance_units);
     upright = stand_lines_upright(straightened.contour, limits);
+  } else {
+    upright = straightened;
   }
   const Contour& stood = upright.contour;
-  const bool any_stood = straightened.changes + upright.changes > 0;
+  const bool any_stood = spurless.changes + straightened.changes + upright.changes > 0;
   // Handwriting's tight turns are corners (fair/tight_turn.hpp), unless the contour then fails.
   std::optional<TightTurns> turned;
   if (settings.profile == FairProfile::handwriting) {

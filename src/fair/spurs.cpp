@@ -1,0 +1,159 @@
+#include "fair/spurs.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+namespace gf {
+
+namespace {
+
+constexpr double sample_spacing = 0.5;  // units between the samples that stand for the outline
+constexpr int most_spurs = 8;           // per contour
+
+struct Sample {
+  std::size_t segment;
+  double t;
+  Vec2 point;
+};
+
+// The outline as points about sample_spacing apart, each segment from its start (t = 0).
+std::vector<Sample> samples_of(const Contour& c) {
+  std::vector<Sample> out;
+  for (std::size_t i = 0; i < c.segments.size(); ++i) {
+    double polygon = 0.0;
+    Vec2 previous = start_point(c.segments[i]);
+    for_each_point(c.segments[i], [&](Vec2 q) { polygon += distance(previous, q), previous = q; });
+    const int count = std::clamp(static_cast<int>(std::ceil(polygon / sample_spacing)), 1, 1024);
+    for (int k = 0; k < count; ++k) {
+      const double t = static_cast<double>(k) / count;
+      out.push_back({i, t, point_at(c.segments[i], t)});
+    }
+  }
+  return out;
+}
+
+// The direction a segment leaves its start or reaches its end in: its first control point off
+// the node (a retracted handle's tangent comes from the next one); none for a point.
+std::optional<Vec2> end_direction(const Segment& s, SegmentEnd end) {
+  std::vector<Vec2> p;
+  for_each_point(s, [&](Vec2 q) { p.push_back(q); });
+  if (end == SegmentEnd::end) std::reverse(p.begin(), p.end());
+  for (std::size_t k = 1; k < p.size(); ++k)
+    if (p[k] != p[0]) return end == SegmentEnd::start ? p[k] - p[0] : p[0] - p[k];
+  return std::nullopt;
+}
+
+struct Spur {
+  std::size_t cusp;    ///< the node at the spur's foot
+  bool after;          ///< the spur follows the cusp along the outline (else it precedes it)
+  std::size_t segment; ///< where the outline returns to the cusp
+  double t;
+};
+
+// The spur at the cusp at sample `at` (node `node`) going `way` (+1 on along the outline, −1
+// back), if there is one.
+std::optional<Spur> spur_from(const std::vector<Sample>& samples, std::size_t at, std::size_t node, int way,
+                              const SpurLimits& limits) {
+  const std::size_t n = samples.size();
+  const Vec2 cusp = samples[at].point;
+  const auto index = [&](std::size_t steps) { return way > 0 ? (at + steps) % n : (at + n - steps % n) % n; };
+  bool left = false;
+  double along = 0.0;
+  std::optional<std::size_t> back;
+  for (std::size_t k = 1; k < n; ++k) {
+    const std::size_t s = index(k);
+    along += distance(samples[index(k - 1)].point, samples[s].point);
+    if (along > limits.max_length_units) return std::nullopt;
+    const double off = distance(samples[s].point, cusp);
+    if (off > limits.width_units) left = true;
+    else if (left) {
+      // The nearest approach while within the width: where the outline comes back.
+      back = s;
+      for (std::size_t j = k + 1; j < n && distance(samples[index(j)].point, cusp) <= distance(samples[*back].point, cusp); ++j)
+        back = index(j);
+      break;
+    }
+  }
+  if (!back) return std::nullopt;
+  // Every point of the spur within the width of the outline outside it.
+  std::vector<bool> inside(n, false);
+  for (std::size_t s = at;; s = way > 0 ? (s + 1) % n : (s + n - 1) % n) {
+    inside[s] = true;
+    if (s == *back) break;
+  }
+  for (std::size_t s = 0; s < n; ++s) {
+    if (!inside[s]) continue;
+    bool near = false;
+    for (std::size_t o = 0; o < n && !near; ++o) near = !inside[o] && distance(samples[s].point, samples[o].point) <= limits.width_units;
+    if (!near) return std::nullopt;
+  }
+  return Spur{node, way > 0, samples[*back].segment, samples[*back].t};
+}
+
+// The contour without the spur: the segments outside it, the one where the outline returns
+// cut there and joined to the cusp.
+Contour without(const Contour& c, const Spur& spur, double& moved) {
+  const std::size_t n = c.segments.size();
+  const Vec2 cusp = c.node_point(spur.cusp);
+  Contour out;
+  out.closed = true;
+  // The kept stretch runs from the cut segment's kept part round to the cusp (after) or from
+  // the cusp round to it (before); segment k is kept whole where it lies outside the spur.
+  const auto outside = [&](std::size_t k) {
+    // Segments strictly between the cusp and the return point, the way the spur runs, go.
+    if (spur.after) {
+      for (std::size_t s = spur.cusp; s != spur.segment; s = (s + 1) % n)
+        if (s == k) return false;
+    } else {
+      for (std::size_t s = (spur.segment + 1) % n; s != spur.cusp; s = (s + 1) % n)
+        if (s == k) return false;
+    }
+    return k != spur.segment;
+  };
+  for (std::size_t k = 0; k < n; ++k) {
+    if (k == spur.segment) {
+      const Cubic whole = std::get<Cubic>(c.segments[k]);
+      const auto parts = whole.split(spur.t);
+      const Cubic kept = spur.after ? parts[1] : parts[0];
+      const SegmentEnd joined = spur.after ? SegmentEnd::start : SegmentEnd::end;
+      const Vec2 v = cusp - (spur.after ? kept.p[0] : kept.p[3]);
+      moved = std::max(moved, norm(v));
+      out.segments.push_back(with_end_moved(kept, joined, v));
+      out.nodes.push_back(spur.after ? NodeFlags{} : c.nodes[k]);
+    } else if (outside(k)) {
+      out.segments.push_back(c.segments[k]);
+      out.nodes.push_back(!spur.after && k == spur.cusp ? NodeFlags{} : c.nodes[k]);
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+MovedContour cut_spurs(const Contour& contour, const SpurLimits& limits) {
+  MovedContour out{contour, 0.0, 0};
+  if (!contour.closed || contour.segments.size() < 2) return out;
+  Contour c = with_cubics(contour);
+  for (int round = 0; round < most_spurs; ++round) {
+    const std::vector<Sample> samples = samples_of(c);
+    const std::size_t n = c.segments.size();
+    std::optional<Spur> found;
+    for (std::size_t at = 0; at < samples.size() && !found; ++at) {
+      if (samples[at].t != 0.0) continue;
+      const std::size_t node = samples[at].segment;
+      const std::optional<Vec2> in = end_direction(c.segments[(node + n - 1) % n], SegmentEnd::end);
+      const std::optional<Vec2> leave = end_direction(c.segments[node], SegmentEnd::start);
+      if (!in || !leave || std::abs(turning_angle(*in, *leave)) < radians(limits.min_turn_deg)) continue;
+      for (const int way : {1, -1})
+        if (!found) found = spur_from(samples, at, node, way, limits);
+    }
+    if (!found) break;
+    c = without(c, *found, out.moved);
+    ++out.changes;
+  }
+  if (out.changes > 0) out.contour = std::move(c);
+  return out;
+}
+
+}  // namespace gf
