@@ -860,6 +860,49 @@ std::vector<std::size_t> seat_line_joins(std::vector<OutlineNode>& nodes, const 
   return seated;
 }
 
+// A curve whose far handle misses its line leaves the line with κ = (2/3)·d/h² (d the far
+// handle's offset from the line, h the near handle's length), and on a slanted line the grid
+// sets d in multiples of 1/|step|: Lato's A, whose feet leave the legs' lines of step (−9, 23)
+// with κ·UPM 0.066 on two-step handles; Pagella's serifs, stepping (16, 1), with 0.16 on one.
+// Where such a join still jumps, its node slides back along the line by one to three of the
+// line's steps, the near handle's tip kept: the curve leaves the line where it did, straight,
+// only sooner, and its handle grows by as many steps. The slide stays within the cubic's chord
+// (Comic Neue's u: a step of (1, 56) slid a short cap 56 units down its stem, which strayed and
+// cost the contour eight roundings more) and leaves the line half its length at least. Only
+// where the cubic and the one beyond its far node are cubics both (NodeChange weighs the pair).
+// Returns the first node of each cubic it changed.
+std::vector<std::size_t> slide_line_joins(std::vector<OutlineNode>& nodes, std::span<const std::optional<Vec2>> steps,
+                                          const OutlineJoins& joins, CubicJudge& judge, double flat) {
+  const std::size_t n = nodes.size();
+  std::vector<std::size_t> slid;
+  if (n < 4) return slid;
+  for (std::size_t at = 0; at < n; ++at) {
+    if (!joins.meets_line(at) || !steps[at] || join_jump(joins, at, flat) <= target_jump) continue;
+    const bool leaves = joins.is_cubic(at);  // the cubic leaves the join, the line arrives
+    const std::size_t far = leaves ? (at + 1) % n : (at + n - 1) % n;  // the cubic's other node
+    const std::size_t first = leaves ? at : far;                        // the cubic's first node
+    // The cubic on the far node's other side (NodeChange weighs both cubics at it).
+    if (!joins.is_cubic(leaves ? far : (far + n - 1) % n)) continue;
+    const NodeChange change(nodes, joins, judge, flat, far);
+    const Vec2 line_end = nodes[leaves ? (at + n - 1) % n : (at + 1) % n].point;
+    const Vec2 kept = nodes[at].point, back = *steps[at] * (leaves ? -1.0 : 1.0);
+    const double line_length = distance(kept, line_end);
+    const double chord = distance(kept, nodes[far].point);
+    double best_cost = change.cost();
+    std::optional<Vec2> best;
+    for (int k = 1; k <= 3; ++k) {
+      const Vec2 p = kept + back * static_cast<double>(k);
+      if (distance(p, kept) > chord || distance(p, line_end) < 0.5 * line_length || dot(p - line_end, kept - line_end) <= 0.0)
+        break;
+      nodes[at].point = p;
+      if (const std::optional<double> c = change.cost_under(best_cost)) best_cost = *c, best = p;
+    }
+    nodes[at].point = best ? *best : kept;
+    if (best) slid.push_back(first);
+  }
+  return slid;
+}
+
 // A corner whose cubic meets a line at the far end keeps no grid direction: its handle may go
 // to any grid point, and cubic_choices offers the line's whole step nearest it, where κ = 0 at
 // the join. Where that moves the cubic too far (DejaVu Serif's R: the leg's corner 1.81 units
@@ -1228,6 +1271,9 @@ void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<Outl
       again[run_of[i]] = true;
     for (const std::size_t i : seat_line_joins(nodes, ideal, steps, joins, inside, judge, limits.flat_curvature))
       again[run_of[i]] = true;
+    for (const std::size_t i : slide_line_joins(nodes, steps, joins, judge, limits.flat_curvature))
+      for (const std::size_t r : {run_of[i], run_starting_at[i]})
+        if (r < runs.size()) again[r] = true;
     for (const std::size_t i : seat_line_joins_at_corners(nodes, ideal, steps, joins, corners, judge, limits.flat_curvature))
       for (const std::size_t r : {run_starting_at[i], run_of[(i + n - 1) % n], run_starting_at[(i + n - 1) % n]})
         if (r < runs.size()) again[r] = true;

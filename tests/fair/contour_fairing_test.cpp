@@ -911,6 +911,27 @@ Contour lato_w() {
     line_of({1017, 1093}, {652, 0}), line_of({652, 0}, {478, 0}), line_of({478, 0}, {31, 1433})});
 }
 
+// Lato's A (Łukasz Dziedzic, OFL; Debian fonts-lato; UPM 2000, text), its outer contour.
+Contour lato_a_outer() {
+  return unflagged({line_of({1348, 0}, {1198, 0}), quad_of({1198, 0}, {1172, 0}, {1156, 13}),
+                    quad_of({1156, 13}, {1140, 26}, {1132, 46}), line_of({1132, 46}, {998, 392}),
+                    line_of({998, 392}, {355, 392}), line_of({355, 392}, {221, 46}),
+                    quad_of({221, 46}, {215, 28}, {198, 14}), quad_of({198, 14}, {181, 0}, {156, 0}),
+                    line_of({156, 0}, {6, 0}), line_of({6, 0}, {579, 1433}), line_of({579, 1433}, {775, 1433}),
+                    line_of({775, 1433}, {1348, 0})});
+}
+
+// Lato's A: each foot's curve leaves the leg's inner line, of step (−9, 23), with its far
+// handle on a step (−1, 1) from the node at the foot's middle, which crosses the line between
+// whole steps wherever that node goes within two units: κ·UPM 0.066 at the join on a handle of
+// two steps (49 units), over the check's 0.05. The join slides back up the line, the handle's
+// tip kept (by three steps: the same offset on a handle of five gives κ·UPM 0.011).
+TEST(ContourFairing, ACurveLeavingALineItsFarHandleMissesSlidesBackAlongIt) {
+  const double upm = 2000.0;
+  const ContourFairing r = faired_on_grid(lato_a_outer(), FairProfile::text, upm);
+  EXPECT_EQ(g2_jumps(Outline{{r.contour}}, upm), 0);
+}
+
 // Lato's W: where each stem meets the notch below it, the line runs 2° off the curve's
 // tangent. No chain through the notch's curve comes G2 from the line's κ = 0, and the stalled
 // chain kept on the last try had κ of opposite signs across its junctions; the writeback's mean
