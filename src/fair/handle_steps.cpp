@@ -866,13 +866,16 @@ std::vector<std::size_t> seat_line_joins(std::vector<OutlineNode>& nodes, const 
 // with κ·UPM 0.066 on two-step handles; Pagella's serifs, stepping (16, 1), with 0.16 on one.
 // Where such a join still jumps, its node slides back along the line by one to three of the
 // line's steps, the near handle's tip kept: the curve leaves the line where it did, straight,
-// only sooner, and its handle grows by as many steps. The slide stays within the cubic's chord
-// (Comic Neue's u: a step of (1, 56) slid a short cap 56 units down its stem, which strayed and
-// cost the contour eight roundings more) and leaves the line half its length at least. Only
+// only sooner, and its handle grows by as many steps. Pass after pass, a join stays within its
+// cubic's chord of where the passes found it (`entry`): Comic Neue's u had a step of (1, 56)
+// slide a short cap 56 units down its stem, which strayed and cost the contour eight roundings
+// more; Gentium's M, a bracket of 89 units crawl 600 units up its stem. The line keeps half its
+// length at least. Only
 // where the cubic and the one beyond its far node are cubics both (NodeChange weighs the pair).
 // Returns the first node of each cubic it changed.
-std::vector<std::size_t> slide_line_joins(std::vector<OutlineNode>& nodes, std::span<const std::optional<Vec2>> steps,
-                                          const OutlineJoins& joins, CubicJudge& judge, double flat) {
+std::vector<std::size_t> slide_line_joins(std::vector<OutlineNode>& nodes, std::span<const OutlineNode> entry,
+                                          std::span<const std::optional<Vec2>> steps, const OutlineJoins& joins,
+                                          CubicJudge& judge, double flat) {
   const std::size_t n = nodes.size();
   std::vector<std::size_t> slid;
   if (n < 4) return slid;
@@ -887,12 +890,13 @@ std::vector<std::size_t> slide_line_joins(std::vector<OutlineNode>& nodes, std::
     const Vec2 line_end = nodes[leaves ? (at + n - 1) % n : (at + 1) % n].point;
     const Vec2 kept = nodes[at].point, back = *steps[at] * (leaves ? -1.0 : 1.0);
     const double line_length = distance(kept, line_end);
-    const double chord = distance(kept, nodes[far].point);
+    const Vec2 start = entry[at].point;
+    const double chord = distance(start, entry[far].point);
     double best_cost = change.cost();
     std::optional<Vec2> best;
     for (int k = 1; k <= 3; ++k) {
       const Vec2 p = kept + back * static_cast<double>(k);
-      if (distance(p, kept) > chord || distance(p, line_end) < 0.5 * line_length || dot(p - line_end, kept - line_end) <= 0.0)
+      if (distance(p, start) > chord || distance(p, line_end) < 0.5 * line_length || dot(p - line_end, kept - line_end) <= 0.0)
         break;
       nodes[at].point = p;
       if (const std::optional<double> c = change.cost_under(best_cost)) best_cost = *c, best = p;
@@ -1256,6 +1260,7 @@ void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<Outl
   };
   std::vector<std::optional<Vec2>> steps(grid_steps.begin(), grid_steps.end());
   std::vector<bool> again(runs.size(), true);
+  const std::vector<OutlineNode> entry = nodes;  // as the passes find them (slide_line_joins)
   for (int pass = 0; pass < max_passes; ++pass) {
     std::vector<std::size_t> inside;
     for (std::size_t r = 0; r < runs.size(); ++r) {
@@ -1271,7 +1276,7 @@ void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<Outl
       again[run_of[i]] = true;
     for (const std::size_t i : seat_line_joins(nodes, ideal, steps, joins, inside, judge, limits.flat_curvature))
       again[run_of[i]] = true;
-    for (const std::size_t i : slide_line_joins(nodes, steps, joins, judge, limits.flat_curvature))
+    for (const std::size_t i : slide_line_joins(nodes, entry, steps, joins, judge, limits.flat_curvature))
       for (const std::size_t r : {run_of[i], run_starting_at[i]})
         if (r < runs.size()) again[r] = true;
     for (const std::size_t i : seat_line_joins_at_corners(nodes, ideal, steps, joins, corners, judge, limits.flat_curvature))
