@@ -629,12 +629,12 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& requested
     }
     settings.tolerance_units = std::min(settings.tolerance_units, 0.5 * thick);
   }
-  // On the grid, stem jogs are straightened (fair/stem_jogs.hpp: moves up to half the
+  // Handwriting's spurs are cut first (fair/spurs.hpp: a scan's overshoot doubled back on
+  // itself). On the grid, stem jogs are straightened (fair/stem_jogs.hpp: moves up to half the
   // tolerance) and then nearly upright lines a curve meets stand up (fair/upright_lines.hpp:
   // up to a quarter), before the fairing; its distances are still measured from the source.
   // (Taking the move off the tolerance instead changed the fairing of whole contours: Breip's
   // I came out with a spike by its notch.)
-  // Handwriting's spurs go first (fair/spurs.hpp): a scan's overshoot doubled back on itself.
   MovedContour spurless{source}, straightened{source}, upright{source};
   if (settings.profile == FairProfile::handwriting) spurless = cut_spurs(source, SpurLimits{});
   straightened = spurless;

@@ -870,9 +870,8 @@ std::vector<std::size_t> seat_line_joins(std::vector<OutlineNode>& nodes, const 
 // cubic's chord of where the passes found it (`entry`): Comic Neue's u had a step of (1, 56)
 // slide a short cap 56 units down its stem, which strayed and cost the contour eight roundings
 // more; Gentium's M, a bracket of 89 units crawl 600 units up its stem. The line keeps half its
-// length at least. Only
-// where the cubic and the one beyond its far node are cubics both (NodeChange weighs the pair).
-// Returns the first node of each cubic it changed.
+// length at least. Only where the cubic and the one beyond its far node are cubics both
+// (NodeChange weighs the pair). Returns the first node of each cubic it changed.
 std::vector<std::size_t> slide_line_joins(std::vector<OutlineNode>& nodes, std::span<const OutlineNode> entry,
                                           std::span<const std::optional<Vec2>> steps, const OutlineJoins& joins,
                                           CubicJudge& judge, double flat) {

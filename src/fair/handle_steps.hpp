@@ -109,7 +109,9 @@ std::vector<Vec2> handles_for_curvature(Vec2 node, Vec2 step, bool out, Vec2 far
 /// more ways than before rounding (an S no choice of whole steps undoes), by a unit with its
 /// handles, or turns it to a nearby primitive direction, where that helps; seats an inflection
 /// node still jumping where κ = 0 holds exactly on both sides, and the far node of a curve
-/// whose line join still jumps where its handle lands on the line; and chooses the steps again around
+/// whose line join still jumps where its handle lands on the line, or else slides that join
+/// back along its line by whole steps, the handle's tip kept, so that the handle grows and the
+/// curvature its far handle's offset gives shrinks; and chooses the steps again around
 /// what moved, at most sixteen passes; then, `limits.polish_rounds` times over each run that
 /// still jumps (or, with `limits.node_turns`, turns κ where the unrounded run does not), moves
 /// each node at or beside a jump (or turning so) with the handles around it chosen again.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <variant>
 
 namespace gf {
 
@@ -113,11 +114,12 @@ Contour without(const Contour& c, const Spur& spur, double& moved) {
   };
   for (std::size_t k = 0; k < n; ++k) {
     if (k == spur.segment) {
-      const Cubic whole = std::get<Cubic>(c.segments[k]);
-      const auto parts = whole.split(spur.t);
-      const Cubic kept = spur.after ? parts[1] : parts[0];
+      // The part outside the spur (a line or a cubic: with_cubics made every quadratic a cubic).
+      const Segment kept = std::visit(
+          [&](const auto& b) -> Segment { return spur.after ? b.subsegment(spur.t, 1.0) : b.subsegment(0.0, spur.t); },
+          c.segments[k]);
       const SegmentEnd joined = spur.after ? SegmentEnd::start : SegmentEnd::end;
-      const Vec2 v = cusp - (spur.after ? kept.p[0] : kept.p[3]);
+      const Vec2 v = cusp - (spur.after ? start_point(kept) : end_point(kept));
       moved = std::max(moved, norm(v));
       out.segments.push_back(with_end_moved(kept, joined, v));
       out.nodes.push_back(spur.after ? NodeFlags{} : c.nodes[k]);

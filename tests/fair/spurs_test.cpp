@@ -53,6 +53,20 @@ TEST(Spurs, ASpurLyingOnItsOwnEdgeIsCutAtItsCusp) {
   EXPECT_NEAR(signed_area(cut.contour), signed_area(source), 0.01 * std::abs(signed_area(source)));
 }
 
+TEST(Spurs, ASpurOfLinesIsCutWhereTheOutlineComesBackAlongALine) {
+  // The same bar, its spur drawn as two lines: 20 units back from the cusp and then on along
+  // the edge, past the cusp (the outline comes back on a line, cut there).
+  Contour source = bar_with_spur();
+  source.segments[2] = Line{{{200.0, 100.0}, {180.0, 101.0}}};
+  source.segments.insert(source.segments.begin() + 3, Line{{{180.0, 101.0}, {260.0, 100.0}}});
+  source.nodes.assign(source.segments.size(), NodeFlags{});
+  const MovedContour cut = cut_spurs(source, SpurLimits{});
+  EXPECT_EQ(cut.changes, 1);
+  EXPECT_LT(turn_at(cut.contour, {200.0, 100.0}).value_or(180.0), 10.0);
+  EXPECT_LT(test::point_set_hausdorff(test::contour_points(cut.contour, 400), test::contour_points(source, 400)),
+            SpurLimits{}.width_units);
+}
+
 TEST(Spurs, APointedStrokeEndASpikeOffTheOutlineAndACornerStay) {
   // A wedge 100 units long closing to a point: the outline never comes back to its tip.
   Contour wedge;
@@ -81,7 +95,9 @@ TEST(Spurs, FairedAsHandwritingTheSpurLeavesNoHook) {
     for (int k = 1; k < 32; ++k) {
       const double t = k / 32.0;
       const Vec2 p = point_at(s, t), d = derivative_at(s, t);
-      if (p.y > 95.0 && p.x > 20.0 && p.x < 280.0) EXPECT_GT(d.x, 0.0) << p.x << ", " << p.y;
+      if (p.y > 95.0 && p.x > 20.0 && p.x < 280.0) {
+        EXPECT_GT(d.x, 0.0) << p.x << ", " << p.y;
+      }
     }
   EXPECT_LE(contour_distance(faired.contour, source), settings.tolerance_units);
 }
