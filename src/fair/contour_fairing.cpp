@@ -51,6 +51,9 @@ constexpr int rounding_retries = 3;  // halvings where rounding strayed, then as
 // Cubics shorter than this (units) are merged away before rounding (outline_nodes): 2 took
 // Because We Create's missing extrema 9 → 6, 3 to 12.
 constexpr double tiny_cubic_chord = 2.0;
+// Of the writeback's budget, what making a run kept as drawn G1 at its kinks may move it
+// (drawn_nodes): the run is the source itself, and the rounding keeps its own reserve.
+constexpr double drawn_move_share = 0.5;
 // The shortest span the cubic writeback halves when the outline is rounded, units (else
 // shortest_span_units): cubics of two to four units land on a few grid points whose whole
 // steps cannot set their curvature (Breip's W and E, Because We Create's d, t and X kept jumps
@@ -208,14 +211,16 @@ void record_chain(const FairedChain& chain, bool smooth_start, FairedPieces& out
 LacPoint faired_start(const FairedRun& run) { return run.chains.front().start_frame(); }
 LacPoint faired_end(const FairedRun& run) { return run.chains.back().end_frame(); }
 
-// A run no basis fairs, as the source draws it: its nodes, smooth only where the source is
-// exactly G1, and its cubics recorded as pieces.
-std::vector<OutlineNode> drawn_nodes(const SmoothRun& run, FairedPieces& pieces) {
+// A run no basis fairs, as the source draws it: its nodes, smooth where the source is G1 or
+// breaks G1 by less than the kink limit (made G1 there, each handle moving its cubic by at most
+// `most_move`: join_nearly_smooth_node), and its cubics recorded as pieces. The run keeps its
+// curves, not the source's kinks (EB Garamond's N: ten of them, 0.3° to 2.3°).
+std::vector<OutlineNode> drawn_nodes(const SmoothRun& run, double most_move, FairedPieces& pieces) {
   std::vector<OutlineNode> drawn(run.cubics.size() + 1);
   for (std::size_t k = 0; k < run.cubics.size(); ++k) {
     const Cubic& c = run.cubics[k];
     drawn[k].point = c.p[0], drawn[k].out_handle = c.p[1], drawn[k + 1].in_handle = c.p[2];
-    drawn[k].smooth = k > 0 && exactly_collinear(c.p[0] - run.cubics[k - 1].p[2], c.p[1] - c.p[0]);
+    drawn[k].smooth = false;
     const Segment s = c;
     const auto frame = [&](SegmentEnd end, Vec2 at) {
       return LacPoint{at, end_tangent(s, end).value_or(Vec2{}), end_curvature(s, end).curvature.value_or(0.0),
@@ -226,6 +231,7 @@ std::vector<OutlineNode> drawn_nodes(const SmoothRun& run, FairedPieces& pieces)
   }
   drawn.back().point = run.cubics.back().p[3];
   drawn.back().smooth = false;
+  for (std::size_t k = 1; k + 1 < drawn.size(); ++k) join_nearly_smooth_node(drawn[k], radians(kink_limit_deg), most_move);
   return drawn;
 }
 
@@ -278,9 +284,9 @@ Attempt fair_with_budgets(const ContourPlan& plan, const FairSettings& settings,
     const SmoothRun& run = std::get<SmoothRun>(plan.pieces[i]);
     const FairedRun& faired = *runs[i];
     if (!faired.ok) {
-      // As drawn, joined smooth only where the source is exactly G1; no corner of the plan
-      // here to be made smooth and faired again.
-      std::vector<OutlineNode> drawn = drawn_nodes(run, a.pieces);
+      // As drawn, joined to what comes before smooth only where the source is exactly G1; no
+      // corner of the plan here to be made smooth and faired again.
+      std::vector<OutlineNode> drawn = drawn_nodes(run, drawn_move_share * budgets.cubic, a.pieces);
       const std::vector<OutlineNode>& before = assembler.nodes();
       const bool joined = !before.empty() && distance(before.back().point, drawn.front().point) < 1e-9 &&
                           exactly_collinear(arriving_direction(before, before.size() - 1), leaving_direction(drawn, 0));

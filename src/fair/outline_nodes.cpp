@@ -7,6 +7,23 @@
 
 namespace gf {
 
+bool join_nearly_smooth_node(OutlineNode& node, double limit_rad, double most_move) {
+  if (!node.in_handle || !node.out_handle) return false;
+  const Vec2 in = node.point - *node.in_handle, out = *node.out_handle - node.point;
+  const double a = norm(in), b = norm(out);
+  if (a == 0.0 || b == 0.0) return false;
+  const double turn = std::abs(turning_angle(in, out));
+  if (!exactly_collinear(in, out)) {
+    if (turn >= limit_rad || (4.0 / 9.0) * std::max(a, b) * 0.5 * turn > most_move) return false;
+    const Vec2 along = in / a + out / b;
+    const Vec2 unit = along / norm(along);
+    node.in_handle = node.point - unit * a;
+    node.out_handle = node.point + unit * b;
+  }
+  node.smooth = true;
+  return true;
+}
+
 Cubic outline_cubic(const std::vector<OutlineNode>& nodes, std::size_t i) {
   const OutlineNode &a = nodes[i], &b = nodes[(i + 1) % nodes.size()];
   return {a.point, *a.out_handle, *b.in_handle, b.point};

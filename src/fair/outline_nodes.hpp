@@ -56,6 +56,12 @@ void drop_empty_cubics(std::vector<OutlineNode>& nodes, bool closed);
 /// other node keeps its length, plus the chord, along the kept node's tangent.
 void merge_tiny_cubics(std::vector<OutlineNode>& nodes, bool closed, double shortest);
 
+/// A node whose handles break G1 by less than `limit_rad` made G1: both handles turned onto
+/// their bisector, each by half the break, where that moves neither cubic by more than
+/// `most_move` (a handle of length L turned by θ moves its cubic by at most (4/9)·L·θ); smooth
+/// where it then is G1. False (the node as it was) where it is not.
+bool join_nearly_smooth_node(OutlineNode& node, double limit_rad, double most_move);
+
 /// The integer grid point nearest p.
 inline Vec2 nearest_grid_point(Vec2 p) { return {std::round(p.x), std::round(p.y)}; }
 

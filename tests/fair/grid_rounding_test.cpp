@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <random>
 
 #include "fair/contour_plan.hpp"
@@ -467,6 +468,37 @@ TEST(OutlineNodes, CubicsUnderTwoUnitsMergeIntoOneNode) {
   const std::vector<OutlineNode> before = apart;
   merge_tiny_cubics(apart, false, 2.0);
   EXPECT_EQ(apart, before);
+}
+
+TEST(OutlineNodes, ANodeBreakingG1ByLessThanTheKinkLimitIsMadeG1WithinItsMove) {
+  // A node whose handles, 30 and 40 units long, leave 1° above and below the level: a 2° kink.
+  const double deg = std::numbers::pi / 180.0, limit = 3.0 * deg;
+  const Vec2 p{100.0, 50.0};
+  const OutlineNode kinked = node(p, p - direction_of(1.0 * deg) * 30.0, p + direction_of(-1.0 * deg) * 40.0, false);
+  OutlineNode joined = kinked;
+  ASSERT_TRUE(join_nearly_smooth_node(joined, limit, 1.0));
+  EXPECT_TRUE(joined.smooth);
+  // Both along their bisector (the level), each as long as it was: G1, each handle turned by
+  // 1°, its tip moved by the chord 2L·sin(½°), the cubic by at most 4/9 of that.
+  EXPECT_NEAR(joined.in_handle->x, p.x - 30.0, 1e-9);
+  EXPECT_NEAR(joined.in_handle->y, p.y, 1e-9);
+  EXPECT_NEAR(joined.out_handle->x, p.x + 40.0, 1e-9);
+  EXPECT_NEAR(joined.out_handle->y, p.y, 1e-9);
+  EXPECT_NEAR(distance(*joined.out_handle, *kinked.out_handle), 80.0 * std::sin(0.5 * deg), 1e-9);
+  // Not where the move it takes is over the bound, nor where the break is the kink limit or
+  // more (a corner): the node as it was.
+  OutlineNode far = kinked;
+  EXPECT_FALSE(join_nearly_smooth_node(far, limit, 0.2));
+  EXPECT_EQ(far, kinked);
+  OutlineNode corner = node(p, p - direction_of(2.0 * deg) * 30.0, p + direction_of(-2.0 * deg) * 40.0, false);
+  const OutlineNode corner_was = corner;
+  EXPECT_FALSE(join_nearly_smooth_node(corner, limit, 10.0));
+  EXPECT_EQ(corner, corner_was);
+  // Exactly G1 already: smooth, its handles as they were.
+  OutlineNode straight = node(p, p - Vec2{30.0, 0.0}, p + Vec2{40.0, 0.0}, false);
+  EXPECT_TRUE(join_nearly_smooth_node(straight, limit, 0.0));
+  EXPECT_TRUE(straight.smooth);
+  EXPECT_EQ(*straight.out_handle, (p + Vec2{40.0, 0.0}));
 }
 
 TEST(OutlineNodes, CubicsOfNoExtentAreDropped) {
