@@ -5,6 +5,8 @@
 #include <optional>
 #include <variant>
 
+#include "geom/curvature.hpp"
+
 namespace gf {
 
 namespace {
@@ -34,17 +36,6 @@ std::vector<Sample> samples_of(const Contour& c) {
   return out;
 }
 
-// The direction a segment leaves its start or reaches its end in: its first control point off
-// the node (a retracted handle's tangent comes from the next one); none for a point.
-std::optional<Vec2> end_direction(const Segment& s, SegmentEnd end) {
-  std::vector<Vec2> p;
-  for_each_point(s, [&](Vec2 q) { p.push_back(q); });
-  if (end == SegmentEnd::end) std::reverse(p.begin(), p.end());
-  for (std::size_t k = 1; k < p.size(); ++k)
-    if (p[k] != p[0]) return end == SegmentEnd::start ? p[k] - p[0] : p[0] - p[k];
-  return std::nullopt;
-}
-
 struct Spur {
   std::size_t cusp;    ///< the node at the spur's foot
   bool after;          ///< the spur follows the cusp along the outline (else it precedes it)
@@ -52,10 +43,9 @@ struct Spur {
   double t;
 };
 
-// The spur at the cusp at sample `at` (node `node`) going `way` (+1 on along the outline, −1
+// The spur at the cusp at sample `at` (a node's) going `way` (+1 on along the outline, −1
 // back), if there is one.
-std::optional<Spur> spur_from(const std::vector<Sample>& samples, std::size_t at, std::size_t node, int way,
-                              const SpurLimits& limits) {
+std::optional<Spur> spur_from(const std::vector<Sample>& samples, std::size_t at, int way, const SpurLimits& limits) {
   const std::size_t n = samples.size();
   const Vec2 cusp = samples[at].point;
   const auto index = [&](std::size_t steps) { return way > 0 ? (at + steps) % n : (at + n - steps % n) % n; };
@@ -89,7 +79,7 @@ std::optional<Spur> spur_from(const std::vector<Sample>& samples, std::size_t at
     for (std::size_t o = 0; o < n && !near; ++o) near = !inside[o] && distance(samples[s].point, samples[o].point) <= limits.width_units;
     if (!near) return std::nullopt;
   }
-  return Spur{node, way > 0, samples[*back].segment, samples[*back].t};
+  return Spur{samples[at].segment, way > 0, samples[*back].segment, samples[*back].t};
 }
 
 // The contour without the spur: the segments outside it, the one where the outline returns
@@ -99,19 +89,12 @@ Contour without(const Contour& c, const Spur& spur, double& moved) {
   const Vec2 cusp = c.node_point(spur.cusp);
   Contour out;
   out.closed = true;
-  // The kept stretch runs from the cut segment's kept part round to the cusp (after) or from
-  // the cusp round to it (before); segment k is kept whole where it lies outside the spur.
-  const auto outside = [&](std::size_t k) {
-    // Segments strictly between the cusp and the return point, the way the spur runs, go.
-    if (spur.after) {
-      for (std::size_t s = spur.cusp; s != spur.segment; s = (s + 1) % n)
-        if (s == k) return false;
-    } else {
-      for (std::size_t s = (spur.segment + 1) % n; s != spur.cusp; s = (s + 1) % n)
-        if (s == k) return false;
-    }
-    return k != spur.segment;
-  };
+  // The segments wholly inside the spur go: from the cusp on to the one where the outline
+  // returns (after), or from after that one on to the cusp (before).
+  std::vector<bool> inside(n, false);
+  for (std::size_t k = spur.after ? spur.cusp : (spur.segment + 1) % n; k != (spur.after ? spur.segment : spur.cusp);
+       k = (k + 1) % n)
+    inside[k] = true;
   for (std::size_t k = 0; k < n; ++k) {
     if (k == spur.segment) {
       // The part outside the spur (a line or a cubic: with_cubics made every quadratic a cubic).
@@ -123,7 +106,7 @@ Contour without(const Contour& c, const Spur& spur, double& moved) {
       moved = std::max(moved, norm(v));
       out.segments.push_back(with_end_moved(kept, joined, v));
       out.nodes.push_back(spur.after ? NodeFlags{} : c.nodes[k]);
-    } else if (outside(k)) {
+    } else if (!inside[k]) {
       out.segments.push_back(c.segments[k]);
       out.nodes.push_back(!spur.after && k == spur.cusp ? NodeFlags{} : c.nodes[k]);
     }
@@ -144,11 +127,11 @@ MovedContour cut_spurs(const Contour& contour, const SpurLimits& limits) {
     for (std::size_t at = 0; at < samples.size() && !found; ++at) {
       if (samples[at].t != 0.0) continue;
       const std::size_t node = samples[at].segment;
-      const std::optional<Vec2> in = end_direction(c.segments[(node + n - 1) % n], SegmentEnd::end);
-      const std::optional<Vec2> leave = end_direction(c.segments[node], SegmentEnd::start);
+      const std::optional<Vec2> in = end_tangent(c.segments[(node + n - 1) % n], SegmentEnd::end);
+      const std::optional<Vec2> leave = end_tangent(c.segments[node], SegmentEnd::start);
       if (!in || !leave || std::abs(turning_angle(*in, *leave)) < radians(limits.min_turn_deg)) continue;
       for (const int way : {1, -1})
-        if (!found) found = spur_from(samples, at, node, way, limits);
+        if (!found) found = spur_from(samples, at, way, limits);
     }
     if (!found) break;
     c = without(c, *found, out.moved);
