@@ -641,9 +641,9 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& requested
   // up to a quarter), before the fairing; its distances are still measured from the source.
   // (Taking the move off the tolerance instead changed the fairing of whole contours: Breip's
   // I came out with a spike by its notch.)
-  MovedContour spurless{source}, straightened{source}, upright{source};
+  MovedContour spurless{source};
   if (settings.profile == FairProfile::handwriting) spurless = cut_spurs(source, SpurLimits{});
-  straightened = spurless;
+  MovedContour straightened = spurless, upright = spurless;
   if (settings.rounding == Rounding::integers) {
     JogLimits jogs;
     jogs.max_move_units = std::min(most_jog_move, jog_move_share * settings.tolerance_units);
@@ -651,8 +651,6 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& requested
     UprightLimits limits;
     limits.max_move_units = std::min(limits.max_move_units, upright_move_share * settings.tolerance_units);
     upright = stand_lines_upright(straightened.contour, limits);
-  } else {
-    upright = straightened;
   }
   const Contour& stood = upright.contour;
   const bool any_stood = spurless.changes + straightened.changes + upright.changes > 0;

@@ -12,8 +12,8 @@ bool join_nearly_smooth_node(OutlineNode& node, double limit_rad, double most_mo
   const Vec2 in = node.point - *node.in_handle, out = *node.out_handle - node.point;
   const double a = norm(in), b = norm(out);
   if (a == 0.0 || b == 0.0) return false;
-  const double turn = std::abs(turning_angle(in, out));
   if (!exactly_collinear(in, out)) {
+    const double turn = std::abs(turning_angle(in, out));
     if (turn >= limit_rad || (4.0 / 9.0) * std::max(a, b) * 0.5 * turn > most_move) return false;
     const Vec2 along = in / a + out / b;
     const Vec2 unit = along / norm(along);

@@ -6,6 +6,7 @@
 #include <variant>
 
 #include "geom/curvature.hpp"
+#include "geom/polyline_distance.hpp"
 
 namespace gf {
 
@@ -67,18 +68,16 @@ std::optional<Spur> spur_from(const std::vector<Sample>& samples, std::size_t at
     }
   }
   if (!back) return std::nullopt;
-  // Every point of the spur within the width of the outline outside it.
-  std::vector<bool> inside(n, false);
-  for (std::size_t s = at;; s = way > 0 ? (s + 1) % n : (s + n - 1) % n) {
-    inside[s] = true;
-    if (s == *back) break;
+  // Every point of the spur within the width of the outline outside it: the samples from the
+  // cusp to the return (along the outline, the way the spur runs), against the rest in order.
+  const std::size_t first = way > 0 ? at : *back, last = way > 0 ? *back : at;
+  std::vector<Vec2> spur, rest;
+  for (std::size_t s = first;; s = (s + 1) % n) {
+    spur.push_back(samples[s].point);
+    if (s == last) break;
   }
-  for (std::size_t s = 0; s < n; ++s) {
-    if (!inside[s]) continue;
-    bool near = false;
-    for (std::size_t o = 0; o < n && !near; ++o) near = !inside[o] && distance(samples[s].point, samples[o].point) <= limits.width_units;
-    if (!near) return std::nullopt;
-  }
+  for (std::size_t s = (last + 1) % n; s != first; s = (s + 1) % n) rest.push_back(samples[s].point);
+  if (rest.size() < 2 || directed_hausdorff(spur, rest, limits.width_units) > limits.width_units) return std::nullopt;
   return Spur{samples[at].segment, way > 0, samples[*back].segment, samples[*back].t};
 }
 
