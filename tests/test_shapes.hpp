@@ -1,5 +1,5 @@
-// Shapes tests build by hand: a closed polygon of lines, a node of an unrounded outline, and
-// two real contours: Comic Neue's i stem and DejaVu Sans Bold's u.
+// Shapes tests build by hand: a closed polygon of lines, a node of an unrounded outline, a stem
+// with round ends, and two real contours: Comic Neue's i stem and DejaVu Sans Bold's u.
 #pragma once
 
 #include <optional>
@@ -31,6 +31,19 @@ inline Contour comic_neue_i_stem() {
   c.segments = {Cubic{{{111, -6}, {128, -6}, {143, 9}, {143, 26}}}, Line{{{143, 26}, {149, 460}}},
                 Cubic{{{149, 460}, {149, 478}, {135, 493}, {117, 493}}},
                 Cubic{{{117, 493}, {100, 493}, {84, 478}, {84, 460}}}, Line{{{84, 460}, {78, 26}}},
+                Cubic{{{78, 26}, {78, 9}, {93, -6}, {111, -6}}}};
+  c.nodes.assign(6, NodeFlags{});
+  return c;
+}
+
+/// A stem 65 units wide (1000 units per em) with semicircular ends, each drawn as two cubics
+/// whose handles are 0.52 of the radius: curvature 0.028–0.034 about a mean of 0.031, and it
+/// meets the upright lines with that curvature.
+inline Contour round_ended_stem() {
+  Contour c;
+  c.segments = {Cubic{{{111, -6}, {128, -6}, {143, 9}, {143, 26}}}, Line{{{143, 26}, {143, 460}}},
+                Cubic{{{143, 460}, {143, 478}, {129, 493}, {111, 493}}},
+                Cubic{{{111, 493}, {94, 493}, {78, 478}, {78, 460}}}, Line{{{78, 460}, {78, 26}}},
                 Cubic{{{78, 26}, {78, 9}, {93, -6}, {111, -6}}}};
   c.nodes.assign(6, NodeFlags{});
   return c;

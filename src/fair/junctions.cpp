@@ -62,6 +62,22 @@ std::vector<std::size_t> prominent_extrema(const std::vector<double>& f, std::si
   return {ext.begin() + 1, ext.end() - 1};
 }
 
+// An arc between two lines (select_junctions): turning at least this far, and meeting its
+// lines with at least this share of its peak curvature.
+constexpr double arc_min_turning_rad = 2.0, arc_min_end_share = 0.65;
+
+// Where θ first reaches the share `part` of its turning from a to b (a < b, wrapping past a
+// closed run's length).
+double where_turned(const RunReference& run, double a, double b, double part) {
+  const double turning = run.theta_at(b) - run.theta_at(a), target = run.theta_at(a) + turning * part;
+  double lo = a, hi = b;
+  for (int it = 0; it < 50; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    ((run.theta_at(mid) - target) * turning < 0.0 ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
 // Split junctions inserted where a piece turns by more than `max_turning`, evenly in θ.
 std::vector<Junction> cap_turning(std::vector<Junction> out, const RunReference& run, double max_turning) {
   const double L = run.length();
@@ -75,14 +91,7 @@ std::vector<Junction> cap_turning(std::vector<Junction> out, const RunReference&
     const double turning = run.theta_at(b) - run.theta_at(a);
     const int parts = static_cast<int>(std::ceil(std::abs(turning) / max_turning - 1e-9));
     for (int p = 1; p < parts; ++p) {
-      // where θ first reaches p/parts of the piece's turning
-      const double target = run.theta_at(a) + turning * p / parts;
-      double lo = a, hi = b;
-      for (int it = 0; it < 50; ++it) {
-        const double mid = 0.5 * (lo + hi);
-        ((run.theta_at(mid) - target) * turning < 0.0 ? lo : hi) = mid;
-      }
-      const double at = 0.5 * (lo + hi);
+      const double at = where_turned(run, a, b, static_cast<double>(p) / parts);
       capped.push_back({closed ? std::fmod(at, L) : at, JunctionKind::split});
     }
   }
@@ -196,6 +205,20 @@ std::vector<Junction> select_junctions(const RunReference& run, bool zero_curvat
     for (std::size_t k = l.first; k <= l.last; ++k)
       if (f[k % count] > peak) peak = f[k % count], peak_at = k;
     if (zero_first && zero_last) {
+      // A lobe between two κ = 0 ends turning through much of a half turn and meeting them
+      // with nearly its peak curvature is an arc the source drew without transitions (a round
+      // stroke end, Comic Neue's; its curvature wobbles about the mean where it is drawn as
+      // cubics): cut where it has turned a quarter, half and three quarters of the way, two
+      // transitions and two halves of the arc, each κ = 0 end with a free junction of its own.
+      // With `arcs_by_turning`, every lobe between κ = 0 ends that turns as far.
+      const double a = s_of(l.first), b = s_of(l.last);
+      const double turning = std::abs(run.theta_at(b) - run.theta_at(a));
+      const double ends = std::min(f[l.first % count], f[l.last % count]);
+      if (turning >= arc_min_turning_rad && (options.arcs_by_turning || ends >= arc_min_end_share * peak)) {
+        for (const double part : {0.25, 0.5, 0.75})
+          out.push_back({where_turned(run, a, b, part), part == 0.5 ? JunctionKind::extremum : JunctionKind::split});
+        continue;
+      }
       if (peak_at > l.first && peak_at < l.last) out.push_back({s_of(peak_at), JunctionKind::extremum});
       continue;
     }

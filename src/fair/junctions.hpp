@@ -18,6 +18,7 @@ enum class JunctionKind { run_end, inflection, extremum, split };
 struct Junction {
   double s;
   JunctionKind kind;
+  bool operator==(const Junction&) const = default;
 };
 
 /// Orders junctions along the run.
@@ -28,6 +29,10 @@ struct JunctionOptions {
   double tolerance_units;
   double extremum_prominence;  ///< a curvature extremum is kept when it stands out by this fraction of its lobe's peak
   double max_turning_rad;
+  /// Every lobe between two κ = 0 ends that turns through most of a half turn is cut as an
+  /// arc (at quarters of its turning), not at its curvature peak: a retry for runs whose
+  /// peak lies too near a line for a transition to reach it.
+  bool arcs_by_turning = false;
 };
 
 JunctionOptions junction_options(const FairSettings& settings);

@@ -451,6 +451,32 @@ TEST(ContourFairing, ACapMeetsANearlyUprightStemWithoutAnS) {
   EXPECT_EQ(upright, 2);
 }
 
+TEST(ContourFairing, RoundStrokeEndsBecomeG2WithTheirLines) {
+  // Arcs drawn without transitions, meeting their lines with κ·UPM about 30: cut at their
+  // curvature peaks, the stem's caps found no G2 chain and were kept as drawn, as was the foot
+  // of Comic Neue's K (OFL), whose curvature peaks 11 units from the line; its source meets the
+  // leg's lines at kinks of 1.8° and 2.7°. Cut at quarters of their turning, each is two
+  // transitions from κ = 0 and an arc.
+  const Contour comic_neue_k = unflagged(
+      {cubic_of({509, -7}, {526, -7}, {540, 7}, {540, 25}), cubic_of({540, 25}, {540, 36}, {536, 43}, {529, 49}),
+       line_of({529, 49}, {169, 329}), line_of({169, 329}, {510, 621}),
+       cubic_of({510, 621}, {517, 627}, {520, 636}, {520, 644}), cubic_of({520, 644}, {520, 660}, {506, 676}, {490, 676}),
+       cubic_of({490, 676}, {482, 676}, {475, 673}, {469, 668}), line_of({469, 668}, {146, 391}),
+       line_of({146, 391}, {146, 644}), cubic_of({146, 644}, {146, 662}, {131, 675}, {114, 675}),
+       cubic_of({114, 675}, {97, 675}, {83, 662}, {83, 644}), line_of({83, 644}, {83, 26}),
+       cubic_of({83, 26}, {83, 9}, {97, -6}, {114, -6}), cubic_of({114, -6}, {131, -6}, {146, 9}, {146, 26}),
+       line_of({146, 26}, {146, 269}), line_of({146, 269}, {490, 0}), cubic_of({490, 0}, {496, -5}, {502, -7}, {509, -7})});
+  for (const Contour& source : {test::round_ended_stem(), comic_neue_k}) {
+    const ContourFairing r = faired_on_grid(source, FairProfile::text, 1000.0);
+    EXPECT_TRUE(r.runs_as_drawn.empty());
+    for (const Join& j : joins_of(r.contour)) EXPECT_NE(j.kind, JoinKind::kink) << "node " << j.node;
+    // (The K's arm meets its diagonal, step (7, 6), with κ·UPM 0.068 on the grid: its far
+    // handle two of the line's 0.11-unit lattice rows off it.)
+    if (source == comic_neue_k) continue;
+    EXPECT_EQ(g2_jumps(Outline{{r.contour}}, 1000.0), 0);
+  }
+}
+
 TEST(ContourFairing, AStemJogIsStraightenedOnTheGrid) {
   // DejaVu Sans Bold's u: a flat quadratic S carries the inner stem 2 units over, 400 units
   // long. On the grid, a cubic between two parallel tangents 2 units apart cannot leave both
