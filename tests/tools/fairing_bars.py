@@ -12,6 +12,9 @@ Per glyph (a–z A–Z by default, through the font's cmap), both versions:
   nodes            on-curve points;
   kinks, g2-jumps, missing extrema   as tests/tools/independent_checks.py defines them;
   distance         two-sided Hausdorff between the outlines, from samples 0.25 unit apart;
+  corners lost     (text) the source's corners, joins turning by more than 3°, with no corner
+                   of the output (a join turning by more than 3°, or one without a direction
+                   on a side) within 0.25 % of the em;
   contours         count and each contour's direction (sign of its area), in order.
 
 Bars (--profile handwriting|text) as the issue states them; prints a line per glyph and a
@@ -129,6 +132,22 @@ def measures(contours, upm):
                 elif (direction > 0 and x > anchor) or (direction < 0 and x < anchor) or direction == 0:
                     anchor = x if direction != 0 else anchor
     return tv, infl, ext
+
+
+def corners_lost(source, faired, upm):
+    """The source's corners (joins turning by more than CORNER_DEG) that have no output corner
+    (the same, or a join without a direction on one side) within 0.25 % of the em."""
+    def corners(contours, undirected):
+        out = []
+        for segs in contours:
+            for i in range(len(segs)):
+                a = join_angle(segs[i - 1], segs[i])
+                if (a is None and undirected) or (a is not None and a > CORNER_DEG):
+                    out.append(segs[i][0])
+        return out
+    kept = corners(faired, True)
+    reach = 0.0025 * upm
+    return sum(not any(math.dist(p, q) <= reach for q in kept) for p in corners(source, False))
 
 
 def g3_jumps(contours):
@@ -271,13 +290,14 @@ def main():
             "glyph": name, "tv": [tv_a, tv_b], "inflections": [infl_a, infl_b], "extrema": [ext_a, ext_b],
             "nodes": [sum(len(c) for c in a), sum(len(c) for c in b)],
             "kinks": kinks, "g2_jumps": jumps, "smooth_joins": smooth, "missing_extrema": missing,
-            "distance": hausdorff(a, b),
+            "distance": hausdorff(a, b), "corners_lost": corners_lost(a, b, upm),
             "contours_kept": len(a) == len(b) and all((area(x) > 0) == (area(y) > 0) for x, y in zip(a, b)),
         }
         rows.append(row)
         print(f"{name:12s} tv {tv_a:9.2f} -> {tv_b:8.2f}  infl {infl_a:3d} -> {infl_b:3d}  ext {ext_a:3d} -> {ext_b:3d}  "
               f"nodes {row['nodes'][0]:3d} -> {row['nodes'][1]:3d}  kinks {kinks}  g2 {jumps}/{smooth}  "
-              f"missing {missing}  dist {row['distance']:.2f}{'' if row['contours_kept'] else '  CONTOURS CHANGED'}")
+              f"missing {missing}  dist {row['distance']:.2f}  corners lost {row['corners_lost']}"
+              f"{'' if row['contours_kept'] else '  CONTOURS CHANGED'}")
 
     def ratio(key, f=statistics.median):
         # NaN (the bar not met) where no glyph's source has any: Humor Sans draws only lines.
@@ -307,6 +327,7 @@ def main():
     else:
         bars = [
             ("every glyph within 0.15% UPM", worst, worst <= 0.0015),
+            ("corners kept", sum(r["corners_lost"] for r in rows), sum(r["corners_lost"] for r in rows) == 0),
             ("no g2-jump at smooth joins", jumps, jumps == 0),
             ("no kinks", sum(r["kinks"] for r in rows), sum(r["kinks"] for r in rows) == 0),
             ("TV <= 0.95x (median)", ratio("tv"), ratio("tv") <= 0.95),
