@@ -14,6 +14,7 @@
 #include "fair/grid_rounding.hpp"
 #include "fair/kinked_corners.hpp"
 #include "fair/kink_fillet.hpp"
+#include "fair/leaning_line_ends.hpp"
 #include "fair/rounding_retry.hpp"
 #include "fair/run_fairing.hpp"
 #include "fair/spurs.hpp"
@@ -51,6 +52,9 @@ constexpr int rounding_retries = 3;  // halvings where rounding strayed, then as
 // Cubics shorter than this (units) are merged away before rounding (outline_nodes): 2 took
 // Because We Create's missing extrema 9 → 6, 3 to 12.
 constexpr double tiny_cubic_chord = 2.0;
+// Of the tolerance, how far a fillet onto a leaning line's axis may move the outline.
+constexpr double leaning_move_share = 0.25;
+
 // Of the writeback's budget, what making a run kept as drawn G1 at its kinks may move it
 // (drawn_nodes): the run is the source itself, and the rounding keeps its own reserve.
 constexpr double drawn_move_share = 0.5;
@@ -398,6 +402,18 @@ G3CubicReport carry_g3_into_cubics(std::vector<OutlineNode>& nodes, bool closed,
   return make_cubics_g3(nodes, closed, allowance, {settings.flat_curvature, budget});
 }
 
+// On the grid, curves meeting lines that lean a little off an axis join them through a fillet
+// from the axis (fair/leaning_line_ends.hpp), each moving the outline by up to a quarter of the
+// tolerance; kept where the outline stays within `available`, what the float outline may use.
+void fillet_leaning_lines(std::vector<OutlineNode>& nodes, bool closed, const SampledContour& sampled_source,
+                          const FairSettings& settings, double available) {
+  std::vector<OutlineNode> filleted = nodes;
+  LeaningLineLimits limits;
+  limits.max_move_units = leaning_move_share * settings.tolerance_units;
+  if (fillet_leaning_line_ends(filleted, closed, limits) == 0) return;
+  if (distance_between(SampledContour(to_contour(filleted, closed)), sampled_source) <= available) nodes = std::move(filleted);
+}
+
 // The contour faired on one plan: the budgets halved once when the first try strays, the
 // outline rounded when asked; the runs that fail on their own outlines faired on `basis`.
 // `kinked` gets the corners of the result that turn by less than the kink limit.
@@ -423,6 +439,7 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
     drop_empty_cubics(a.nodes, source.closed);
     if (round) merge_tiny_cubics(a.nodes, source.closed, tiny_cubic_chord);
     rotate_to_start(a.nodes, source.node_point(0));
+    if (round) fillet_leaning_lines(a.nodes, source.closed, sampled_source, settings, available);
     if (settings.continuity == Continuity::g3) a.g3_cubics = carry_g3_into_cubics(a.nodes, source.closed, sampled_source, settings);
     Contour faired = to_contour(a.nodes, source.closed);
     const SampledContour sampled(faired);

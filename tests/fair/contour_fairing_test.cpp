@@ -477,6 +477,24 @@ TEST(ContourFairing, RoundStrokeEndsBecomeG2WithTheirLines) {
   }
 }
 
+TEST(ContourFairing, ABracketMeetsAStemLeaningOffTheVerticalWithoutAFold) {
+  // Gentium Plus's M (2048 units per em, OFL): its left stem leans 0.54° (10 units over 1,053)
+  // and the bracket from the serif meets it upright, a 0.54° kink the fairing makes G2. On the
+  // grid the stem's nearest directions step (1, 88) or longer; the bracket's handle had to be
+  // such a step, the rounding slid it 177 units up the stem, and that cubic folded (three
+  // inflections, κ·UPM 117 and 488 where the source has none). Now the bracket leaves upright
+  // and a fillet turns onto the stem. The stem's top closed here by lines.
+  const Contour m = unflagged({line_of({1115, 0}, {1115, 43}), quad_of({1115, 43}, {1183, 57}, {1226.5, 74}),
+                               quad_of({1226.5, 74}, {1270, 91}, {1270, 104}), line_of({1270, 104}, {1260, 1157}),
+                               line_of({1260, 1157}, {1150, 1157}), line_of({1150, 1157}, {1150, 600}),
+                               line_of({1150, 600}, {1000, 600}), line_of({1000, 600}, {1000, 0}),
+                               line_of({1000, 0}, {1115, 0})});
+  const ContourFairing r = faired_on_grid(m, FairProfile::text, 2048.0);
+  EXPECT_EQ(inflections(r.contour, 2048.0), 0);
+  EXPECT_EQ(g2_jumps(Outline{{r.contour}}, 2048.0), 0);
+  for (const Segment& s : r.contour.segments) EXPECT_LT(absolute_turning(s), 0.5 * std::numbers::pi);
+}
+
 TEST(ContourFairing, AStemJogIsStraightenedOnTheGrid) {
   // DejaVu Sans Bold's u: a flat quadratic S carries the inner stem 2 units over, 400 units
   // long. On the grid, a cubic between two parallel tangents 2 units apart cannot leave both

@@ -1,0 +1,139 @@
+#include "fair/leaning_line_ends.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "geom/polyline_distance.hpp"
+
+namespace gf {
+
+namespace {
+
+constexpr int cubic_samples = 48;
+constexpr double line_sample_spacing = 1.0;  // units
+
+// The unit axis direction nearest the unit vector d.
+Vec2 nearest_axis(Vec2 d) {
+  return std::abs(d.x) >= std::abs(d.y) ? Vec2{d.x > 0.0 ? 1.0 : -1.0, 0.0} : Vec2{0.0, d.y > 0.0 ? 1.0 : -1.0};
+}
+
+// The shortest primitive grid step of the line from a to b with each end moved by a unit or
+// less: the step rounding can give it at best.
+double shortest_step(Vec2 a, Vec2 b) {
+  const Vec2 d = nearest_grid_point(b) - nearest_grid_point(a);
+  double best = std::numeric_limits<double>::infinity();
+  for (int dx = -2; dx <= 2; ++dx)
+    for (int dy = -2; dy <= 2; ++dy)
+      if (const std::optional<Vec2> s = primitive_step(d + Vec2{static_cast<double>(dx), static_cast<double>(dy)}))
+        best = std::min(best, norm(*s));
+  return best;
+}
+
+void add_cubic(std::vector<Vec2>& out, const Cubic& c) {
+  for (int k = 0; k <= cubic_samples; ++k) out.push_back(c.point_at(static_cast<double>(k) / cubic_samples));
+}
+
+void add_line(std::vector<Vec2>& out, Vec2 a, Vec2 b) {
+  const int n = std::max(1, static_cast<int>(std::ceil(distance(a, b) / line_sample_spacing)));
+  for (int k = 0; k <= n; ++k) out.push_back(a + (b - a) * (static_cast<double>(k) / n));
+}
+
+// The sign of the curvature the cubic ends with just before its end (the end itself is flat:
+// it meets its line with κ = 0); 0 where it is straight there.
+double end_bend(const Cubic& c) {
+  for (const double t : {0.9, 0.75, 0.5}) {
+    const Vec2 d1 = c.hodograph().point_at(t), d2 = c.hodograph().hodograph().point_at(t);
+    const double k = cross(d1, d2);
+    if (k != 0.0) return k > 0.0 ? 1.0 : -1.0;
+  }
+  return 0.0;
+}
+
+// The join of `curve` (ending at the join) and the line from there to `far`, rebuilt as the
+// curve turned onto the axis, the fillet and the line's new start; none where the limits say no.
+struct Filleted {
+  Cubic curve, fillet;
+  Vec2 axis;  ///< the curve's new direction at the join
+};
+std::optional<Filleted> fillet_join(const Cubic& curve, Vec2 far, const LeaningLineLimits& limits) {
+  const Vec2 j = curve.p[3];
+  const double length = distance(j, far);
+  if (!(length > 0.0)) return std::nullopt;
+  const Vec2 t = (far - j) / length, axis = nearest_axis(t);
+  const double lean = std::atan2(std::abs(cross(axis, t)), dot(axis, t));
+  if (lean < radians(limits.min_lean_deg) || lean > radians(limits.max_lean_deg)) return std::nullopt;
+  const double handle = distance(curve.p[2], j), step = shortest_step(j, far);
+  if (!(handle > 0.0) || step <= handle || length < 3.0 * step) return std::nullopt;
+  // From the axis onto a line leaning the other way from the curve's bend is an inflection
+  // (where the curve's handle is too short for any grid direction on its own side).
+  if (cross(axis, t) * end_bend(curve) <= 0.0) return std::nullopt;
+  // The axis leg: half a step, at most as long as keeps the vertex within the move of the line.
+  const double m = std::min(0.5 * step, limits.max_move_units / std::sin(lean));
+  if (m < 1.0) return std::nullopt;
+  const Vec2 v = j + axis * m;
+  const Vec2 q = v + (far - v) / norm(far - v) * step;
+  Filleted out;
+  out.axis = axis;
+  out.curve = curve;
+  out.curve.p[2] = j - axis * handle;
+  out.curve.p[1] = j + axis * dot(curve.p[1] - j, axis);
+  out.fillet = Cubic{{j, v, v, q}};
+  // How far the outline moves, both ways, from the curve's start to the line's far end.
+  std::vector<Vec2> before, after;
+  add_cubic(before, curve);
+  add_line(before, j, far);
+  add_cubic(after, out.curve);
+  add_cubic(after, out.fillet);
+  add_line(after, q, far);
+  const double moved = std::max(directed_hausdorff(before, after, limits.max_move_units),
+                                directed_hausdorff(after, before, limits.max_move_units));
+  if (moved > limits.max_move_units) return std::nullopt;
+  return out;
+}
+
+}  // namespace
+
+int fillet_leaning_line_ends(std::vector<OutlineNode>& nodes, bool closed, const LeaningLineLimits& limits) {
+  int filleted = 0;
+  for (std::size_t k = 0; k < nodes.size(); ++k) {
+    const std::size_t n = nodes.size();
+    if (!closed && (k == 0 || k + 1 == n)) continue;
+    const std::size_t prev = (k + n - 1) % n, next = (k + 1) % n;
+    OutlineNode& node = nodes[k];
+    if (!node.smooth || node.in_handle.has_value() == node.out_handle.has_value()) continue;
+    const bool arrives = node.in_handle.has_value();  // a cubic arrives, the line leaves
+    // The line's side must be a line (no handle at its far end either) and the cubic whole.
+    if (arrives ? nodes[next].in_handle.has_value() || !nodes[prev].out_handle
+                : nodes[prev].out_handle.has_value() || !nodes[next].in_handle)
+      continue;
+    const Cubic cubic = arrives ? outline_cubic(nodes, prev) : outline_cubic(nodes, k).reversed();
+    const Vec2 far = nodes[arrives ? next : prev].point;
+    const std::optional<Filleted> f = fillet_join(cubic, far, limits);
+    if (!f) continue;
+    const Cubic curve = arrives ? f->curve : f->curve.reversed();
+    const Cubic fillet = arrives ? f->fillet : f->fillet.reversed();
+    OutlineNode q;
+    q.smooth = true;
+    if (arrives) {
+      *nodes[prev].out_handle = curve.p[1];
+      node.in_handle = curve.p[2];
+      node.out_handle = fillet.p[1];
+      node.grid_step = f->axis;
+      q.point = fillet.p[3], q.in_handle = fillet.p[2];
+      nodes.insert(nodes.begin() + static_cast<std::ptrdiff_t>(k + 1), q);
+    } else {
+      *nodes[next].in_handle = curve.p[2];
+      node.out_handle = curve.p[1];
+      node.in_handle = fillet.p[2];
+      node.grid_step = -f->axis;
+      q.point = fillet.p[0], q.out_handle = fillet.p[1];
+      nodes.insert(nodes.begin() + static_cast<std::ptrdiff_t>(k), q);
+      ++k;  // the join moved up one
+    }
+    ++filleted;
+  }
+  return filleted;
+}
+
+}  // namespace gf
