@@ -108,6 +108,7 @@ int fillet_leaning_line_ends(std::vector<OutlineNode>& nodes, bool closed, const
                 : nodes[prev].out_handle.has_value() || !nodes[next].in_handle)
       continue;
     const Cubic cubic = arrives ? outline_cubic(nodes, prev) : outline_cubic(nodes, k).reversed();
+    if (cubic.p[1] == cubic.p[2]) continue;  // a fillet already (both handles on its vertex)
     const Vec2 far = nodes[arrives ? next : prev].point;
     const std::optional<Filleted> f = fillet_join(cubic, far, limits);
     if (!f) continue;
@@ -122,14 +123,21 @@ int fillet_leaning_line_ends(std::vector<OutlineNode>& nodes, bool closed, const
       node.grid_step = f->axis;
       q.point = fillet.p[3], q.in_handle = fillet.p[2];
       nodes.insert(nodes.begin() + static_cast<std::ptrdiff_t>(k + 1), q);
+      ++k;  // past the fillet's end
     } else {
       *nodes[next].in_handle = curve.p[2];
       node.out_handle = curve.p[1];
       node.in_handle = fillet.p[2];
       node.grid_step = -f->axis;
       q.point = fillet.p[0], q.out_handle = fillet.p[1];
-      nodes.insert(nodes.begin() + static_cast<std::ptrdiff_t>(k), q);
-      ++k;  // the join moved up one
+      // Before the join; after the last node where the join is the first (the contour keeps
+      // its start).
+      if (k == 0) {
+        nodes.push_back(q);
+      } else {
+        nodes.insert(nodes.begin() + static_cast<std::ptrdiff_t>(k), q);
+        ++k;  // the join moved up one
+      }
     }
     ++filleted;
   }
