@@ -24,30 +24,24 @@ inline OutlineNode node(Vec2 point, std::optional<Vec2> in, std::optional<Vec2> 
   return OutlineNode{point, in, out, smooth, grid_step};
 }
 
-/// Comic Neue's i stem (1000 units per em): two lines 0.8° off the vertical, each meeting a
-/// round cap tangentially.
-inline Contour comic_neue_i_stem() {
+/// A stem 65 units wide (1000 units per em) with semicircular ends, each drawn as two cubics
+/// whose handles are 0.52 of the radius: curvature 0.028–0.034 about a mean of 0.031, and it
+/// meets the lines with that curvature. Its top `lean` units right of its foot; the caps stay
+/// upright, so a leaning stem meets them at kinks.
+inline Contour round_ended_stem(double lean = 0.0) {
+  const Vec2 up{lean, 0};
   Contour c;
-  c.segments = {Cubic{{{111, -6}, {128, -6}, {143, 9}, {143, 26}}}, Line{{{143, 26}, {149, 460}}},
-                Cubic{{{149, 460}, {149, 478}, {135, 493}, {117, 493}}},
-                Cubic{{{117, 493}, {100, 493}, {84, 478}, {84, 460}}}, Line{{{84, 460}, {78, 26}}},
-                Cubic{{{78, 26}, {78, 9}, {93, -6}, {111, -6}}}};
+  c.segments = {Cubic{{{111, -6}, {128, -6}, {143, 9}, {143, 26}}}, Line{{Vec2{143, 26}, Vec2{143, 460} + up}},
+                Cubic{{Vec2{143, 460} + up, Vec2{143, 478} + up, Vec2{129, 493} + up, Vec2{111, 493} + up}},
+                Cubic{{Vec2{111, 493} + up, Vec2{94, 493} + up, Vec2{78, 478} + up, Vec2{78, 460} + up}},
+                Line{{Vec2{78, 460} + up, Vec2{78, 26}}}, Cubic{{{78, 26}, {78, 9}, {93, -6}, {111, -6}}}};
   c.nodes.assign(6, NodeFlags{});
   return c;
 }
 
-/// A stem 65 units wide (1000 units per em) with semicircular ends, each drawn as two cubics
-/// whose handles are 0.52 of the radius: curvature 0.028–0.034 about a mean of 0.031, and it
-/// meets the upright lines with that curvature.
-inline Contour round_ended_stem() {
-  Contour c;
-  c.segments = {Cubic{{{111, -6}, {128, -6}, {143, 9}, {143, 26}}}, Line{{{143, 26}, {143, 460}}},
-                Cubic{{{143, 460}, {143, 478}, {129, 493}, {111, 493}}},
-                Cubic{{{111, 493}, {94, 493}, {78, 478}, {78, 460}}}, Line{{{78, 460}, {78, 26}}},
-                Cubic{{{78, 26}, {78, 9}, {93, -6}, {111, -6}}}};
-  c.nodes.assign(6, NodeFlags{});
-  return c;
-}
+/// Comic Neue's i stem (1000 units per em): two lines 0.8° off the vertical, each meeting a
+/// round cap tangentially.
+inline Contour comic_neue_i_stem() { return round_ended_stem(6.0); }
 
 /// DejaVu Sans Bold's u (2048 units per em) as its TrueType quadratics, implied nodes made
 /// explicit: the inner stem's line (520, 1120)–(520, 1008), then a flat S two units over to
