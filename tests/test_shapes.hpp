@@ -1,5 +1,5 @@
 // Shapes tests build by hand: a closed polygon of lines, a node of an unrounded outline, a stem
-// with round ends, and two real contours: Comic Neue's i stem and DejaVu Sans Bold's u.
+// with round ends (upright, or leaning as Comic Neue's i stem does), and DejaVu Sans Bold's u.
 #pragma once
 
 #include <optional>
