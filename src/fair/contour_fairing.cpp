@@ -80,10 +80,7 @@ ContourSamples contour_samples(const Contour& c) {
       out.points.push_back(start_point(s)), out.segment_of.push_back(i);
       continue;
     }
-    double polygon = 0.0;
-    Vec2 last = start_point(s);
-    for_each_point(s, [&](Vec2 q) { polygon += distance(last, q), last = q; });
-    const int n = std::clamp(static_cast<int>(polygon / 3.0), 16, 256);
+    const int n = std::clamp(static_cast<int>(control_polygon_length(s) / 3.0), 16, 256);
     for (int k = 0; k < n; ++k) out.points.push_back(point_at(s, static_cast<double>(k) / n)), out.segment_of.push_back(i);
   }
   if (!c.segments.empty()) {

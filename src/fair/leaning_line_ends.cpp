@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <limits>
 
 #include "geom/polyline_distance.hpp"
@@ -10,8 +11,7 @@ namespace gf {
 
 namespace {
 
-constexpr int cubic_samples = 48;
-constexpr double line_sample_spacing = 1.0;  // units
+constexpr double sample_spacing = 1.0;  // units, at most, between the points the move is measured on
 
 // The unit axis direction nearest the unit vector d.
 Vec2 nearest_axis(Vec2 d) {
@@ -30,21 +30,23 @@ double shortest_step(Vec2 a, Vec2 b) {
   return best;
 }
 
-void add_cubic(std::vector<Vec2>& out, const Cubic& c) {
-  for (int k = 0; k <= cubic_samples; ++k) out.push_back(c.point_at(static_cast<double>(k) / cubic_samples));
-}
-
-void add_line(std::vector<Vec2>& out, Vec2 a, Vec2 b) {
-  const int n = std::max(1, static_cast<int>(std::ceil(distance(a, b) / line_sample_spacing)));
-  for (int k = 0; k <= n; ++k) out.push_back(a + (b - a) * (static_cast<double>(k) / n));
+// Points at most sample_spacing apart along the segments, in order.
+std::vector<Vec2> points_along(std::initializer_list<Segment> segments) {
+  std::vector<Vec2> out;
+  for (const Segment& s : segments) {
+    const int n = std::max(1, static_cast<int>(std::ceil(control_polygon_length(s) / sample_spacing)));
+    for (int k = 0; k <= n; ++k) out.push_back(point_at(s, static_cast<double>(k) / n));
+  }
+  return out;
 }
 
 // The sign of the curvature the cubic ends with just before its end (the end itself is flat:
 // it meets its line with κ = 0); 0 where it is straight there.
 double end_bend(const Cubic& c) {
+  const auto velocity = c.hodograph();
+  const auto acceleration = velocity.hodograph();
   for (const double t : {0.9, 0.75, 0.5}) {
-    const Vec2 d1 = c.hodograph().point_at(t), d2 = c.hodograph().hodograph().point_at(t);
-    const double k = cross(d1, d2);
+    const double k = cross(velocity.point_at(t), acceleration.point_at(t));
     if (k != 0.0) return k > 0.0 ? 1.0 : -1.0;
   }
   return 0.0;
@@ -80,12 +82,8 @@ std::optional<Filleted> fillet_join(const Cubic& curve, Vec2 far, const LeaningL
   out.curve.p[1] = j + axis * dot(curve.p[1] - j, axis);
   out.fillet = Cubic{{j, v, v, q}};
   // How far the outline moves, both ways, from the curve's start to the line's far end.
-  std::vector<Vec2> before, after;
-  add_cubic(before, curve);
-  add_line(before, j, far);
-  add_cubic(after, out.curve);
-  add_cubic(after, out.fillet);
-  add_line(after, q, far);
+  const std::vector<Vec2> before = points_along({curve, Line{{j, far}}});
+  const std::vector<Vec2> after = points_along({out.curve, out.fillet, Line{{q, far}}});
   const double moved = std::max(directed_hausdorff(before, after, limits.max_move_units),
                                 directed_hausdorff(after, before, limits.max_move_units));
   if (moved > limits.max_move_units) return std::nullopt;

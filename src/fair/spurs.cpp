@@ -25,10 +25,8 @@ struct Sample {
 std::vector<Sample> samples_of(const Contour& c) {
   std::vector<Sample> out;
   for (std::size_t i = 0; i < c.segments.size(); ++i) {
-    double polygon = 0.0;
-    Vec2 previous = start_point(c.segments[i]);
-    for_each_point(c.segments[i], [&](Vec2 q) { polygon += distance(previous, q), previous = q; });
-    const int count = std::clamp(static_cast<int>(std::ceil(polygon / sample_spacing)), 1, 1024);
+    const int count =
+        std::clamp(static_cast<int>(std::ceil(control_polygon_length(c.segments[i]) / sample_spacing)), 1, 1024);
     for (int k = 0; k < count; ++k) {
       const double t = static_cast<double>(k) / count;
       out.push_back({i, t, point_at(c.segments[i], t)});

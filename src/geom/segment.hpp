@@ -34,6 +34,14 @@ template <typename F>
 void for_each_point(const Segment& s, F&& f) {
   std::visit([&](const auto& b) { for (const Vec2& q : b.p) f(q); }, s);
 }
+/// The length of the control polygon: at least the segment's arc length, so points spread
+/// by it along the parameter are at most that far apart on a gently parametrised curve.
+inline double control_polygon_length(const Segment& s) {
+  double length = 0.0;
+  Vec2 last = start_point(s);
+  for_each_point(s, [&](Vec2 q) { length += distance(last, q), last = q; });
+  return length;
+}
 /// Every point the same: no length and no direction.
 inline bool is_degenerate(const Segment& s) {
   bool same = true;
