@@ -1,6 +1,7 @@
 #include "io/harfbuzz_instance.hpp"
 
 #include <cmath>
+#include <variant>
 #include <vector>
 
 #include <hb.h>
@@ -8,6 +9,11 @@
 namespace gf {
 
 namespace {
+
+// HarfBuzz draws CFF in 16.16 fixed point, so a contour can come back to its start 1.5e-5
+// units off (Linux Libertine's d, i, Y) and close with a line that short: residue, not a
+// segment, and as a line it would make two corners of a smooth join.
+constexpr double residue_units = 1e-3;
 
 struct OutlineBuilder {
   Outline outline;
@@ -18,12 +24,20 @@ struct OutlineBuilder {
   void finish(bool closed) {
     if (!open) return;
     if (!contour.segments.empty()) {
+      if (closed) close_on_start();
       contour.closed = closed;
       contour.nodes.assign(contour.segments.size() + (closed ? 0 : 1), NodeFlags{});
       outline.contours.push_back(std::move(contour));
     }
     contour = Contour{};
     open = false;
+  }
+
+  // The closing residue line was never added (line_to); the last segment ends on the start.
+  void close_on_start() {
+    const Vec2 start = start_point(contour.segments.front());
+    if (distance(end_point(contour.segments.back()), start) <= residue_units)
+      std::visit([&](auto& s) { s.p.back() = start; }, contour.segments.back());
   }
 };
 
@@ -37,6 +51,7 @@ void move_to(hb_draw_funcs_t*, void* d, hb_draw_state_t*, float x, float y, void
 }
 void line_to(hb_draw_funcs_t*, void* d, hb_draw_state_t*, float x, float y, void*) {
   OutlineBuilder& b = builder(d);
+  if (distance(b.current, {x, y}) <= residue_units) return;
   b.contour.segments.push_back(Line{{b.current, {x, y}}});
   b.current = {x, y};
 }

@@ -1,8 +1,10 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
+#include "geom/join.hpp"
 #include "io/freetype_reader.hpp"
 #include "io/input_error.hpp"
 #include "io/source.hpp"
@@ -72,6 +74,28 @@ TEST(Cff, KeepsFractionalCoordinates) {
   const Vec2 p = start_point(e.outline.contours[0].segments[0]);
   EXPECT_DOUBLE_EQ(p.x, 58.68359375);
   EXPECT_DOUBLE_EQ(p.y, 623.94921875);
+}
+
+TEST(Cff, ClosesAContourOnItsStartWithoutAResidueLine) {
+  // Linux Libertine's d: HarfBuzz's 16.16 arithmetic brings its inner contour back to
+  // (334, 50.3) 1.5e-5 units off and closes it with a line that short (fontTools reads the
+  // same). Kept, the line would make a corner of either end of a join the source turns 0.34°.
+  const FreetypeFont font = FreetypeFont::open(test::linux_libertine);
+  const Glyph d = font.load_glyph(*font.glyph_by_codepoint(U'd'));
+  bool seen = false;
+  for (const Contour& c : d.outline.contours) {
+    ASSERT_TRUE(c.closed);
+    EXPECT_EQ(end_point(c.segments.back()), start_point(c.segments.front()));
+    for (const Segment& s : c.segments)
+      if (std::holds_alternative<Line>(s)) EXPECT_GT(distance(start_point(s), end_point(s)), 1e-3);
+    for (const Join& j : joins_of(c))
+      if (distance(j.point, {334, 50.3}) < 1e-3) {
+        seen = true;
+        EXPECT_EQ(j.kind, JoinKind::kink);
+        EXPECT_NEAR(std::abs(j.angle_deg), 0.34, 0.01);
+      }
+  }
+  EXPECT_TRUE(seen);
 }
 
 TEST(Shaping, TextSelectsTheLigaturesItUses) {

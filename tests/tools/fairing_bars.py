@@ -44,7 +44,7 @@ from fontTools.ufoLib import UFOReader
 from scipy.spatial import cKDTree
 
 from compare_outlines import segments
-from independent_checks import end_curvature_slope, join_angle, join_counts, joins, norm, sub
+from independent_checks import LINE_RESIDUE, end_curvature_slope, join_angle, join_counts, joins, norm, sub
 
 SMOOTH_DEG, CORNER_DEG = 0.05, 3.0
 
@@ -193,7 +193,7 @@ def area(segs):
 def glyph_contours(glyphset, name, decompose):
     pen = DecomposingRecordingPen(glyphset) if decompose else RecordingPen()
     glyphset[name].draw(pen)
-    return [[s for s in c if any(p != s[0] for p in s)] for c in segments(pen.value)]
+    return [[s for s in c if any(p != s[0] for p in s)] for c in segments(pen.value, LINE_RESIDUE)]
 
 
 def spiral_end(piece, steps=400):
