@@ -156,16 +156,20 @@ double turn_at(const std::vector<OutlineNode>& nodes, bool closed, std::size_t k
   return std::abs(turning_angle(a, b));
 }
 
-// Whether node k of the unrounded outline is a corner between a line and a cubic that turns by
-// a degree more than the kink limit: rounding must not turn it under the limit (cubic_choices).
-// One within that degree is left to the kink pass (fair/contour_fairing), which makes it smooth
-// where rounding straightens it (Lato's Y crotch, 3.2°: kept a corner, it left the arm's line a
-// step the curve above could not land on).
+// Whether node k of the unrounded outline is a corner rounding must not turn under the kink limit
+// (cubic_choices): the kink pass (fair/contour_fairing) would make it smooth, and the corner the
+// source drew would be lost. Between a line and a cubic, any corner turning by the limit or
+// more (a–z A–Z, Lato's x at 3.0°, its Y at 3.2° and Carlito's v at 3.1° went so while only
+// corners a degree past the limit were kept: Lato lost 6, Carlito 9; with the rule below, 2 and 3). Between two
+// cubics, one turning a degree past it (Carlito's X at 6.6° and 4.7°, FreeSerif's K at 5.0°):
+// within that degree, EB Garamond's W found no rounding within the tolerance and kept three
+// runs as drawn, after 105 s instead of 18.
 bool corner_to_keep(const std::vector<OutlineNode>& ideal, bool closed, std::size_t k) {
   const OutlineNode& node = ideal[k];
-  if (node.smooth || node.in_handle.has_value() == node.out_handle.has_value()) return false;
+  if (node.smooth || (!node.in_handle && !node.out_handle)) return false;
+  const bool between_cubics = node.in_handle && node.out_handle;
   const double turn = turn_at(ideal, closed, k);
-  return turn >= radians(kink_limit_deg + 1.0) && turn < std::numbers::pi;
+  return turn >= radians(kink_limit_deg + (between_cubics ? 1.0 : 0.0)) && turn < std::numbers::pi;
 }
 
 // Which nodes of an outline join two cubics, meet a line, or start a cubic.

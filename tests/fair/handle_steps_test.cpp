@@ -10,6 +10,7 @@
 #include <numeric>
 #include <random>
 
+#include "fair/contour_plan.hpp"
 #include "fair/cubic_change.hpp"
 #include "fair/grid_rounding.hpp"
 #include "geom/curvature.hpp"
@@ -185,6 +186,40 @@ TEST(HandleSteps, ACurveLeavingALineStartsWithZeroCurvature) {
     const Cubic c = outline_cubic(r, 1);
     EXPECT_EQ(cross(c.p[1] - c.p[0], c.p[2] - c.p[1]), 0.0) << "trial " << trial;
     EXPECT_EQ(cross(r[1].point - r[0].point, c.p[1] - c.p[0]), 0.0);  // G1 with the line
+  }
+}
+
+TEST(HandleSteps, ACornerPastTheKinkLimitStaysOne) {
+  // A line along the x axis into node 1, a corner there turning by 3.02°–3.98° (under a
+  // degree past the kink limit; between two cubics, a degree more), then a cubic up to a vertical tangent at node 2 and a corner
+  // back to node 0. On the grid the handle's direction moves by up to 0.5 / 40 rad, about
+  // 0.7°; rounded, the corner must still turn by the kink limit or more (the kink pass would
+  // make it smooth, and the source's corner would be lost).
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const double kink = kink_limit_deg * std::numbers::pi / 180.0;
+  for (int trial = 0; trial < 100; ++trial) {
+    const double turn = (3.02 + 0.96 * u(rng)) * std::numbers::pi / 180.0;
+    const double y = 0.3 + u(rng), x = 200.4 + 100 * u(rng), top = 150 + 100 * u(rng), reach = 40 + 20 * u(rng);
+    std::vector<OutlineNode> nodes(3);
+    nodes[0].point = {0.2, y};
+    nodes[0].smooth = nodes[1].smooth = false;
+    nodes[1].point = {x, y};
+    nodes[1].out_handle = nodes[1].point + reach * Vec2{std::cos(turn), std::sin(turn)};
+    nodes[2].point = {x + 150, y + top};
+    nodes[2].in_handle = Vec2{x + 150, y + 0.4 * top};
+    nodes[2].out_handle = Vec2{x + 150, y + top + 40};
+    nodes[2].grid_step = Vec2{0, 1};
+    nodes[0].in_handle = Vec2{0.2, y + top + 40};
+    const std::vector<OutlineNode> r = round_to_grid(nodes, true, {5e-4, 1.0, {}});
+    EXPECT_GE(turning_angle(r[1].point - r[0].point, *r[1].out_handle - r[1].point), kink) << "trial " << trial;
+    // The same corner between two cubics, a degree more: the line a cubic along the x axis.
+    const double more = turn + std::numbers::pi / 180.0;
+    nodes[0].out_handle = Vec2{60.2, y};
+    nodes[1].in_handle = Vec2{x - 60, y};
+    nodes[1].out_handle = nodes[1].point + reach * Vec2{std::cos(more), std::sin(more)};
+    const std::vector<OutlineNode> c = round_to_grid(nodes, true, {5e-4, 1.0, {}});
+    EXPECT_GE(turning_angle(c[1].point - *c[1].in_handle, *c[1].out_handle - c[1].point), kink) << "trial " << trial;
   }
 }
 
