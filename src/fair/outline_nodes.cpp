@@ -106,17 +106,20 @@ void drop_empty_cubics(std::vector<OutlineNode>& nodes, bool closed) {
 
 void merge_tiny_cubics(std::vector<OutlineNode>& nodes, bool closed, double shortest) {
   for (std::size_t i = 0; nodes.size() > (closed ? 3u : 2u) && i < nodes.size();) {
-    const std::size_t j = (i + 1) % nodes.size();
-    const bool interior = closed || (i > 0 && j + 1 < nodes.size() && j != 0);
+    const std::size_t n = nodes.size(), j = (i + 1) % n;
+    const bool interior = closed || (i > 0 && j + 1 < n && j != 0);
     const OutlineNode &a = nodes[i], &b = nodes[j];
-    if (!interior || !a.smooth || !b.smooth || !a.in_handle || !a.out_handle || !b.in_handle || !b.out_handle ||
+    // A line's end (no handle on its side) is kept where it is; its tangent runs along the line.
+    const bool a_ends_line = !a.in_handle, b_ends_line = !b.out_handle;
+    if (!interior || !a.smooth || !b.smooth || !a.out_handle || !b.in_handle || (a_ends_line && b_ends_line) ||
         distance(a.point, b.point) >= shortest) {
       ++i;
       continue;
     }
     const double chord = distance(a.point, b.point);
-    const bool keep_first = on_axis(a) || !on_axis(b);
-    const Vec2 tangent = keep_first ? a.point - *a.in_handle : *b.out_handle - b.point;
+    const bool keep_first = a_ends_line || (!b_ends_line && (on_axis(a) || !on_axis(b)));
+    const Vec2 tangent = keep_first ? a.point - (a_ends_line ? nodes[(i + n - 1) % n].point : *a.in_handle)
+                                    : (b_ends_line ? nodes[(j + 1) % n].point : *b.out_handle) - b.point;
     if (norm(tangent) == 0.0) {
       ++i;
       continue;

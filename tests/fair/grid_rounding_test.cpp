@@ -470,6 +470,36 @@ TEST(OutlineNodes, CubicsUnderTwoUnitsMergeIntoOneNode) {
   EXPECT_EQ(apart, before);
 }
 
+TEST(OutlineNodes, ATinyCubicAfterALineMergesIntoTheLinesEnd) {
+  // Comic Neue's i dot: a line stood upright to x = 86 ends at (86, 603), and the curve leaving
+  // it passes the vertical 0.8 units on, where a node sat; rounded, that cubic folded on its
+  // unit. The line's end stays, with the line's tangent, and reaches on to where the dropped
+  // node's out-handle did (its length plus the chord); the line's other end is untouched.
+  const OutlineNode top = node({86, 644}, Vec2{87, 660}, std::nullopt, false);
+  const OutlineNode line_end = node({86, 603}, std::nullopt, Vec2{86, 602.9});
+  const OutlineNode extremum = node({85.99, 602.2}, Vec2{85.99, 602.5}, Vec2{85.99, 587}, true, Vec2{0, -1});
+  const OutlineNode bottom = node({117, 572}, Vec2{101, 572}, Vec2{133, 572}, true, Vec2{1, 0});
+  std::vector<OutlineNode> nodes{top, line_end, extremum, bottom};
+  merge_tiny_cubics(nodes, false, 2.0);
+  ASSERT_EQ(nodes.size(), 3u);
+  EXPECT_EQ(nodes[0], top);
+  EXPECT_EQ(nodes[2], bottom);
+  EXPECT_EQ(nodes[1].point, line_end.point);
+  EXPECT_FALSE(nodes[1].in_handle);
+  const double reach = distance(*extremum.out_handle, extremum.point) + distance(line_end.point, extremum.point);
+  EXPECT_NEAR(nodes[1].out_handle->x, 86.0, 1e-12);
+  EXPECT_NEAR(nodes[1].out_handle->y, 603.0 - reach, 1e-12);
+  // Mirrored: the tiny cubic before a line merges into the line's start the same way.
+  std::vector<OutlineNode> reversed{bottom, extremum, line_end, top};
+  for (OutlineNode& n : reversed) std::swap(n.in_handle, n.out_handle);
+  merge_tiny_cubics(reversed, false, 2.0);
+  ASSERT_EQ(reversed.size(), 3u);
+  EXPECT_EQ(reversed[1].point, line_end.point);
+  EXPECT_FALSE(reversed[1].out_handle);
+  EXPECT_NEAR(reversed[1].in_handle->x, 86.0, 1e-12);
+  EXPECT_NEAR(reversed[1].in_handle->y, 603.0 - reach, 1e-12);
+}
+
 TEST(OutlineNodes, ANodeBreakingG1ByLessThanTheKinkLimitIsMadeG1WithinItsMove) {
   // A node whose handles, 30 and 40 units long, leave 1° above and below the level: a 2° kink.
   const double deg = std::numbers::pi / 180.0, limit = 3.0 * deg;
