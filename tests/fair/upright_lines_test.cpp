@@ -56,6 +56,16 @@ TEST(UprightLines, ALineMovingTooFarOrTooSteepKeepsItsSlant) {
   EXPECT_EQ(stand_lines_upright(source, steep).changes, 0);
 }
 
+TEST(UprightLines, StemsUpToTwoAndAHalfDegreesOffStandUpright) {
+  // 434-unit stems leaning 2.3° (17.43 units) stand up, each end moving 8.7 units; at 2.6°
+  // they are a slant the grid can step along.
+  UprightLimits far;
+  far.max_move_units = 12.0;
+  const double height = 434.0, deg = std::acos(-1.0) / 180.0;
+  EXPECT_EQ(stand_lines_upright(test::round_ended_stem(height * std::tan(2.3 * deg)), far).changes, 2);
+  EXPECT_EQ(stand_lines_upright(test::round_ended_stem(height * std::tan(2.6 * deg)), far).changes, 0);
+}
+
 TEST(UprightLines, ALineAtCornersOrBesideALineOnItsAxisKeepsItsSlant) {
   // A slanted stem on a baseline, reaching a curve at a 40° corner: no tangential curve.
   Contour corner;
