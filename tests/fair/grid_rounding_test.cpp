@@ -475,6 +475,7 @@ TEST(OutlineNodes, ATinyCubicAfterALineMergesIntoTheLinesEnd) {
   // it passes the vertical 0.8 units on, where a node sat; rounded, that cubic folded on its
   // unit. The line's end stays, with the line's tangent, and reaches on to where the dropped
   // node's out-handle did (its length plus the chord); the line's other end is untouched.
+  // An extremum goes only where the line runs along its axis.
   const OutlineNode top = node({86, 644}, Vec2{87, 660}, std::nullopt, false);
   const OutlineNode line_end = node({86, 603}, std::nullopt, Vec2{86, 602.9});
   const OutlineNode extremum = node({85.99, 602.2}, Vec2{85.99, 602.5}, Vec2{85.99, 587}, true, Vec2{0, -1});
@@ -498,6 +499,12 @@ TEST(OutlineNodes, ATinyCubicAfterALineMergesIntoTheLinesEnd) {
   EXPECT_FALSE(reversed[1].out_handle);
   EXPECT_NEAR(reversed[1].in_handle->x, 86.0, 1e-12);
   EXPECT_NEAR(reversed[1].in_handle->y, 603.0 - reach, 1e-12);
+  // Past a slanted line the extremum stays: merged, the curve would turn through the vertical
+  // inside the cubic (DejaVu Sans's ☃).
+  std::vector<OutlineNode> slanted{node({80, 644}, Vec2{81, 660}, std::nullopt, false), line_end, extremum, bottom};
+  const std::vector<OutlineNode> kept = slanted;
+  merge_tiny_cubics(slanted, false, 2.0);
+  EXPECT_EQ(slanted, kept);
 }
 
 TEST(OutlineNodes, ANodeBreakingG1ByLessThanTheKinkLimitIsMadeG1WithinItsMove) {
