@@ -436,7 +436,12 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
     drop_empty_cubics(a.nodes, source.closed);
     if (round) merge_tiny_cubics(a.nodes, source.closed, tiny_cubic_chord);
     rotate_to_start(a.nodes, source.node_point(0));
-    if (round) fillet_leaning_lines(a.nodes, source.closed, sampled_source, settings, available);
+    if (round) {
+      fillet_leaning_lines(a.nodes, source.closed, sampled_source, settings, available);
+      // A fillet's end can land a unit short of the curve's next node (Comic Neue's d and g,
+      // Kristi's N, Gentium Plus's M: each rounded to a cubic folded on that unit).
+      merge_tiny_cubics(a.nodes, source.closed, tiny_cubic_chord);
+    }
     if (settings.continuity == Continuity::g3) a.g3_cubics = carry_g3_into_cubics(a.nodes, source.closed, sampled_source, settings);
     Contour faired = to_contour(a.nodes, source.closed);
     const SampledContour sampled(faired);

@@ -451,6 +451,22 @@ TEST(ContourFairing, ACapMeetsANearlyUprightStemWithoutAnS) {
   EXPECT_EQ(upright, 2);
 }
 
+TEST(ContourFairing, NoCubicFoldsOnAUnitBesideALeaningLinesFillet) {
+  // Kristi's N (handwriting, rounded): the fillet from a stem's axis onto its leaning line ended
+  // a unit short of the curve's next node, an extremum; that unit rounded to a cubic folded on
+  // itself, (352, −80) → (352, −79) → (352, −80) → (352, −79). Short cubics merge after the
+  // fillet too. No cubic under 4 units may reach out 2.5 times its chord.
+  const FairedGlyph f = fair_named(test::kristi, "N", options_for(FairProfile::handwriting, Rounding::integers));
+  ASSERT_TRUE(f.result.kept.empty());
+  for (const Contour& c : f.result.glyph.outline.contours)
+    for (const Segment& s : c.segments) {
+      const auto* cubic = std::get_if<Cubic>(&s);
+      if (!cubic) continue;
+      const double chord = distance(cubic->p[0], cubic->p[3]);
+      if (chord < 4.0) EXPECT_LE(control_polygon_length(s), 2.5 * chord) << cubic->p[0].x << ", " << cubic->p[0].y;
+    }
+}
+
 TEST(ContourFairing, RoundStrokeEndsBecomeG2WithTheirLines) {
   // Arcs drawn without transitions, meeting their lines with κ·UPM about 30: cut at their
   // curvature peaks, the stem's caps found no G2 chain and were kept as drawn, as was the foot
