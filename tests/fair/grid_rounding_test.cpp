@@ -439,6 +439,26 @@ TEST(GridRounding, ACurveFromALineToACornerGainsNoExtremum) {
   EXPECT_EQ(inner_axis_extrema_of(outline_cubic(r, 1)).off_node, 0);
 }
 
+// merge_tiny_cubics on four nodes whose middle two are under 2 units apart: the ends untouched,
+// one node left between them at `kept`, its handle on the dropped node's side (`out`: after it)
+// at `reached`. The merged nodes, for a test's own checks.
+std::vector<OutlineNode> expect_merged(std::vector<OutlineNode> nodes, Vec2 kept, Vec2 reached, bool out) {
+  const std::vector<OutlineNode> before = nodes;
+  merge_tiny_cubics(nodes, false, 2.0);
+  EXPECT_EQ(nodes.size(), 3u);
+  if (nodes.size() != 3u) return nodes;
+  EXPECT_EQ(nodes[0], before[0]);
+  EXPECT_EQ(nodes[2], before[3]);
+  EXPECT_EQ(nodes[1].point, kept);
+  const std::optional<Vec2>& handle = out ? nodes[1].out_handle : nodes[1].in_handle;
+  EXPECT_TRUE(handle);
+  if (handle) {
+    EXPECT_NEAR(handle->x, reached.x, 1e-12);
+    EXPECT_NEAR(handle->y, reached.y, 1e-12);
+  }
+  return nodes;
+}
+
 TEST(OutlineNodes, CubicsUnderTwoUnitsMergeIntoOneNode) {
   // Because We Create's P: a vertical extremum 1.5 units from the next smooth node, between
   // two corners. One node stays, the extremum; it leaves along its own tangent with the
@@ -447,17 +467,11 @@ TEST(OutlineNodes, CubicsUnderTwoUnitsMergeIntoOneNode) {
   const OutlineNode extremum = node({37.94, 368.05}, Vec2{37.94, 376.62}, Vec2{37.94, 367.36}, true, Vec2{0, -1});
   const OutlineNode tiny_end = node({38.16, 366.57}, Vec2{38.06, 366.88}, Vec2{39.83, 361.58});
   const OutlineNode last = node({59, 360}, Vec2{50.34, 360}, Vec2{80, 300}, false);
-  std::vector<OutlineNode> nodes{first, extremum, tiny_end, last};
-  merge_tiny_cubics(nodes, false, 2.0);
-  ASSERT_EQ(nodes.size(), 3u);
-  EXPECT_EQ(nodes[0], first);
-  EXPECT_EQ(nodes[2], last);
-  EXPECT_EQ(nodes[1].point, extremum.point);
+  const double reach = distance(*tiny_end.out_handle, tiny_end.point) + distance(extremum.point, tiny_end.point);
+  const std::vector<OutlineNode> nodes =
+      expect_merged({first, extremum, tiny_end, last}, extremum.point, {extremum.point.x, extremum.point.y - reach}, true);
   EXPECT_EQ(nodes[1].in_handle, extremum.in_handle);
   EXPECT_EQ(nodes[1].grid_step, extremum.grid_step);
-  const double reach = distance(*tiny_end.out_handle, tiny_end.point) + distance(extremum.point, tiny_end.point);
-  EXPECT_NEAR(nodes[1].out_handle->x, extremum.point.x, 1e-12);
-  EXPECT_NEAR(nodes[1].out_handle->y, extremum.point.y - reach, 1e-12);
   // Off the axes the first node stays and takes the second's way out; two units apart, none merge.
   std::vector<OutlineNode> diagonal{first, node({40, 370}, Vec2{39, 371}, Vec2{40.5, 369.5}),
                                     node({41, 369}, Vec2{40.5, 369.5}, Vec2{43, 367}), last};
@@ -480,25 +494,13 @@ TEST(OutlineNodes, ATinyCubicAfterALineMergesIntoTheLinesEnd) {
   const OutlineNode line_end = node({86, 603}, std::nullopt, Vec2{86, 602.9});
   const OutlineNode extremum = node({85.99, 602.2}, Vec2{85.99, 602.5}, Vec2{85.99, 587}, true, Vec2{0, -1});
   const OutlineNode bottom = node({117, 572}, Vec2{101, 572}, Vec2{133, 572}, true, Vec2{1, 0});
-  std::vector<OutlineNode> nodes{top, line_end, extremum, bottom};
-  merge_tiny_cubics(nodes, false, 2.0);
-  ASSERT_EQ(nodes.size(), 3u);
-  EXPECT_EQ(nodes[0], top);
-  EXPECT_EQ(nodes[2], bottom);
-  EXPECT_EQ(nodes[1].point, line_end.point);
-  EXPECT_FALSE(nodes[1].in_handle);
   const double reach = distance(*extremum.out_handle, extremum.point) + distance(line_end.point, extremum.point);
-  EXPECT_NEAR(nodes[1].out_handle->x, 86.0, 1e-12);
-  EXPECT_NEAR(nodes[1].out_handle->y, 603.0 - reach, 1e-12);
+  const Vec2 reached{86.0, 603.0 - reach};
+  EXPECT_FALSE(expect_merged({top, line_end, extremum, bottom}, line_end.point, reached, true)[1].in_handle);
   // Mirrored: the tiny cubic before a line merges into the line's start the same way.
   std::vector<OutlineNode> reversed{bottom, extremum, line_end, top};
   for (OutlineNode& n : reversed) std::swap(n.in_handle, n.out_handle);
-  merge_tiny_cubics(reversed, false, 2.0);
-  ASSERT_EQ(reversed.size(), 3u);
-  EXPECT_EQ(reversed[1].point, line_end.point);
-  EXPECT_FALSE(reversed[1].out_handle);
-  EXPECT_NEAR(reversed[1].in_handle->x, 86.0, 1e-12);
-  EXPECT_NEAR(reversed[1].in_handle->y, 603.0 - reach, 1e-12);
+  EXPECT_FALSE(expect_merged(reversed, line_end.point, reached, false)[1].out_handle);
   // Past a slanted line the extremum stays: merged, the curve would turn through the vertical
   // inside the cubic (DejaVu Sans's ☃).
   std::vector<OutlineNode> slanted{node({80, 644}, Vec2{81, 660}, std::nullopt, false), line_end, extremum, bottom};
