@@ -156,14 +156,14 @@ double turn_at(const std::vector<OutlineNode>& nodes, bool closed, std::size_t k
   return std::abs(turning_angle(a, b));
 }
 
-// Whether node k of the unrounded outline is a corner rounding must not turn under the kink limit
-// (cubic_choices): the kink pass (fair/contour_fairing) would make it smooth, and the corner the
-// source drew would be lost. Between a line and a cubic, any corner turning by the limit or
-// more (a–z A–Z, Lato's x at 3.0°, its Y at 3.2° and Carlito's v at 3.1° went so while only
-// corners a degree past the limit were kept: Lato lost 6, Carlito 9; with the rule below, 2 and 3). Between two
-// cubics, one turning a degree past it (Carlito's X at 6.6° and 4.7°, FreeSerif's K at 5.0°):
-// within that degree, EB Garamond's W found no rounding within the tolerance and kept three
-// runs as drawn, after 105 s instead of 18.
+// Whether node k of the unrounded outline is a corner rounding must not turn under the kink
+// limit (cubic_choices): the kink pass (fair/contour_fairing) would make it smooth, and the
+// corner the source drew would be lost. Between a line and a cubic, any corner turning by the
+// limit or more (a–z A–Z, Lato's x at 3.0°, its Y at 3.2° and Carlito's v at 3.1° went so while
+// only corners a degree past the limit were kept: Lato lost 6, Carlito 9; now 2 and 3). Between
+// two cubics, one turning a degree past it (Carlito's X at 6.6° and 4.7°, FreeSerif's K at
+// 5.0°): within that degree, EB Garamond's W found no rounding within the tolerance and kept
+// three runs as drawn, after 105 s instead of 18.
 bool corner_to_keep(const std::vector<OutlineNode>& ideal, bool closed, std::size_t k) {
   const OutlineNode& node = ideal[k];
   if (node.smooth || (!node.in_handle && !node.out_handle)) return false;

@@ -53,10 +53,10 @@ void drop_empty_cubics(std::vector<OutlineNode>& nodes, bool closed);
 /// rounding: the grid cannot draw a cubic of a unit or two, and whole steps folded such cubics
 /// into loops with an extremum inside (Because We Create's P and r). The node kept is a line's
 /// end (Comic Neue's i: a curve leaving a line stood upright passed the vertical a unit on, and
-/// the node there rounded to a cubic folded on that unit; an extremum only for a line along its
-/// axis), else the one on a horizontal or
-/// vertical extremum, else the first; the handle it takes over from the other node keeps its
-/// length, plus the chord, along the kept node's tangent.
+/// the node there rounded to a cubic folded on that unit), which takes an extremum's place only
+/// where the line runs along the extremum's axis; else the one on a horizontal or vertical
+/// extremum, else the first. The handle it takes over from the other node keeps its length,
+/// plus the chord, along the kept node's tangent.
 void merge_tiny_cubics(std::vector<OutlineNode>& nodes, bool closed, double shortest);
 
 /// A node whose handles break G1 by less than `limit_rad` made G1: both handles turned onto
