@@ -402,13 +402,18 @@ G3CubicReport carry_g3_into_cubics(std::vector<OutlineNode>& nodes, bool closed,
 // On the grid, curves meeting lines that lean a little off an axis join them through a fillet
 // from the axis (fair/leaning_line_ends.hpp), each moving the outline by up to a quarter of the
 // tolerance; kept where the outline stays within `available`, what the float outline may use.
+// A fillet's end can land a unit short of the curve's next node (Comic Neue's d and g, Kristi's
+// N, Gentium Plus's M: each rounded to a cubic folded on that unit), so short cubics are merged
+// again where a fillet went in.
 void fillet_leaning_lines(std::vector<OutlineNode>& nodes, bool closed, const SampledContour& sampled_source,
                           const FairSettings& settings, double available) {
   std::vector<OutlineNode> filleted = nodes;
   LeaningLineLimits limits;
   limits.max_move_units = leaning_move_share * settings.tolerance_units;
   if (fillet_leaning_line_ends(filleted, closed, limits) == 0) return;
-  if (distance_between(SampledContour(to_contour(filleted, closed)), sampled_source) <= available) nodes = std::move(filleted);
+  if (distance_between(SampledContour(to_contour(filleted, closed)), sampled_source) > available) return;
+  nodes = std::move(filleted);
+  merge_tiny_cubics(nodes, closed, tiny_cubic_chord);
 }
 
 // The contour faired on one plan: the budgets halved once when the first try strays, the
@@ -436,12 +441,7 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
     drop_empty_cubics(a.nodes, source.closed);
     if (round) merge_tiny_cubics(a.nodes, source.closed, tiny_cubic_chord);
     rotate_to_start(a.nodes, source.node_point(0));
-    if (round) {
-      fillet_leaning_lines(a.nodes, source.closed, sampled_source, settings, available);
-      // A fillet's end can land a unit short of the curve's next node (Comic Neue's d and g,
-      // Kristi's N, Gentium Plus's M: each rounded to a cubic folded on that unit).
-      merge_tiny_cubics(a.nodes, source.closed, tiny_cubic_chord);
-    }
+    if (round) fillet_leaning_lines(a.nodes, source.closed, sampled_source, settings, available);
     if (settings.continuity == Continuity::g3) a.g3_cubics = carry_g3_into_cubics(a.nodes, source.closed, sampled_source, settings);
     Contour faired = to_contour(a.nodes, source.closed);
     const SampledContour sampled(faired);

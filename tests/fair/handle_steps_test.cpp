@@ -191,15 +191,15 @@ TEST(HandleSteps, ACurveLeavingALineStartsWithZeroCurvature) {
 
 TEST(HandleSteps, ACornerPastTheKinkLimitStaysOne) {
   // A line along the x axis into node 1, a corner there turning by 3.02°–3.98° (under a
-  // degree past the kink limit; between two cubics, a degree more), then a cubic up to a vertical tangent at node 2 and a corner
-  // back to node 0. On the grid the handle's direction moves by up to 0.5 / 40 rad, about
+  // degree past the kink limit; between two cubics, a degree more), then a cubic up to a
+  // vertical tangent at node 2 and a corner back to node 0. On the grid the handle's direction moves by up to 0.5 / 40 rad, about
   // 0.7°; rounded, the corner must still turn by the kink limit or more (the kink pass would
   // make it smooth, and the source's corner would be lost).
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> u(0.0, 1.0);
-  const double kink = kink_limit_deg * std::numbers::pi / 180.0;
+  const double kink = radians(kink_limit_deg);
   for (int trial = 0; trial < 100; ++trial) {
-    const double turn = (3.02 + 0.96 * u(rng)) * std::numbers::pi / 180.0;
+    const double turn = radians(3.02 + 0.96 * u(rng));
     const double y = 0.3 + u(rng), x = 200.4 + 100 * u(rng), top = 150 + 100 * u(rng), reach = 40 + 20 * u(rng);
     std::vector<OutlineNode> nodes(3);
     nodes[0].point = {0.2, y};
@@ -214,7 +214,7 @@ TEST(HandleSteps, ACornerPastTheKinkLimitStaysOne) {
     const std::vector<OutlineNode> r = round_to_grid(nodes, true, {5e-4, 1.0, {}});
     EXPECT_GE(turning_angle(r[1].point - r[0].point, *r[1].out_handle - r[1].point), kink) << "trial " << trial;
     // The same corner between two cubics, a degree more: the line a cubic along the x axis.
-    const double more = turn + std::numbers::pi / 180.0;
+    const double more = turn + radians(1.0);
     nodes[0].out_handle = Vec2{60.2, y};
     nodes[1].in_handle = Vec2{x - 60, y};
     nodes[1].out_handle = nodes[1].point + reach * Vec2{std::cos(more), std::sin(more)};

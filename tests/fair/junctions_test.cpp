@@ -45,7 +45,7 @@ TEST(Junctions, ARoundStrokeEndIsCutAtQuartersOfItsTurning) {
 TEST(Junctions, ATurnBetweenLinesWithAPeakIsCutThereOnly) {
   // A 150° turn between two lines drawn as one symmetric cubic whose handles nearly meet: it
   // leaves its lines gently (κ 0.0019) and peaks sharply in the middle.
-  const double c = std::cos(75.0 * std::numbers::pi / 180.0), s = std::sin(75.0 * std::numbers::pi / 180.0);
+  const double c = std::cos(radians(75.0)), s = std::sin(radians(75.0));
   const Vec2 p0{0, 0}, p3{60, 0}, in{c, s}, out{c, -s};
   Contour turn;
   turn.segments = {Line{{p0 - in * 100.0, p0}}, Cubic{{p0, p0 + in * 80.0, p3 - out * 80.0, p3}},
@@ -54,7 +54,7 @@ TEST(Junctions, ATurnBetweenLinesWithAPeakIsCutThereOnly) {
   const std::vector<SmoothRun> runs = runs_between_lines(turn);
   ASSERT_EQ(runs.size(), 1u);
   const RunReference ref(runs[0]);
-  EXPECT_NEAR(std::abs(ref.theta_at(ref.length()) - ref.theta_at(0.0)), 150.0 * std::numbers::pi / 180.0, 1e-9);
+  EXPECT_NEAR(std::abs(ref.theta_at(ref.length()) - ref.theta_at(0.0)), radians(150.0), 1e-9);
   const std::vector<Junction> j = select_junctions(ref, true, true, text_options());
   ASSERT_EQ(j.size(), 3u);
   EXPECT_EQ(j[1].kind, JunctionKind::extremum);

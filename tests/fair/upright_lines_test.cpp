@@ -61,9 +61,9 @@ TEST(UprightLines, StemsUpToTwoAndAHalfDegreesOffStandUpright) {
   // they are a slant the grid can step along.
   UprightLimits far;
   far.max_move_units = 12.0;
-  const double height = 434.0, deg = std::acos(-1.0) / 180.0;
-  EXPECT_EQ(stand_lines_upright(test::round_ended_stem(height * std::tan(2.3 * deg)), far).changes, 2);
-  EXPECT_EQ(stand_lines_upright(test::round_ended_stem(height * std::tan(2.6 * deg)), far).changes, 0);
+  const double height = 434.0;
+  EXPECT_EQ(stand_lines_upright(test::round_ended_stem(height * std::tan(radians(2.3))), far).changes, 2);
+  EXPECT_EQ(stand_lines_upright(test::round_ended_stem(height * std::tan(radians(2.6))), far).changes, 0);
 }
 
 TEST(UprightLines, ALineAtCornersOrBesideALineOnItsAxisKeepsItsSlant) {
