@@ -189,6 +189,69 @@ void merge_coincident_nodes(std::vector<OutlineNode>& nodes, bool closed) {
   }
 }
 
+// A cubic that the grid laid flat along the line it leaves or arrives from (every control point
+// on the line, none turning back) is more of the line: the line takes it over, and its far node
+// becomes a line's end, whose curve the handle steps then bring to κ = 0. The fairing's
+// transition from the line, a few units before an extremum where the line leaned a degree or
+// two off the axis, rounds flat once `place_lines_on_grid` stood the line on the axis, and the
+// curve beyond kept its curvature at the extremum: Heros's j, Roboto's y. Removes the node
+// between them from the parallel arrays (`limits`' per-cubic allowances and band pieces made
+// explicit first): the merged line has the smaller allowance of the two, and each cubic keeps
+// its band piece.
+void merge_flat_cubics_into_lines(std::vector<OutlineNode>& ideal, std::vector<OutlineNode>& rounded,
+                                  std::vector<std::optional<Vec2>>& steps, HandleStepLimits& limits, bool closed) {
+  std::vector<double>& allowances = limits.allowance_by_cubic;
+  std::vector<std::size_t>& pieces = limits.band_piece_by_cubic;
+  const std::size_t count = rounded.size();
+  allowances.resize(count, limits.allowance);
+  for (std::size_t i = pieces.size(); i < count; ++i) pieces.push_back(i);
+  const auto on_line = [](Vec2 a, Vec2 d, Vec2 p) { return cross(d, p - a) == 0.0; };
+  const auto forward = [](Vec2 d, Vec2 from, Vec2 to) { return dot(d, to - from) >= 0.0; };
+  for (std::size_t i = 0; rounded.size() > (closed ? 3u : 2u) && i < rounded.size();) {
+    const std::size_t n = rounded.size(), before = (i + n - 1) % n, after = (i + 1) % n;
+    const OutlineNode& node = rounded[i];
+    // The line arrives at node i and the cubic leaves it (`line_in`), or the cubic arrives and
+    // the line leaves; `far` is the cubic's other node, `line_far` the line's.
+    const bool interior = closed || (i > 0 && i + 1 < n);
+    const bool line_in = !node.in_handle && node.out_handle, line_out = node.in_handle && !node.out_handle;
+    if (!interior || !node.smooth || !(line_in || line_out)) {
+      ++i;
+      continue;
+    }
+    const std::size_t far = line_in ? after : before, line_far = line_in ? before : after;
+    const OutlineNode& f = rounded[far];
+    const std::optional<Vec2>& near_handle = line_in ? node.out_handle : node.in_handle;
+    const std::optional<Vec2>& far_handle = line_in ? f.in_handle : f.out_handle;
+    const Vec2 d = line_in ? node.point - rounded[line_far].point : rounded[line_far].point - node.point;
+    const Vec2 a = rounded[line_far].point;
+    bool flat = far_handle && f.smooth && norm(d) > 0.0;
+    if (flat) {
+      // Along the line in order: the line's far end, node, handles, far node (reversed when
+      // the cubic comes first).
+      const std::vector<Vec2> run = line_in ? std::vector<Vec2>{a, node.point, *near_handle, *far_handle, f.point}
+                                            : std::vector<Vec2>{f.point, *far_handle, *near_handle, node.point, a};
+      for (std::size_t k = 0; k < run.size(); ++k) flat = flat && on_line(a, d, run[k]) && (k == 0 || forward(d, run[k - 1], run[k]));
+      flat = flat && dot(d, f.point - node.point) * (line_in ? 1.0 : -1.0) > 0.0;
+      // The far node then a line's end: its other side leaves along the line (G1 exact).
+      const std::optional<Vec2>& beyond = line_in ? f.out_handle : f.in_handle;
+      if (beyond) flat = flat && exactly_collinear(d, line_in ? *beyond - f.point : f.point - *beyond);
+    }
+    if (!flat) {
+      ++i;
+      continue;
+    }
+    // Segments start at their first node: the merged line at node `before`, whichever came first.
+    allowances[before] = std::min(allowances[before], allowances[i]);
+    for (std::vector<OutlineNode>* v : {&ideal, &rounded}) {
+      OutlineNode& kept = (*v)[far];
+      (line_in ? kept.in_handle : kept.out_handle) = std::nullopt;
+    }
+    const auto at = static_cast<std::ptrdiff_t>(i);
+    ideal.erase(ideal.begin() + at), rounded.erase(rounded.begin() + at), steps.erase(steps.begin() + at);
+    allowances.erase(allowances.begin() + at), pieces.erase(pieces.begin() + at);
+  }
+}
+
 }  // namespace
 
 std::vector<OutlineNode> round_to_grid(const std::vector<OutlineNode>& nodes, bool closed,
@@ -234,8 +297,11 @@ std::vector<OutlineNode> round_to_grid(const std::vector<OutlineNode>& nodes, bo
     steps[i] = c->step;
   }
   place_lines_on_grid(nodes, r, steps, closed, limits);
-  resolve_handle_lengths(r, nodes, steps, closed);
-  choose_handle_steps(r, nodes, steps, closed, limits);
+  std::vector<OutlineNode> ideal = nodes;
+  HandleStepLimits merged_limits = limits;
+  merge_flat_cubics_into_lines(ideal, r, steps, merged_limits, closed);
+  resolve_handle_lengths(r, ideal, steps, closed);
+  choose_handle_steps(r, ideal, steps, closed, merged_limits);
   merge_coincident_nodes(r, closed);
   return r;
 }

@@ -259,8 +259,9 @@ class CubicJudge {
              const OutlineJoins& joins, const HandleStepLimits& limits)
       : unrounded_(rounded.size()), allowed_(rounded.size(), 0.0), ideal_(rounded.size()), seen_(rounded.size()),
         inflection_handles_(limits.inflection_handles), node_turns_(limits.node_turns), slope_jump_weight_(limits.slope_jump_weight),
-        counted_jump_cost_(limits.counted_jump_cost), band_(limits.band), keeps_corner_(rounded.size(), false),
-        closed_(joins.closed) {
+        counted_jump_cost_(limits.counted_jump_cost), band_(limits.band), band_pieces_(rounded.size()),
+        keeps_corner_(rounded.size(), false), closed_(joins.closed) {
+    for (std::size_t i = 0; i < rounded.size(); ++i) band_pieces_[i] = limits.band_piece(i);
     for (std::size_t i = 0; i < rounded.size(); ++i) {
       if (!joins.is_cubic(i)) continue;
       unrounded_[i] = along_lines(outline_cubic(ideal, i), rounded, i, joins);
@@ -328,7 +329,7 @@ class CubicJudge {
             start.curvature_derivative.value_or(0.0),
             end.curvature_derivative.value_or(0.0),
             moved,
-            moved <= allowed_[i] || (band_ && band_->holds(i, band_samples(c))),
+            moved <= allowed_[i] || (band_ && band_->holds(band_pieces_[i], band_samples(c))),
             curvature_shape(c, hysteresis_),
             inner_axis_extrema_of(c),
             overreach_length(c),
@@ -343,6 +344,7 @@ class CubicJudge {
   bool inflection_handles_, node_turns_;
   double slope_jump_weight_, counted_jump_cost_;
   const ToleranceBand* band_;
+  std::vector<std::size_t> band_pieces_;  ///< the band's piece for each cubic
   std::vector<bool> keeps_corner_;
   bool closed_;
 };

@@ -83,8 +83,16 @@ struct HandleStepLimits {
   /// it, 0 with it).
   double counted_jump_cost = 0.0;
 
+  /// The band's piece for the cubic from each node, where rounding removed nodes before
+  /// choosing the steps (fair/grid_rounding: flat cubics merged into lines); else the node's
+  /// own index, the band's pieces being the unrounded outline's segments.
+  std::vector<std::size_t> band_piece_by_cubic;
+
   double allowance_at(std::size_t node) const {
     return node < allowance_by_cubic.size() ? allowance_by_cubic[node] : allowance;
+  }
+  std::size_t band_piece(std::size_t node) const {
+    return node < band_piece_by_cubic.size() ? band_piece_by_cubic[node] : node;
   }
 };
 

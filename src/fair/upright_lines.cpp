@@ -16,6 +16,32 @@ namespace {
 
 constexpr double shortest_curve_share = 4.0;  // a neighbouring curve's chord, in moves
 constexpr double collinear_line_deg = 10.0;   // a neighbouring line this near the axis: a kink
+constexpr double parallel_turning_share = 0.25;  // of a curve's turning, the most a parallel handle leaves to turn
+
+// A line's neighbour `now` (`was` in the source) with its node at `end` moved by `v`: its handle
+// turned onto `axis` where it met the line tangentially; where that moves a long handle past
+// the limit (DejaVu Sans's ☏: a quadratic's 317-unit handle 3° off the level, 17 units), kept
+// parallel, if the fairing then has little to turn: the join within the kink limit, and a
+// small share of what the curve turns (Heros's R: a 0.9° leg whose curves turn by 30° and 90°
+// and whose 90-unit handles would move by a unit; not Caladea's z, a 1.9° foot whose bar turns
+// by 1.9°, and would gain an S). None where the move is too far either way.
+std::optional<Segment> neighbour_moved(const Segment& was, const Segment& now, SegmentEnd end, Vec2 v, bool tangential,
+                                       Vec2 axis, const UprightLimits& limits) {
+  if (tangential) {
+    Segment turned = with_end_moved(now, end, v, axis);
+    if (largest_move(was, turned) <= limits.max_move_units) return turned;
+  }
+  Segment parallel = with_end_moved(now, end, v);
+  if (largest_move(was, parallel) > limits.max_move_units) return std::nullopt;
+  if (!tangential) return parallel;
+  const std::optional<Vec2> t0 = end_tangent(parallel, SegmentEnd::start), t1 = end_tangent(parallel, SegmentEnd::end);
+  if (!t0 || !t1) return std::nullopt;
+  const double turning = turning_angle(*t0, *t1);
+  const double change = end == SegmentEnd::end ? turning_angle(*t1, axis) : turning_angle(axis, *t0);
+  if (std::abs(change) >= radians(kink_limit_deg) || std::abs(change) > parallel_turning_share * std::abs(turning))
+    return std::nullopt;
+  return parallel;
+}
 
 }  // namespace
 
@@ -64,21 +90,26 @@ MovedContour stand_lines_upright(const Contour& source, const UprightLimits& lim
     const Vec2 a_to = vertical ? Vec2{mid.x, a.y} : Vec2{a.x, mid.y};
     const Vec2 b_to = vertical ? Vec2{mid.x, b.y} : Vec2{b.x, mid.y};
     // On what earlier lines left (a curve between two stood lines moves at both ends).
-    Contour trial = result;
     const std::size_t i_before = (i + n - 1) % n, i_after = (i + 1) % n;
-    if (before)
-      trial.segments[i_before] = with_end_moved(trial.segments[i_before], SegmentEnd::end, a_to - a,
-                                                tangent_before ? std::optional(axis) : std::nullopt);
-    if (after)
-      trial.segments[i_after] = with_end_moved(trial.segments[i_after], SegmentEnd::start, b_to - b,
-                                               tangent_after ? std::optional(axis) : std::nullopt);
+    Contour trial = result;
+    bool fits = true;
+    if (before) {
+      const std::optional<Segment> s = neighbour_moved(contour.segments[i_before], trial.segments[i_before],
+                                                       SegmentEnd::end, a_to - a, tangent_before, axis, limits);
+      if (s) trial.segments[i_before] = *s;
+      fits = fits && s.has_value();
+    }
+    if (after) {
+      const std::optional<Segment> s = neighbour_moved(contour.segments[i_after], trial.segments[i_after],
+                                                       SegmentEnd::start, b_to - b, tangent_after, axis, limits);
+      if (s) trial.segments[i_after] = *s;
+      fits = fits && s.has_value();
+    }
+    if (!fits) continue;
     trial.segments[i] = Line{a_to, b_to};
-    // A long handle turned onto the axis moves far (DejaVu Sans's ☏: a quadratic's 317-unit
-    // handle 3° off the level, 17 units): no control point may move past the limit.
     double moved = move;
     for (const std::size_t k : {i_before, i_after})
       moved = std::max(moved, largest_move(contour.segments[k], trial.segments[k]));
-    if (moved > limits.max_move_units) continue;
     result = std::move(trial);
     node_moved[a_node] = node_moved[b_node] = true;
     out.moved = std::max(out.moved, moved);

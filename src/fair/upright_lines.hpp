@@ -25,7 +25,9 @@ struct UprightLimits {
 /// through its middle, where no control point moves more than `max_move_units`. Each end node
 /// moves across the axis only, so a line it shares at a corner keeps its level (a stem on a
 /// baseline); a curve takes its handle along, turned onto the axis where it met the line
-/// tangentially (the join stays tangential), kept parallel at a corner. Left slanted: a line
+/// tangentially (the join stays tangential), kept parallel at a corner, and kept parallel too
+/// where turning it would move it past the limit but the curve turns four times as far as
+/// that leaves its end off the axis (the fairing turns the end onto the line). Left slanted: a line
 /// sharing a node with one stood up (the node would be pulled two ways), and one whose neighbour
 /// at an end is a curve shorter than four times the move, or a line within 10° of the same axis
 /// (a kink the fillet pass owns).

@@ -439,6 +439,36 @@ TEST(GridRounding, ACurveFromALineToACornerGainsNoExtremum) {
   EXPECT_EQ(inner_axis_extrema_of(outline_cubic(r, 1)).off_node, 0);
 }
 
+// Heros's j, unrounded: the tail's curve passes its horizontal extremum 11 units before the
+// line it ends on, which leans 2.9° off the level. Rounding laid the line level and the 11-unit
+// transition flat along it, a cubic of no curvature between the line and the extremum: more of
+// the line, which now ends at the extremum, G1 exact there.
+TEST(GridRounding, ACubicRoundedFlatAlongItsLineBecomesTheLine) {
+  const std::vector<OutlineNode> nodes{
+      node(Vec2{70.0, -76.0}, std::nullopt, Vec2{70.0, -85.1514}, false),
+      node(Vec2{62.1387, -119.8418}, Vec2{70.0, -104.1192}, Vec2{51.4097, -141.2998}),
+      node(Vec2{13.1969, -145.3575}, Vec2{31.7158, -145.3575}, Vec2{9.1497, -145.3575}, true, Vec2{-1.0, 0.0}),
+      node(Vec2{2.0, -145.0}, Vec2{5.2737, -145.1637}, std::nullopt),
+      node(Vec2{-18.0, -144.0}, std::nullopt, std::nullopt, false),
+  };
+  HandleStepLimits limits;
+  limits.allowance = 1.0;
+  const std::vector<OutlineNode> r = round_to_grid(nodes, false, limits);
+
+  ASSERT_EQ(r.size(), nodes.size() - 1);
+  EXPECT_EQ(r[2].point, (Vec2{13.0, -145.0}));  // the extremum, now the line's start
+  EXPECT_FALSE(r[2].out_handle);
+  EXPECT_EQ(r[3].point.y, r[2].point.y);  // the line level
+  // G1 exact where the curve meets the line, and with a text tolerance's room κ = 0 there:
+  // the far handle on the line too.
+  const Vec2 line = r[3].point - r[2].point;
+  EXPECT_EQ(cross(line, r[2].point - *r[2].in_handle), 0.0);
+  EXPECT_EQ(cross(line, *r[1].out_handle - r[2].point), 0.0);
+  for (const OutlineNode& n : r)
+    for (const std::optional<Vec2>& p : {std::optional(n.point), n.in_handle, n.out_handle})
+      if (p) EXPECT_TRUE(on_grid(*p));
+}
+
 // merge_tiny_cubics on four nodes whose middle two are under 2 units apart: the ends untouched,
 // one node left between them at `kept`, its handle on the dropped node's side (`out`: after it)
 // at `reached`. The merged nodes, for a test's own checks.
