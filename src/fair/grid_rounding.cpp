@@ -194,10 +194,10 @@ void merge_coincident_nodes(std::vector<OutlineNode>& nodes, bool closed) {
 // becomes a line's end, whose curve the handle steps then bring to κ = 0. The fairing's
 // transition from the line, a few units before an extremum where the line leaned a degree or
 // two off the axis, rounds flat once `place_lines_on_grid` stood the line on the axis, and the
-// curve beyond kept its curvature at the extremum: Heros's j, Roboto's y. Removes the node
-// between them from the parallel arrays (`limits`' per-cubic allowances and band pieces made
-// explicit first): the merged line has the smaller allowance of the two, and each cubic keeps
-// its band piece.
+// curve beyond kept its curvature at the extremum (Liberation Serif's Q, Roboto's y, Heros's j).
+// Removes the node between them from the parallel arrays (`limits`' per-cubic allowances and
+// band pieces made explicit first): the merged line has the smaller allowance of the two, and
+// each cubic keeps its band piece.
 void merge_flat_cubics_into_lines(std::vector<OutlineNode>& ideal, std::vector<OutlineNode>& rounded,
                                   std::vector<std::optional<Vec2>>& steps, HandleStepLimits& limits, bool closed) {
   std::vector<double>& allowances = limits.allowance_by_cubic;

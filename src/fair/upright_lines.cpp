@@ -22,7 +22,7 @@ constexpr double parallel_turning_share = 0.25;  // of a curve's turning, the mo
 // turned onto `axis` where it met the line tangentially; where that moves a long handle past
 // the limit (DejaVu Sans's ☏: a quadratic's 317-unit handle 3° off the level, 17 units), kept
 // parallel, if the fairing then has little to turn: the join within the kink limit, and a
-// small share of what the curve turns (Heros's R: a 0.9° leg whose curves turn by 30° and 90°
+// small share of what the curve turns (Heros's R: a 0.9° leg whose curves turn by 24° and 90°
 // and whose 90-unit handles would move by a unit; not Caladea's z, a 1.9° foot whose bar turns
 // by 1.9°, and would gain an S). None where the move is too far either way.
 std::optional<Segment> neighbour_moved(const Segment& was, const Segment& now, SegmentEnd end, Vec2 v, bool tangential,
