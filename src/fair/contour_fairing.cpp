@@ -40,6 +40,9 @@ constexpr int text_g3_polish_rounds = 2;
 // 664, 612 and 605 with one, two and three rounds (24.7, 26.0 and 26.3 s); a–z A–Z, EB Garamond
 // 194, 165 and 159, FreeSerif 14, 12 and 13, Lato 18, 17 and 17.
 constexpr int text_polish_rounds = 2;
+// Units: a flat node's far handle farther off its tangent line than the nudges reach (two
+// units) and half a unit of rounding (HandleStepLimits::flat_node_reach).
+constexpr double text_flat_node_reach = 2.5;
 // Under --continuity g3, what a dκ/ds jump costs in rounding (HandleStepLimits::slope_jump_weight),
 // and on text what a curvature jump the check counts costs on top (counted_jump_cost), ten
 // times that. Text a–z A–Z with the band around the source (HandleStepLimits::band), the median
@@ -463,6 +466,7 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
       limits.polish_rounds = hand ? handwriting_polish_rounds : g3 ? text_g3_polish_rounds : text_polish_rounds;
       limits.polish_only_at_jumps = g3 && !hand;
       limits.inflection_handles = limits.node_turns = hand;
+      limits.flat_node_reach = hand ? 0.0 : text_flat_node_reach;
       limits.slope_jump_weight = !g3 ? 0.0 : hand ? handwriting_slope_jump_weight : text_slope_jump_weight;
       limits.counted_jump_cost = g3 && !hand ? text_counted_jump_cost : 0.0;
       limits.allowance_by_cubic = tolerance_left(by_segment, settings.tolerance_units, 0.0);

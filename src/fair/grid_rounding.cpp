@@ -1,7 +1,9 @@
 #include "fair/grid_rounding.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <span>
 
 #include "fair/contour_plan.hpp"
 #include "fair/line_rounding.hpp"
@@ -55,6 +57,20 @@ struct NodeSides {
   }
 };
 
+// A flat node's direction within this of its tangent is left to the handle steps, which seat
+// such a node themselves (Lato's S spine: (49, 15), 0.45° off its tangent and a far handle 2.6
+// units off it; the direction chosen for its far handles, (19, 6), left κ·UPM 0.059 against
+// 0.003 there, a jump the check counts).
+constexpr double flat_node_turn = radians(0.5);
+
+// How far the farthest of `far_handles` lies off the tangent line of choice c.
+double farthest_off_tangent(const Choice& c, std::span<const Vec2> far_handles) {
+  const Vec2 u = c.step / norm(c.step);
+  double off = 0.0;
+  for (const Vec2 f : far_handles) off = std::max(off, std::abs(cross(u, f - c.point)));
+  return off;
+}
+
 // The exact collinear choice nearest to (point, in, out): directions d = (dx, dy) primitive,
 // near the handles' direction, no longer than the shorter handle (or the longer, where none so
 // short keeps the cubics bent within the kink limit); the node itself may move by
@@ -63,9 +79,13 @@ struct NodeSides {
 // visible change of its own: a brush font's half-unit handles would swing by 30–45°). The
 // direction is the out-handle's, or the in-handle's where that lies on the node; none where
 // both do (the cubics of no extent a segment's overrun of its arc length leaves at a chain's
-// end: dkg Bold's G had four, and such a node went to the origin).
+// end: dkg Bold's G had four, and such a node went to the origin). With `far_handles` (a node
+// flat on both sides: HandleStepLimits::flat_node_reach), nearest counts the node's move, its
+// handles' moves across its tangent (their lengths are solved again) and how far the far
+// handles lie off its tangent line: where they lie on it, κ = 0 on both sides.
 std::optional<Choice> collinear_choice(Vec2 point, std::optional<Vec2> in, std::optional<Vec2> out,
-                                       const NodeSides& sides, double chord_in, double chord_out) {
+                                       const NodeSides& sides, double chord_in, double chord_out,
+                                       std::span<const Vec2> far_handles = {}) {
   Vec2 dir = out ? *out - point : Vec2{};
   if (norm(dir) == 0.0 && in) dir = point - *in;
   if (norm(dir) == 0.0) return std::nullopt;
@@ -104,13 +124,16 @@ std::optional<Choice> collinear_choice(Vec2 point, std::optional<Vec2> in, std::
           c.point = p;
           c.step = d;
           c.cost = distance(p, point);
-          if (in) {
-            c.in = stepped_handle(p, d, -1.0, point, *in);
-            c.cost = std::max(c.cost, distance(*c.in, *in));
-          }
-          if (out) {
-            c.out = stepped_handle(p, d, 1.0, point, *out);
-            c.cost = std::max(c.cost, distance(*c.out, *out));
+          if (in) c.in = stepped_handle(p, d, -1.0, point, *in);
+          if (out) c.out = stepped_handle(p, d, 1.0, point, *out);
+          if (far_handles.empty()) {
+            if (in) c.cost = std::max(c.cost, distance(*c.in, *in));
+            if (out) c.cost = std::max(c.cost, distance(*c.out, *out));
+          } else {
+            const Vec2 t = dir / norm(dir);
+            if (in) c.cost = std::max(c.cost, std::abs(cross(t, *c.in - *in)));
+            if (out) c.cost = std::max(c.cost, std::abs(cross(t, *c.out - *out)));
+            c.cost = std::max(c.cost, farthest_off_tangent(c, far_handles));
           }
           const bool keeps = near && sides.kept_by(c);
           if (!best || keeps > best_keeps || (keeps == best_keeps && c.cost < best->cost)) best = c, best_keeps = keeps;
@@ -289,9 +312,18 @@ std::vector<OutlineNode> round_to_grid(const std::vector<OutlineNode>& nodes, bo
       sides.before = node_side(outline_cubic(nodes, before), SegmentEnd::end, r[before].point, *r[before].out_handle, flat);
     if (nodes[after].in_handle)
       sides.after = node_side(outline_cubic(nodes, i), SegmentEnd::start, r[after].point, *r[after].in_handle, flat);
-    const std::optional<Choice> c = collinear_choice(src.point, src.in_handle, src.out_handle, sides,
-                                                     distance(nodes[before].point, src.point),
-                                                     distance(src.point, nodes[after].point));
+    const double chord_in = distance(nodes[before].point, src.point), chord_out = distance(src.point, nodes[after].point);
+    std::optional<Choice> c = collinear_choice(src.point, src.in_handle, src.out_handle, sides, chord_in, chord_out);
+    // A node flat on both sides whose direction turns its tangent by flat_node_turn or more and
+    // leaves a far handle beyond the reach off its tangent line: the direction whose tangent
+    // line passes nearest both far handles instead.
+    const bool flat_node = !sides.before && !sides.after && r[before].out_handle && r[after].in_handle;
+    if (c && flat_node && limits.flat_node_reach > 0.0 &&
+        std::abs(turning_angle(c->step, *src.out_handle - src.point)) >= flat_node_turn) {
+      const std::array<Vec2, 2> far_handles{*r[before].out_handle, *r[after].in_handle};
+      if (farthest_off_tangent(*c, far_handles) > limits.flat_node_reach)
+        c = collinear_choice(src.point, src.in_handle, src.out_handle, sides, chord_in, chord_out, far_handles);
+    }
     if (!c) continue;  // as plainly rounded
     dst.point = c->point, dst.in_handle = c->in, dst.out_handle = c->out;
     steps[i] = c->step;

@@ -465,8 +465,44 @@ TEST(GridRounding, ACubicRoundedFlatAlongItsLineBecomesTheLine) {
   EXPECT_EQ(cross(line, r[2].point - *r[2].in_handle), 0.0);
   EXPECT_EQ(cross(line, *r[1].out_handle - r[2].point), 0.0);
   for (const OutlineNode& n : r)
-    for (const std::optional<Vec2>& p : {std::optional(n.point), n.in_handle, n.out_handle})
-      if (p) EXPECT_TRUE(on_grid(*p));
+    for (const std::optional<Vec2>& p : {std::optional(n.point), n.in_handle, n.out_handle}) EXPECT_TRUE(!p || on_grid(*p));
+}
+
+// Liberation Serif's D, unrounded: its bottom rises 4.6 units in a flat S from the bowl's
+// extremum to the line along the baseline, the S's middle node 0.95° off level with κ = 0 on
+// both sides. The nearest grid direction, (1, 0), left the far handles 3 and 2 units off the
+// node's tangent line, and each cubic a curvature the other lacked (κ·UPM 1.7 against 0.1);
+// with HandleStepLimits::flat_node_reach, the direction whose tangent line passes nearest both
+// far handles.
+TEST(GridRounding, AFlatNodeTakesTheDirectionThatKeepsItsFarHandlesOnItsTangent) {
+  const std::vector<OutlineNode> nodes{
+      node(Vec2{663.287, -4.559}, std::nullopt, Vec2{621.030, -4.559}, true, Vec2{-1.0, 0.0}),
+      node(Vec2{518.974, -2.869}, Vec2{574.609, -3.790}, Vec2{345.647, 0.0}),
+      node(Vec2{231.0, 0.0}, Vec2{345.368, 0.0}, std::nullopt),
+      node(Vec2{59.0, 0.0}, std::nullopt, std::nullopt, false),
+  };
+  HandleStepLimits limits;
+  limits.flat_curvature = 0.5 / 2048.0;
+  limits.allowance = 1.0;
+  const auto far_offset = [](const std::vector<OutlineNode>& r) {
+    const Vec2 u = (*r[1].out_handle - r[1].point) / norm(*r[1].out_handle - r[1].point);
+    return std::max(std::abs(cross(u, *r[0].out_handle - r[1].point)), std::abs(cross(u, *r[2].in_handle - r[1].point)));
+  };
+  const std::vector<OutlineNode> level = round_to_grid(nodes, false, limits);
+  ASSERT_EQ(level.size(), nodes.size());
+  EXPECT_EQ(level[1].out_handle->y, level[1].point.y);  // (1, 0)
+  EXPECT_GT(far_offset(level), 2.0);
+
+  limits.flat_node_reach = 2.5;
+  const std::vector<OutlineNode> r = round_to_grid(nodes, false, limits);
+  ASSERT_EQ(r.size(), nodes.size());
+  EXPECT_NE(r[1].out_handle->y, r[1].point.y);
+  EXPECT_EQ(cross(r[1].point - *r[1].in_handle, *r[1].out_handle - r[1].point), 0.0);  // G1 exact
+  EXPECT_LT(far_offset(r), 0.5);
+  // Both cubics meet the node flat, as the check compares curvature there (κ·UPM within 0.05).
+  const double k_in = node_curvature(outline_cubic(r, 0), SegmentEnd::end) * 2048.0;
+  const double k_out = node_curvature(outline_cubic(r, 1), SegmentEnd::start) * 2048.0;
+  EXPECT_LT(std::abs(k_in - k_out), 0.05) << k_in << " " << k_out;
 }
 
 // merge_tiny_cubics on four nodes whose middle two are under 2 units apart: the ends untouched,
