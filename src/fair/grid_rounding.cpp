@@ -63,6 +63,12 @@ struct NodeSides {
 // 0.003 there, a jump the check counts).
 constexpr double flat_node_turn = radians(0.5);
 
+// A flat node's direction chosen for its far handles may be this much longer than its shorter
+// handle (that handle then lengthened to a step): Open Sans's s, an inflection node with a
+// 7.7-unit handle whose tangent only (8, 3) follows closely enough; FreeSerif's W took (16, 43)
+// against a 21-unit handle where it might be as long as the longer, and gained two inflections.
+constexpr double flat_node_handle_share = 1.25;
+
 // How far the farthest of `far_handles` lies off the tangent line of choice c.
 double farthest_off_tangent(const Choice& c, std::span<const Vec2> far_handles) {
   const Vec2 u = c.step / norm(c.step);
@@ -107,8 +113,9 @@ std::optional<Choice> collinear_choice(Vec2 point, std::optional<Vec2> in, std::
   const double room = 0.25 * (in_shorter ? chord_in : chord_out);
   const int short_reach = std::clamp(static_cast<int>(shortest), 1, 64);
   const int long_reach = std::clamp(static_cast<int>(std::min(longest, room)), short_reach, 64);
+  const int far_reach = std::clamp(static_cast<int>(flat_node_handle_share * shortest), short_reach, long_reach);
   for (int major = 1; major <= long_reach; ++major) {
-    if (major > short_reach && best_keeps) break;
+    if (major > (far_handles.empty() ? short_reach : far_reach) && best_keeps) break;
     const double minor_exact = major * (steep ? dir.x / std::abs(dir.y) : dir.y / std::abs(dir.x));
     for (int delta = -1; delta <= 1; ++delta) {
       const double minor = std::round(minor_exact) + delta;

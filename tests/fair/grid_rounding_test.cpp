@@ -505,6 +505,38 @@ TEST(GridRounding, AFlatNodeTakesTheDirectionThatKeepsItsFarHandlesOnItsTangent)
   EXPECT_LT(std::abs(k_in - k_out), 0.05) << k_in << " " << k_out;
 }
 
+// Open Sans's s, unrounded: the spine's inflection node (κ = 0 both sides) has a 7.7-unit
+// handle towards the shoulder and leaves along (8, −3) to within 0.1°; the directions no longer
+// than that handle, (5, −2) nearest, leave the shoulder's far handle 7 units off its tangent
+// line, and the node before it (G2 at κ·UPM 2.35) took κ·UPM 3.3 against 0.9 (the whole font's
+// rounding). A flat node's direction may be a quarter longer than its shorter handle.
+TEST(GridRounding, AFlatNodeWithAShortHandleMayTakeASlightlyLongerDirection) {
+  const std::vector<OutlineNode> nodes{
+      node(Vec2{722.963, 283.578}, std::nullopt, Vec2{722.963, 352.848}, true, Vec2{0.0, 1.0}),
+      node(Vec2{587.727, 443.081}, Vec2{684.721, 394.584}, Vec2{526.179, 473.855}, true, Vec2{-2.0, 1.0}),
+      node(Vec2{446.539, 503.667}, Vec2{453.718, 500.980}, Vec2{277.658, 566.885}),
+      node(Vec2{106.009, 826.791}, Vec2{106.009, 631.140}, std::nullopt, true, Vec2{0.0, 1.0}),
+  };
+  HandleStepLimits limits;
+  limits.flat_curvature = 0.5 / 2048.0;
+  limits.allowance = 0.5;  // so little that no later nudge turns the node instead
+  // How far the shoulder's far handle lies off node 2's tangent line (κ = 0 wants it on it).
+  const auto off = [](const std::vector<OutlineNode>& r) {
+    const Vec2 u = (*r[2].out_handle - r[2].point) / norm(*r[2].out_handle - r[2].point);
+    return std::abs(cross(u, *r[1].out_handle - r[2].point));
+  };
+  const std::vector<OutlineNode> short_only = round_to_grid(nodes, false, limits);
+  ASSERT_EQ(short_only.size(), nodes.size());
+  EXPECT_NE(cross(*short_only[2].out_handle - short_only[2].point, Vec2{-8.0, 3.0}), 0.0);
+
+  limits.flat_node_reach = 2.5;
+  const std::vector<OutlineNode> r = round_to_grid(nodes, false, limits);
+  ASSERT_EQ(r.size(), nodes.size());
+  EXPECT_EQ(cross(*r[2].out_handle - r[2].point, Vec2{-8.0, 3.0}), 0.0);
+  EXPECT_EQ(cross(r[2].point - *r[2].in_handle, *r[2].out_handle - r[2].point), 0.0);
+  EXPECT_LT(off(r), off(short_only)) << off(r) << " " << off(short_only);
+}
+
 // merge_tiny_cubics on four nodes whose middle two are under 2 units apart: the ends untouched,
 // one node left between them at `kept`, its handle on the dropped node's side (`out`: after it)
 // at `reached`. The merged nodes, for a test's own checks.
