@@ -91,8 +91,8 @@ struct HandleStepLimits {
   /// each cubic keeps a curvature the other lacks. Liberation Serif's D: a flat S along the
   /// bottom, its middle node 0.95° off level, took (1, 0) and left the far handles 3 and 2
   /// units off it, κ·UPM 1.7 against 0.1; (55, 1) seats it. Text a–z A–Z at 2.5: Liberation
-  /// Serif g2-jumps 2 → 0, Lato 8 → 7, Carlito 16 → 15, FreeSerif 10 → 9 (its inflections
-  /// 1.022× → 0.978× of the source's), Comic Neue 64 → 62, EB Garamond 164 → 158; at 1 or 2, or
+  /// Serif g2-jumps 2 → 0, Open Sans 1 → 0, Lato 8 → 7, Carlito 16 → 14, FreeSerif 10 → 9 (its
+  /// inflections 1.022× → 0.978× of the source's), Comic Neue 64 → 62, EB Garamond 164 → 160; at 1 or 2, or
   /// without the half degree, Roboto, Liberation Sans or Lato's S gained a jump. Not on
   /// handwriting (dkg a–z A–Z gained an extremum without a node), whose flat nodes take the
   /// far handles' whole steps nearest the tangent line as choices instead (`inflection_handles`).
