@@ -258,8 +258,8 @@ void merge_flat_cubics_into_lines(std::vector<OutlineNode>& ideal, std::vector<O
     if (flat) {
       // Along the line in order: the line's far end, node, handles, far node (reversed when
       // the cubic comes first).
-      const std::vector<Vec2> run = line_in ? std::vector<Vec2>{a, node.point, *near_handle, *far_handle, f.point}
-                                            : std::vector<Vec2>{f.point, *far_handle, *near_handle, node.point, a};
+      const std::array<Vec2, 5> run = line_in ? std::array{a, node.point, *near_handle, *far_handle, f.point}
+                                              : std::array{f.point, *far_handle, *near_handle, node.point, a};
       for (std::size_t k = 0; k < run.size(); ++k) flat = flat && on_line(a, d, run[k]) && (k == 0 || forward(d, run[k - 1], run[k]));
       flat = flat && dot(d, f.point - node.point) * (line_in ? 1.0 : -1.0) > 0.0;
       // The far node then a line's end: its other side leaves along the line (G1 exact).

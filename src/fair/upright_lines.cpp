@@ -92,20 +92,16 @@ MovedContour stand_lines_upright(const Contour& source, const UprightLimits& lim
     // On what earlier lines left (a curve between two stood lines moves at both ends).
     const std::size_t i_before = (i + n - 1) % n, i_after = (i + 1) % n;
     Contour trial = result;
-    bool fits = true;
-    if (before) {
-      const std::optional<Segment> s = neighbour_moved(contour.segments[i_before], trial.segments[i_before],
-                                                       SegmentEnd::end, a_to - a, tangent_before, axis, limits);
-      if (s) trial.segments[i_before] = *s;
-      fits = fits && s.has_value();
-    }
-    if (after) {
-      const std::optional<Segment> s = neighbour_moved(contour.segments[i_after], trial.segments[i_after],
-                                                       SegmentEnd::start, b_to - b, tangent_after, axis, limits);
-      if (s) trial.segments[i_after] = *s;
-      fits = fits && s.has_value();
-    }
-    if (!fits) continue;
+    // Neighbour k (if any) moved at `end` by v; whether it could be.
+    const auto move_neighbour = [&](const Segment* s, std::size_t k, SegmentEnd end, Vec2 v, bool tangent) {
+      if (!s) return true;
+      const std::optional<Segment> moved = neighbour_moved(contour.segments[k], trial.segments[k], end, v, tangent, axis, limits);
+      if (moved) trial.segments[k] = *moved;
+      return moved.has_value();
+    };
+    if (!move_neighbour(before, i_before, SegmentEnd::end, a_to - a, tangent_before) ||
+        !move_neighbour(after, i_after, SegmentEnd::start, b_to - b, tangent_after))
+      continue;
     trial.segments[i] = Line{a_to, b_to};
     double moved = move;
     for (const std::size_t k : {i_before, i_after})
