@@ -12,10 +12,10 @@ inline const std::string because_we_learn = fonts + "/BecauseWeLearn/BecauseWeLe
 inline const std::string inter_variable = fonts + "/Inter/Inter-subset.var.ttf";
 inline const std::string inconsolata = fonts + "/Inconsolata/Inconsolata-subset.otf";
 inline const std::string cantarell = fonts + "/Cantarell/Cantarell-Regular-subset.otf";  // S
-inline const std::string lato = fonts + "/Lato/Lato-Regular-subset.ttf";  // c, t, S
+inline const std::string lato = fonts + "/Lato/Lato-Regular-subset.ttf";  // c, t, z, S
 inline const std::string kristi = fonts + "/Kristi/Kristi-subset.ttf";  // N
 inline const std::string eb_garamond = fonts + "/EBGaramond/EBGaramond12-Regular-subset.otf";  // d
-inline const std::string linux_libertine = fonts + "/LinuxLibertine/LinLibertine_R-subset.otf";  // d
+inline const std::string linux_libertine = fonts + "/LinuxLibertine/LinLibertine_R-subset.otf";  // d, M, Z
 // dkg handwriting's T, renamed (its licence reserves the name)
 inline const std::string handwriting_probe = fonts + "/HandwritingProbe/GlyphfairProbeHandwriting-T.ttf";
 inline const std::string cff2_variable = fonts + "/Inter/GlyphfairProbe-CFF2.var.otf";

@@ -596,7 +596,7 @@ ContourFairing fair_curve(const Contour& source, const Contour& curve, const Con
   ContourFairing out;
   out.contour = source;
   const auto plan_with = [&](std::span<const std::size_t> smooth_nodes) {
-    ContourPlan p = plan_contour(curve, settings.corner_angle_deg, smooth_nodes);
+    ContourPlan p = plan_contour(curve, settings.corner_angle_deg, smooth_nodes, settings.profile == FairProfile::text);
     aim_runs_at_tight_turns(p, turns);
     return p;
   };

@@ -55,7 +55,8 @@ bool is_straight_segment(const Segment& s) {
   return is_line(s) || (c && is_straight(*c));
 }
 
-ContourPlan plan_contour(const Contour& source, double corner_angle_deg, std::span<const std::size_t> smooth_nodes) {
+ContourPlan plan_contour(const Contour& source, double corner_angle_deg, std::span<const std::size_t> smooth_nodes,
+                         bool corners_stay) {
   const Contour contour = with_cubics(source);
   const auto made_smooth = [&](std::size_t node) {
     return std::find(smooth_nodes.begin(), smooth_nodes.end(), node) != smooth_nodes.end();
@@ -140,6 +141,10 @@ ContourPlan plan_contour(const Contour& source, double corner_angle_deg, std::sp
                               ? *end_tangent(prev.segment, SegmentEnd::end)
                               : drawn_tangent(p.segment, SegmentEnd::start);
       if (*before == RunEndKind::line && prev.straight) run.start.line_share = line_share(prev, breaks[(i + n - 1) % n]);
+      if (corners_stay && *before == RunEndKind::corner && (contour.closed || i > 0)) {
+        run.start.beyond = drawn_tangent(prev.segment, SegmentEnd::end);
+        run.start.beyond_line = prev.straight;
+      }
       plan.start_nodes.push_back(p.source_node);
       plan.pieces.emplace_back(std::move(run));
     }
@@ -154,6 +159,10 @@ ContourPlan plan_contour(const Contour& source, double corner_angle_deg, std::sp
       run.end.tangent = kind == RunEndKind::line && pieces[next].straight ? *end_tangent(pieces[next].segment, SegmentEnd::start)
                                                                        : drawn_tangent(p.segment, SegmentEnd::end);
       if (kind == RunEndKind::corner) run.cubics.back() = without_stub(run.cubics.back(), SegmentEnd::end);
+      if (corners_stay && kind == RunEndKind::corner && (contour.closed || i + 1 < n)) {
+        run.end.beyond = drawn_tangent(pieces[next].segment, SegmentEnd::start);
+        run.end.beyond_line = pieces[next].straight;
+      }
       if (kind == RunEndKind::line && pieces[next].straight) run.end.line_share = line_share(pieces[next], breaks[(next + 1) % n]);
     }
   }

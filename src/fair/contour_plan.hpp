@@ -23,6 +23,12 @@ struct RunEnd {
   /// along the line): all of it when the line's other end is a corner, half when another run
   /// meets the line there too.
   double line_share = 0.0;
+  /// Kind corner, where corners stay (plan_contour): the unit tangent of the piece on the
+  /// corner's other side, along the contour (zero at an open contour's end, or where corners
+  /// need not stay), against which the corner turns, and whether that piece
+  /// is a line (whose direction the fairing keeps) rather than a curve (whose tangent it may turn too).
+  Vec2 beyond{};
+  bool beyond_line = false;
   bool operator==(const RunEnd&) const = default;
 };
 
@@ -55,8 +61,10 @@ bool is_straight_segment(const Segment& s);
 /// more than `corner_angle_deg` (and a curve meeting a line at 3° or more: only a tangential
 /// line join is made G2). The joins at `smooth_nodes` (source node indices) are smooth
 /// whatever their angle: a curve meeting a line there meets it tangentially, and two lines
-/// meeting there become one.
+/// meeting there become one. With `corners_stay`, each run's corner ends say what lies beyond
+/// them (RunEnd::beyond), so the fairing keeps them corners; without, a corner the fairing
+/// turns into a kink is noise (handwriting: fair/kinked_corners).
 ContourPlan plan_contour(const Contour& contour, double corner_angle_deg,
-                         std::span<const std::size_t> smooth_nodes = {});
+                         std::span<const std::size_t> smooth_nodes = {}, bool corners_stay = false);
 
 }  // namespace gf

@@ -205,6 +205,45 @@ Vec2 end_tangent_of(double s, const RunReference& ref, const SmoothRun& run, dou
   return t / norm(t);
 }
 
+// A corner the source turns by the kink limit or more keeps turning by this much (or by what
+// the source turns, if less) when its tangent is turned: turned further, the kink pass would
+// make it smooth, and the corner the source drew would be lost (Carlito's X: a terminal's
+// curve met its diagonal at 6.6°, and the symmetric arc at 2.4°). A degree and a half past the
+// limit, since rounding keeps a corner between cubics only from a degree past it (handle_steps).
+constexpr double corner_floor_deg = kink_limit_deg + 1.5;
+
+// The angle a corner's tangent (now `current`) may be turned to on the way to `wanted`: all
+// the way, or as far as the corner still turns by the floor against the piece beyond it, the
+// way the source turns; nullopt where the floor leaves no turn at all.
+std::optional<double> kept_corner_angle(const RunEnd& end, bool at_start, double current, double wanted) {
+  if (end.beyond == Vec2{}) return wanted;
+  const double beyond = angle_of(end.beyond);
+  // Signed turn at the corner along the contour: from the piece beyond to the run at its start,
+  // from the run to the piece beyond at its end.
+  const auto turn = [&](double a) { return at_start ? wrapped_angle(a - beyond) : wrapped_angle(beyond - a); };
+  const double drawn = turn(angle_of(end.tangent));
+  if (std::abs(drawn) < radians(kink_limit_deg)) return wanted;
+  // A curve beyond turns its own tangent within the same rule: each side takes half the room.
+  const double least = std::min(std::abs(drawn), radians(corner_floor_deg));
+  const double floor = end.beyond_line ? least : 0.5 * (least + std::abs(drawn));
+  const double t = turn(wanted);
+  if (t * drawn > 0.0 && std::abs(t) >= floor) return wanted;
+  const double now = turn(current);
+  if (now * drawn <= 0.0 || std::abs(now) <= floor) return std::nullopt;
+  const double kept = std::copysign(floor, drawn);
+  return current + wrapped_angle((at_start ? beyond + kept : beyond - kept) - current);
+}
+
+// The run's end that junction p of an open span is, where that end is a corner: only a corner's
+// tangent is the chain's own to turn (an inflection's is shared with the next chain, a line's
+// is the line's).
+const RunEnd* corner_at(const ChainSpan& span, const RunReference& ref, const SmoothRun& run, std::size_t p) {
+  if (span.closed || ref.closed()) return nullptr;
+  if (p == 0 && span.s.front() == 0.0 && run.start.kind == RunEndKind::corner) return &run.start;
+  if (p + 1 == span.s.size() && span.s.back() == ref.length() && run.end.kind == RunEndKind::corner) return &run.end;
+  return nullptr;
+}
+
 // The chain on the span's junctions, before any repair: points averaged over the window and
 // made to turn one way, balanced starting tangents, κ = 0 ends aimed, each free junction's
 // tangent between its chords (`between_chords`), α from each piece's LCG.
@@ -247,8 +286,12 @@ LacChain initial_chain(const ChainSpan& span, const RunReference& ref, PieceAlph
       const ChordAngles g = chord_angles(chain, std::min(fixed, free));
       const double a = fixed == 0 ? g.at_start : g.at_end, b = fixed == 0 ? g.at_end : g.at_start;
       if (!(std::abs(b) < 2.2 * std::abs(a) || a * b > 0.0)) continue;
+      std::optional<double> aimed = g.chord - 3.0 * a;
+      if (const RunEnd* corner = corner_at(span, ref, run, free))
+        aimed = kept_corner_angle(*corner, free == 0, chain.tangent_angles[free], *aimed);
+      if (!aimed) continue;
       const std::vector<double> before = chain.tangent_angles;
-      chain.tangent_angles[free] = g.chord - 3.0 * a;
+      chain.tangent_angles[free] = *aimed;
       for (std::size_t i = 0; i + 1 < points; ++i)
         if (!tangents_meet_in_front(chain, i)) chain.tangent_angles = before;
     }
@@ -338,20 +381,22 @@ void make_drawable(LacChain& chain, const ChainSpan& span, const RunReference& r
     }
     // A corner's own tangent may be noise that leaves its piece undrawable (on the wrong side
     // of the chord, or so lopsided that no α draws it): turn it until the piece is the
-    // symmetric arc, which every α draws. Only at a corner — an inflection's tangent is shared
-    // with the next chain and a line's is the line's.
-    const bool corner_start = i == 0 && !span.closed && !ref.closed() && span.s.front() == 0.0 &&
-                              run.start.kind == RunEndKind::corner;
-    const bool corner_end = i + 1 == segments && !span.closed && !ref.closed() && span.s.back() == L &&
-                            run.end.kind == RunEndKind::corner;
-    if (corner_start || corner_end) {
-      LacChain turned = chain;
-      const ChordAngles g = chord_angles(chain, i);
-      if (corner_start && g.at_end != 0.0) turned.tangent_angles[i] = g.chord - g.at_end;
-      else if (corner_end && g.at_start != 0.0) turned.tangent_angles[i + 1] = g.chord - g.at_start;
-      if (build_chain_segment(turned, i).ok()) {
-        chain = std::move(turned);
-        continue;
+    // symmetric arc, which every α draws, or as far as the corner stays one.
+    const RunEnd* start_corner = i == 0 ? corner_at(span, ref, run, i) : nullptr;
+    const RunEnd* end_corner = i + 1 == segments ? corner_at(span, ref, run, i + 1) : nullptr;
+    const ChordAngles g = chord_angles(chain, i);
+    const bool at_start = start_corner && g.at_end != 0.0, at_end = !at_start && end_corner && g.at_start != 0.0;
+    if (at_start || at_end) {
+      const std::size_t p = at_start ? i : i + 1;
+      const double symmetric = g.chord - (at_start ? g.at_end : g.at_start);
+      if (const std::optional<double> kept =
+              kept_corner_angle(at_start ? *start_corner : *end_corner, at_start, chain.tangent_angles[p], symmetric)) {
+        LacChain turned = chain;
+        turned.tangent_angles[p] = *kept;
+        if (build_chain_segment(turned, i).ok()) {
+          chain = std::move(turned);
+          continue;
+        }
       }
     }
     const double wanted = chain.alphas[i];
@@ -533,9 +578,15 @@ std::optional<SmoothRun> guide_for(const SmoothRun& run, const RunReference& sou
   if (!within(fit)) return std::nullopt;
   SmoothRun guide = run;
   guide.cubics = fit.spans;
+  // A corner's tangent is the guide's, as far as the corner stays one (kept_corner_angle).
+  const auto corner_tangent = [](const RunEnd& end, const Cubic& span, SegmentEnd at) {
+    const double drawn = angle_of(end.tangent), guided = angle_of(*end_tangent(span, at));
+    return direction_of(kept_corner_angle(end, at == SegmentEnd::start, drawn, guided).value_or(drawn));
+  };
   if (!run.closed) {
-    if (run.start.kind == RunEndKind::corner) guide.start.tangent = *end_tangent(fit.spans.front(), SegmentEnd::start);
-    if (run.end.kind == RunEndKind::corner) guide.end.tangent = *end_tangent(fit.spans.back(), SegmentEnd::end);
+    if (run.start.kind == RunEndKind::corner)
+      guide.start.tangent = corner_tangent(run.start, fit.spans.front(), SegmentEnd::start);
+    if (run.end.kind == RunEndKind::corner) guide.end.tangent = corner_tangent(run.end, fit.spans.back(), SegmentEnd::end);
   }
   return guide;
 }

@@ -565,6 +565,48 @@ TEST(ContourFairing, ACornerAtALineStaysACornerOnTheGrid) {
   EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm), 0);
 }
 
+// The turn at each join of `c` (radians), with where it is; π where a side has no direction.
+std::vector<std::pair<Vec2, double>> join_turns(const Contour& c) {
+  std::vector<std::pair<Vec2, double>> out;
+  const std::size_t n = c.segments.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    if (!c.closed && k == 0) continue;
+    const std::optional<Vec2> a = end_tangent(c.segments[(k + n - 1) % n], SegmentEnd::end);
+    const std::optional<Vec2> b = end_tangent(c.segments[k], SegmentEnd::start);
+    out.emplace_back(start_point(c.segments[k]), a && b ? std::abs(turning_angle(*a, *b)) : std::numbers::pi);
+  }
+  return out;
+}
+
+// The source's corners (joins turning by the kink limit or more) with no corner of the faired
+// outline within 0.25 % of the em, as tests/tools/fairing_bars.py counts them.
+int corners_lost(const Outline& source, const Outline& faired, double upm) {
+  const double limit = kink_limit_deg * std::numbers::pi / 180.0;
+  std::vector<Vec2> kept;
+  for (const Contour& c : faired.contours)
+    for (const auto& [p, turn] : join_turns(c))
+      if (turn > limit) kept.push_back(p);
+  int lost = 0;
+  for (const Contour& c : source.contours)
+    for (const auto& [p, turn] : join_turns(c))
+      if (turn > limit && std::none_of(kept.begin(), kept.end(), [&](Vec2 q) { return distance(p, q) <= 0.0025 * upm; }))
+        ++lost;
+  return lost;
+}
+
+TEST(ContourFairing, ACornerWhoseTangentTheFairingTurnsStaysACorner) {
+  // A corner's tangent that leaves its piece undrawable is turned towards the symmetric arc:
+  // Lato's z (its top bar's curve meets the diagonal at 3.3°) and Linux Libertine's M (3.5°
+  // at a foot) and Z (5.5°) came out kinks, which the kink pass made smooth. Now a turned
+  // corner keeps turning by the kink limit and a degree and a half, or by what the source
+  // turns where that is less.
+  for (const auto& [font, name] : {std::pair{test::lato, "z"}, {test::linux_libertine, "M"}, {test::linux_libertine, "Z"}}) {
+    FairedGlyph f;
+    expect_faired(font, name, FairProfile::text, &f);
+    EXPECT_EQ(corners_lost(f.source.outline, f.result.glyph.outline, f.upm), 0) << name;
+  }
+}
+
 // A smooth node a unit off a nearly straight stroke, its tangent a degree off the axis: rounded
 // along the axis, the cubic from the stroke has to come back to it and turns into an S (Inter's
 // b and p: one inflection the source lacks; its g: κ −31 per em against +0.25 there). The

@@ -34,6 +34,26 @@ TEST(ContourPlan, ALineJoinBeyondTheKinkLimitIsACornerUnlessMadeSmooth) {
   EXPECT_EQ(joined.end.kind, RunEndKind::corner);
 }
 
+TEST(ContourPlan, CornersThatStaySayWhatLiesBeyondThem) {
+  // line_then_curves(10°): the run leaves the first line at a corner of 10° and meets the
+  // closing line at (100, 200) at another; each of its ends says the line's direction beyond.
+  const Contour c = line_then_curves(10.0);
+  const ContourPlan plan = plan_contour(c, 30.0, {}, true);
+  const SmoothRun& run = std::get<SmoothRun>(plan.pieces[1]);
+  ASSERT_EQ(run.start.kind, RunEndKind::corner);
+  EXPECT_EQ(run.start.beyond, (Vec2{1, 0}));  // the line it leaves
+  EXPECT_TRUE(run.start.beyond_line);
+  ASSERT_EQ(run.end.kind, RunEndKind::corner);
+  const Vec2 home = Vec2{-100, -200} / norm(Vec2{-100, -200});
+  EXPECT_NEAR(run.end.beyond.x, home.x, 1e-12);  // the line it reaches
+  EXPECT_NEAR(run.end.beyond.y, home.y, 1e-12);
+  EXPECT_TRUE(run.end.beyond_line);
+  // Where corners need not stay (handwriting), nothing is said.
+  const SmoothRun& free = std::get<SmoothRun>(plan_contour(c, 30.0).pieces[1]);
+  EXPECT_EQ(free.start.beyond, Vec2{});
+  EXPECT_EQ(free.end.beyond, Vec2{});
+}
+
 TEST(ContourPlan, AStubHandleBesideALineIsACornerTowardsTheNextControlPoint) {
   // Inconsolata's q: the bowl leaves the stem along it with a 0.4-unit handle (0.26 % of its
   // chord), then turns up and left at once; drawn, that is a corner of about 158°.
