@@ -541,8 +541,9 @@ std::vector<Vec2> node_places(Vec2 at, Vec2 unrounded, int reach = 1) {
   return out;
 }
 
-// A change at node i of an outline: it changes both cubics at i, so the curvature jumps at i
-// and at its two neighbours. It is allowed when neither cubic moves farther from its
+// A change at node i of an outline: it changes both cubics at i (the one, where the other side
+// is a line: a corner's), so the curvature jumps at i and at its two neighbours. It is allowed
+// when neither cubic moves farther from its
 // unrounded self than its allowance, nor gains an inflection, an H/V extremum or a handle's
 // reach past its chord that neither its unrounded self nor the cubic before the change has.
 class NodeChange {
@@ -551,7 +552,9 @@ class NodeChange {
              std::size_t i)
       : nodes_(nodes), joins_(joins), judge_(judge), flat_(flat), i_(i), h_((i + nodes.size() - 1) % nodes.size()),
         j_((i + 1) % nodes.size()) {
-    for (const std::size_t k : {h_, i_}) {
+    for (const std::size_t k : {h_, i_})
+      if (joins.is_cubic(k)) cubics_.push_back(k);
+    for (const std::size_t k : cubics_) {
       const CubicTraits &a = judge.unrounded(k), &b = judge.traits(k, outline_cubic(nodes, k));
       most_.push_back({std::max(a.shape.sign_changes, b.shape.sign_changes), std::max(a.extrema.all, b.extrema.all),
                        std::max(a.overreach, b.overreach), std::max(a.turning, b.turning)});
@@ -595,8 +598,8 @@ class NodeChange {
  private:
   // Whether the outline as it stands is an allowed change.
   bool allowed() const {
-    for (std::size_t side = 0; side < 2; ++side) {
-      const std::size_t k = side == 0 ? h_ : i_;
+    for (std::size_t side = 0; side < cubics_.size(); ++side) {
+      const std::size_t k = cubics_[side];
       const CubicTraits& t = judge_.traits(k, outline_cubic(nodes_, k));
       const Most& most = most_[side];
       if (!t.within || t.shape.sign_changes > most.sign_changes || t.extrema.all > most.extrema ||
@@ -608,7 +611,7 @@ class NodeChange {
 
   int inflections_added() const {
     int added = 0;
-    for (const std::size_t k : {h_, i_})
+    for (const std::size_t k : cubics_)
       added += judge_.traits(k, outline_cubic(nodes_, k)).shape.sign_changes > judge_.unrounded(k).shape.sign_changes;
     return added;
   }
@@ -618,7 +621,7 @@ class NodeChange {
   // spike of 667 (EB Garamond's P, where its bowl meets the stem).
   double shapes_cost() const {
     double cost = 0.0;
-    for (const std::size_t k : {h_, i_})
+    for (const std::size_t k : cubics_)
       cost += shape_cost(judge_.traits(k, outline_cubic(nodes_, k)).shape, judge_.unrounded(k).shape, flat_);
     return cost;
   }
@@ -627,14 +630,19 @@ class NodeChange {
   // only the two cubics at i evaluated where the contour has room).
   std::array<double, 3> jumps_now() const {
     if (nodes_.size() < 4) return {join_jump(joins_, h_, flat_), join_jump(joins_, i_, flat_), join_jump(joins_, j_, flat_)};
-    const Cubic before = outline_cubic(nodes_, h_), after = outline_cubic(nodes_, i_);
-    const double ks_h = node_curvature(before, SegmentEnd::start), ke_h = node_curvature(before, SegmentEnd::end);
-    const double ks_i = node_curvature(after, SegmentEnd::start), ke_i = node_curvature(after, SegmentEnd::end);
-    const auto at_end = [&](std::size_t k, std::optional<double> beyond, double near) {
-      if (beyond) return jump(*beyond, near, flat_);
-      return joins_.meets_line(k) ? jump(near, 0.0, flat_) : 0.0;
+    // A side that is a line (a corner's) changes nothing at its far end.
+    const auto curvature = [&](std::size_t cubic, SegmentEnd end) -> std::optional<double> {
+      if (!joins_.is_cubic(cubic)) return std::nullopt;
+      return node_curvature(outline_cubic(nodes_, cubic), end);
     };
-    const double at_i = joins_.joins_cubics(i_) ? jump(ke_h, ks_i, flat_) : 0.0;  // a corner has none
+    const std::optional<double> ks_h = curvature(h_, SegmentEnd::start), ke_h = curvature(h_, SegmentEnd::end);
+    const std::optional<double> ks_i = curvature(i_, SegmentEnd::start), ke_i = curvature(i_, SegmentEnd::end);
+    const auto at_end = [&](std::size_t k, std::optional<double> beyond, std::optional<double> near) {
+      if (!near) return 0.0;
+      if (beyond) return jump(*beyond, *near, flat_);
+      return joins_.meets_line(k) ? jump(*near, 0.0, flat_) : 0.0;
+    };
+    const double at_i = joins_.joins_cubics(i_) ? jump(*ke_h, *ks_i, flat_) : 0.0;  // a corner has none
     return {at_end(h_, beyond_h_, ks_h), at_i, at_end(j_, beyond_j_, ke_i)};
   }
 
@@ -644,6 +652,7 @@ class NodeChange {
   double flat_;
   std::size_t i_, h_, j_;
   std::optional<double> beyond_h_, beyond_j_;
+  std::vector<std::size_t> cubics_;  ///< the cubics at i: before it (h) and after it, where they are cubics
   // Per cubic at i, the most of each fault its unrounded self or its state before the change has.
   struct Most {
     int sign_changes, extrema;
@@ -876,8 +885,7 @@ std::vector<std::size_t> seat_line_joins(std::vector<OutlineNode>& nodes, const 
 // cubic's chord of where the passes found it (`entry`): Comic Neue's u had a step of (1, 56)
 // slide a short cap 56 units down its stem, which strayed and cost the contour eight roundings
 // more; Gentium's M, a bracket of 89 units crawl 600 units up its stem. The line keeps half its
-// length at least. Only where the cubic and the one beyond its far node are cubics both
-// (NodeChange weighs the pair). Returns the first node of each cubic it changed.
+// length at least. Returns the first node of each cubic it changed.
 std::vector<std::size_t> slide_line_joins(std::vector<OutlineNode>& nodes, std::span<const OutlineNode> entry,
                                           std::span<const std::optional<Vec2>> steps, const OutlineJoins& joins,
                                           CubicJudge& judge, double flat) {
@@ -889,8 +897,6 @@ std::vector<std::size_t> slide_line_joins(std::vector<OutlineNode>& nodes, std::
     const bool leaves = joins.is_cubic(at);  // the cubic leaves the join, the line arrives
     const std::size_t far = leaves ? (at + 1) % n : (at + n - 1) % n;  // the cubic's other node
     const std::size_t first = leaves ? at : far;                        // the cubic's first node
-    // The cubic on the far node's other side (NodeChange weighs both cubics at it).
-    if (!joins.is_cubic(leaves ? far : (far + n - 1) % n)) continue;
     const NodeChange change(nodes, joins, judge, flat, far);
     const Vec2 line_end = nodes[leaves ? (at + n - 1) % n : (at + 1) % n].point;
     const Vec2 kept = nodes[at].point, back = *steps[at] * (leaves ? -1.0 : 1.0);
@@ -918,7 +924,10 @@ std::vector<std::size_t> slide_line_joins(std::vector<OutlineNode>& nodes, std::
 // against an allowance of 1.71), the corner is tried at the grid points up to two units from
 // its own, its handle at the line's whole steps up to two either side, its other handle where
 // it is; it must still turn by the kink limit (or as little as it did). `corners`: interior
-// corners between two cubics (choose_handle_steps lists them). Each corner is tried
+// corners at a cubic (choose_handle_steps lists them); since stop 65 also those with a line on
+// the other side (Caladea's v, x and y: a serif's curve from its stroke's line to the serif's
+// end kept κ·UPM 0.5–0.9 at the join), such a corner moving only where that line's other end
+// is a corner too. Each corner is tried
 // once: a tried one leaves `corners` (again every pass, it cost Because We Learn's a–z A–Z 3 %
 // more time for nothing). Returns the corners moved.
 std::vector<std::size_t> seat_line_joins_at_corners(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal,
@@ -946,7 +955,11 @@ std::vector<std::size_t> seat_line_joins_at_corners(std::vector<OutlineNode>& no
     std::optional<OutlineNode> best;
     std::optional<Vec2>& handle = before ? nodes[i].in_handle : nodes[i].out_handle;
     const double nearest = whole_steps(join, before ? *kept.in_handle : *kept.out_handle, *steps[at], 1.0);
-    for (const Vec2 p : node_places(kept.point, ideal[i].point, 2))
+    // A corner at a line is that line's end too: it stays where the line's other end is smooth,
+    // whose G1 a turned line would break.
+    const bool line_before = !joins.is_cubic(h), line_after = !joins.is_cubic(i);
+    const bool held = (line_before && nodes[h].smooth) || (line_after && nodes[j].smooth);
+    for (const Vec2 p : held ? std::vector<Vec2>{kept.point} : node_places(kept.point, ideal[i].point, 2))
       for (double m = nearest - 2.0; m <= nearest + 2.0; ++m) {
         const Vec2 on_line = join + *steps[at] * m;
         if (dot(on_line - join, line_far - join) >= 0.0) continue;  // on the cubic's side of the join
@@ -1244,10 +1257,10 @@ void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<Outl
       run_of[j] = r;
     }
   }
-  // The corners between two cubics, where a run starts (seat_line_joins_at_corners).
+  // The corners at a cubic, where a run starts or ends (seat_line_joins_at_corners).
   std::vector<std::size_t> corners;
   for (std::size_t i = 0; i < n; ++i)
-    if (!nodes[i].smooth && joins.interior(i) && joins.is_cubic(i) && joins.is_cubic((i + n - 1) % n)) corners.push_back(i);
+    if (!nodes[i].smooth && joins.interior(i) && (joins.is_cubic(i) || joins.is_cubic((i + n - 1) % n))) corners.push_back(i);
 
   // A nudged node changes the curvature its neighbours' handles give (its handles are their
   // far handles), and the steps chosen are the centre of the next choice's reach: a run is

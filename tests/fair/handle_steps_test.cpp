@@ -326,5 +326,37 @@ TEST(HandleSteps, ACurveLeavingADiagonalLineMeetsItWithoutVisibleCurvature) {
   EXPECT_GT(exact, 0);
 }
 
+TEST(HandleSteps, ACurveFromALineToACornerAtALineMeetsItsLineWithoutVisibleCurvature) {
+  // Caladea's v, x and y: a serif's curve leaves the stroke's line of step (−4, 11) and ends
+  // at a corner whose other side is a line (the serif's end). A whole step of the corner's
+  // handle set the curve's far handle 0.09 units off the line: κ·UPM 0.85 at the join. The
+  // corner's handle goes onto the line at a whole step, as at a corner between two cubics.
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int seated = 0;
+  for (int trial = 0; trial < 50; ++trial) {
+    const Vec2 along = Vec2{-4, 11} / std::sqrt(137.0);
+    const Vec2 start{185.3 + u(rng), 0.2 + u(rng)};
+    const Vec2 join = start + along * (420 + 10 * u(rng));
+    const Vec2 corner = join + Vec2{-71, 41} + Vec2{u(rng), u(rng)};
+    std::vector<OutlineNode> nodes(4);
+    nodes[0].point = start;
+    nodes[1].point = join;
+    nodes[1].out_handle = join + along * (11 + u(rng));
+    nodes[2].point = corner;
+    nodes[2].in_handle = join + along * (33 + 2 * u(rng));  // on the line: κ = 0 at the join
+    nodes[3].point = corner + Vec2{2, 30};
+    nodes[0].smooth = nodes[2].smooth = nodes[3].smooth = false;
+    const std::vector<OutlineNode> r = round_to_grid(nodes, true, {0.5e-3, 1.5, {}});
+    const Cubic c = outline_cubic(r, 1);
+    EXPECT_EQ(cross(r[1].point - r[0].point, c.p[1] - c.p[0]), 0.0) << "trial " << trial;  // G1
+    seated += std::abs(node_curvature(c, SegmentEnd::start)) * 2048.0 <= 0.05;
+  }
+  // Before, only corners between two cubics were tried: 37 of the 50. The one left here has its
+  // join placed 3.3 units along the line, and no whole step of the handle stays within the
+  // allowance.
+  EXPECT_GE(seated, 49);
+}
+
 }  // namespace
 }  // namespace gf
