@@ -25,8 +25,8 @@ struct RunEnd {
   double line_share = 0.0;
   /// Kind corner, where corners stay (plan_contour): the unit tangent of the piece on the
   /// corner's other side, along the contour (zero at an open contour's end, or where corners
-  /// need not stay), against which the corner turns, and whether that piece
-  /// is a line (whose direction the fairing keeps) rather than a curve (whose tangent it may turn too).
+  /// need not stay), against which the corner turns; and whether that piece is a line, whose
+  /// direction the fairing keeps, rather than a curve, whose tangent it may turn too.
   Vec2 beyond{};
   bool beyond_line = false;
   bool operator==(const RunEnd&) const = default;

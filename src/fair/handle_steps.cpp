@@ -543,9 +543,9 @@ std::vector<Vec2> node_places(Vec2 at, Vec2 unrounded, int reach = 1) {
 
 // A change at node i of an outline: it changes both cubics at i (the one, where the other side
 // is a line: a corner's), so the curvature jumps at i and at its two neighbours. It is allowed
-// when neither cubic moves farther from its
-// unrounded self than its allowance, nor gains an inflection, an H/V extremum or a handle's
-// reach past its chord that neither its unrounded self nor the cubic before the change has.
+// when no such cubic moves farther from its unrounded self than its allowance, nor gains an
+// inflection, an H/V extremum or a handle's reach past its chord that neither its unrounded
+// self nor the cubic before the change has.
 class NodeChange {
  public:
   NodeChange(const std::vector<OutlineNode>& nodes, const OutlineJoins& joins, CubicJudge& judge, double flat,

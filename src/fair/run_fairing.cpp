@@ -384,19 +384,19 @@ void make_drawable(LacChain& chain, const ChainSpan& span, const RunReference& r
     // symmetric arc, which every α draws, or as far as the corner stays one.
     const RunEnd* start_corner = i == 0 ? corner_at(span, ref, run, i) : nullptr;
     const RunEnd* end_corner = i + 1 == segments ? corner_at(span, ref, run, i + 1) : nullptr;
-    const ChordAngles g = chord_angles(chain, i);
-    const bool at_start = start_corner && g.at_end != 0.0, at_end = !at_start && end_corner && g.at_start != 0.0;
-    if (at_start || at_end) {
+    if (start_corner || end_corner) {
+      const ChordAngles g = chord_angles(chain, i);
+      const bool at_start = start_corner && g.at_end != 0.0, at_end = !at_start && end_corner && g.at_start != 0.0;
       const std::size_t p = at_start ? i : i + 1;
-      const double symmetric = g.chord - (at_start ? g.at_end : g.at_start);
-      if (const std::optional<double> kept =
-              kept_corner_angle(at_start ? *start_corner : *end_corner, at_start, chain.tangent_angles[p], symmetric)) {
-        LacChain turned = chain;
-        turned.tangent_angles[p] = *kept;
-        if (build_chain_segment(turned, i).ok()) {
-          chain = std::move(turned);
-          continue;
-        }
+      const std::optional<double> kept =
+          at_start || at_end ? kept_corner_angle(at_start ? *start_corner : *end_corner, at_start, chain.tangent_angles[p],
+                                                 g.chord - (at_start ? g.at_end : g.at_start))
+                             : std::nullopt;
+      LacChain turned = chain;
+      if (kept) turned.tangent_angles[p] = *kept;
+      if (kept && build_chain_segment(turned, i).ok()) {
+        chain = std::move(turned);
+        continue;
       }
     }
     const double wanted = chain.alphas[i];
