@@ -112,9 +112,10 @@ std::vector<Vec2> whole_steps_around(Vec2 node, Vec2 step, double sign, double s
   return handles;
 }
 
-// Where one handle of a node may go: whole steps along the node's grid direction, a unit
-// either way for a corner's handle, else where it is. The rounded position comes first.
-std::vector<Vec2> handle_candidates(const OutlineNode& node, std::optional<Vec2> step, bool out) {
+// Where one handle of a node may go: whole steps along the node's grid direction, up to
+// `corner_reach` units either way for a corner's handle, else where it is. The rounded
+// position comes first.
+std::vector<Vec2> handle_candidates(const OutlineNode& node, std::optional<Vec2> step, bool out, int corner_reach = 1) {
   const Vec2 h = out ? *node.out_handle : *node.in_handle;
   std::vector<Vec2> c{h};
   if (step) {
@@ -123,8 +124,8 @@ std::vector<Vec2> handle_candidates(const OutlineNode& node, std::optional<Vec2>
     for (int k = -reach; k <= reach; ++k)
       if (k != 0 && m0 + k >= 1.0) c.push_back(node.point + *step * (sign * (m0 + k)));
   } else if (!node.smooth) {
-    for (int dx = -1; dx <= 1; ++dx)
-      for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -corner_reach; dx <= corner_reach; ++dx)
+      for (int dy = -corner_reach; dy <= corner_reach; ++dy)
         if (dx != 0 || dy != 0) c.push_back(h + Vec2{double(dx), double(dy)});
   }
   return c;
@@ -419,6 +420,22 @@ CubicChoices cubic_choices(const std::vector<OutlineNode>& nodes, std::span<cons
       }
   };
   weigh();
+  // A corner to keep that every choice turns under the kink limit, or keeps only with a bend
+  // the unrounded cubic lacks: the corners' handles two units either way too (Lato's Y: a 3.3°
+  // corner whose line line_rounding moved 2.2 units for a shorter step; the nearly straight
+  // cubic from it kept 3° only as an S, unless the far corner's handle moved two units).
+  const auto corner_lost = [&](std::size_t s) {
+    const Vec2 out = c.outs[s / c.ins.size()], in = c.ins[s % c.ins.size()];
+    return (judge.keeps_corner(i) && !steps[i] && turn_at(nodes, judge.closed(), i, {}, out) < kink_limit) ||
+           (judge.keeps_corner(j) && !steps[j] && turn_at(nodes, judge.closed(), j, in) < kink_limit);
+  };
+  bool at_risk = !as_is, lost = false;
+  for (std::size_t s = 0; s < c.states() && at_risk; ++s) at_risk = c.cost[s] >= wrong_way, lost = lost || corner_lost(s);
+  if (at_risk && lost) {
+    if (!steps[i]) add(c.outs, handle_candidates(nodes[i], steps[i], true, 2));
+    if (!steps[j]) add(c.ins, handle_candidates(nodes[j], steps[j], false, 2));
+    weigh();
+  }
   // Where no choice gives an end at a smooth node within the target of its unrounded curvature,
   // the handle lengths aimed at it (handles_for_curvature), against every place of the far
   // handle: only there, as they multiply the choices.

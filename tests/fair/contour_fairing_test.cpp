@@ -607,6 +607,17 @@ TEST(ContourFairing, ACornerWhoseTangentTheFairingTurnsStaysACorner) {
   }
 }
 
+TEST(ContourFairing, ACornerAtALineStaysACornerWhereRoundingMovedItsLine) {
+  // Lato's Y: the arm's line meets the crotch's curve at a corner of 3.3°, and line_rounding
+  // moves the line's end 2.2 units for a shorter step. A unit's move of either corner's handle
+  // left the nearly straight cubic between them under 3° at the corner, or an S; the corners'
+  // handles are tried two units either way where every nearer choice loses the corner so.
+  FairedGlyph f;
+  expect_faired(test::lato, "Y", FairProfile::text, &f);
+  EXPECT_EQ(corners_lost(f.source.outline, f.result.glyph.outline, f.upm), 0);
+  EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm), 0);
+}
+
 // A smooth node a unit off a nearly straight stroke, its tangent a degree off the axis: rounded
 // along the axis, the cubic from the stroke has to come back to it and turns into an S (Inter's
 // b and p: one inflection the source lacks; its g: κ −31 per em against +0.25 there). The
