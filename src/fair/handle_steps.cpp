@@ -383,6 +383,10 @@ CubicChoices cubic_choices(const std::vector<OutlineNode>& nodes, std::span<cons
   const bool zero_end = line_after || (inflection && nodes[j].smooth && std::abs(ideal.k_end) < flat);
   if (zero_start && steps[i] && !as_is) add(c.ins, handles_meeting_line(nodes[j], steps[j], false, nodes[i], *steps[i]));
   if (zero_end && steps[j] && !as_is) add(c.outs, handles_meeting_line(nodes[i], steps[i], true, nodes[j], *steps[j]));
+  // Whether a handle turns a corner to keep (node k's) under the kink limit.
+  const auto turned_under_limit = [&](std::size_t k, std::optional<Vec2> in, std::optional<Vec2> out) {
+    return judge.keeps_corner(k) && turn_at(nodes, judge.closed(), k, in, out) < kink_limit;
+  };
   auto weigh = [&] {
     c.k_start.clear(), c.k_end.clear(), c.cost.clear(), c.traits.clear();
     for (const Vec2 out : c.outs)
@@ -408,8 +412,8 @@ CubicChoices cubic_choices(const std::vector<OutlineNode>& nodes, std::span<cons
         // Nor turn a corner at a line into a kink, or smooth: the kink pass then makes it smooth
         // and fairs the contour again, and the grid may give that join no G2 (Lato's S: a 4.3°
         // corner rounded straight, then κ·UPM 3.4 where its curve left the line).
-        if (judge.keeps_corner(i) && turn_at(nodes, judge.closed(), i, {}, out) < kink_limit) cost += wrong_way;
-        if (judge.keeps_corner(j) && turn_at(nodes, judge.closed(), j, in) < kink_limit) cost += wrong_way;
+        if (turned_under_limit(i, {}, out)) cost += wrong_way;
+        if (turned_under_limit(j, in, {})) cost += wrong_way;
         // Nor fold back on itself past its chord.
         if (t.overreach > ideal.overreach) cost += wrong_way * (1.0 + t.overreach);
         // Nor, short, loop or cusp within it.
@@ -424,16 +428,15 @@ CubicChoices cubic_choices(const std::vector<OutlineNode>& nodes, std::span<cons
   // the unrounded cubic lacks: the corners' handles two units either way too (Lato's Y: a 3.3°
   // corner whose line line_rounding moved 2.2 units for a shorter step; the nearly straight
   // cubic from it kept 3° only as an S, unless the far corner's handle moved two units).
-  const auto corner_lost = [&](std::size_t s) {
-    const Vec2 out = c.outs[s / c.ins.size()], in = c.ins[s % c.ins.size()];
-    return (judge.keeps_corner(i) && !steps[i] && turn_at(nodes, judge.closed(), i, {}, out) < kink_limit) ||
-           (judge.keeps_corner(j) && !steps[j] && turn_at(nodes, judge.closed(), j, in) < kink_limit);
-  };
   bool at_risk = !as_is, lost = false;
-  for (std::size_t s = 0; s < c.states() && at_risk; ++s) at_risk = c.cost[s] >= wrong_way, lost = lost || corner_lost(s);
-  if (at_risk && lost) {
-    if (!steps[i]) add(c.outs, handle_candidates(nodes[i], steps[i], true, 2));
-    if (!steps[j]) add(c.ins, handle_candidates(nodes[j], steps[j], false, 2));
+  for (std::size_t s = 0; s < c.states() && at_risk; ++s) {
+    const Vec2 out = c.outs[s / c.ins.size()], in = c.ins[s % c.ins.size()];
+    at_risk = c.cost[s] >= wrong_way;
+    lost = lost || turned_under_limit(i, {}, out) || turned_under_limit(j, in, {});
+  }
+  if (at_risk && lost) {  // a corner's handle (no grid step) only: the others are as they were
+    add(c.outs, handle_candidates(nodes[i], steps[i], true, 2));
+    add(c.ins, handle_candidates(nodes[j], steps[j], false, 2));
     weigh();
   }
   // Where no choice gives an end at a smooth node within the target of its unrounded curvature,
