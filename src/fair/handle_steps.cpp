@@ -827,16 +827,18 @@ std::vector<std::size_t> seat_flat_nodes(std::vector<OutlineNode>& nodes, const 
   return seated;
 }
 
-// Which neighbour of node i is a line join still jumping past the target: the one before (the
-// cubic arriving at i starts on the line; that first) or the one after. None where neither is.
+// Which neighbour of node i is a line join still jumping past the target, across a cubic from
+// i: the one before (the cubic arriving at i starts on the line; that first) or the one after.
+// None where neither is (a corner with a line on one side has its line join, if any, across
+// that line, not across a cubic).
 struct JumpingLineJoin {
   std::size_t at;  ///< the join's node
   bool before;     ///< whether it is node i's neighbour before
 };
 std::optional<JumpingLineJoin> jumping_line_join(const OutlineJoins& joins, std::size_t i, double flat) {
   const std::size_t n = joins.size(), h = (i + n - 1) % n, j = (i + 1) % n;
-  if (joins.meets_line(h) && join_jump(joins, h, flat) > target_jump) return JumpingLineJoin{h, true};
-  if (joins.meets_line(j) && join_jump(joins, j, flat) > target_jump) return JumpingLineJoin{j, false};
+  if (joins.is_cubic(h) && joins.meets_line(h) && join_jump(joins, h, flat) > target_jump) return JumpingLineJoin{h, true};
+  if (joins.is_cubic(i) && joins.meets_line(j) && join_jump(joins, j, flat) > target_jump) return JumpingLineJoin{j, false};
   return std::nullopt;
 }
 

@@ -358,5 +358,33 @@ TEST(HandleSteps, ACurveFromALineToACornerAtALineMeetsItsLineWithoutVisibleCurva
   EXPECT_GE(seated, 49);
 }
 
+TEST(HandleSteps, ACornerAfterALineLeavesThatLinesCurveToItsOwnJoin) {
+  // A curve meets a line at node 1 (smooth, its far handle off the line: a jump), the line
+  // runs to the corner at node 2, and a cubic leaves that corner. The corner has no in-handle:
+  // the line join before it is across the line, not across a cubic of the corner's, and the
+  // corner's seat (seat_line_joins_at_corners) must leave it alone rather than read a handle
+  // that is not there.
+  std::vector<OutlineNode> nodes(4);
+  nodes[0].point = {0.3, 0.2};
+  nodes[0].smooth = false;
+  nodes[0].out_handle = Vec2{40.4, 80.1};
+  nodes[1].point = {120.2, 150.3};
+  nodes[1].in_handle = Vec2{90.6, 149.1};  // a degree off the line's direction (1, 0)
+  nodes[2].point = {260.4, 150.3};
+  nodes[2].smooth = false;
+  nodes[2].out_handle = Vec2{300.2, 170.6};
+  nodes[3].point = {330.1, 40.2};
+  nodes[3].smooth = false;
+  nodes[3].in_handle = Vec2{340.3, 100.4};
+  const std::vector<OutlineNode> r = round_to_grid(nodes, true, {0.5e-3, 1.0, {}});
+  ASSERT_EQ(r.size(), 4u);
+  EXPECT_FALSE(r[2].in_handle.has_value());
+  EXPECT_FALSE(r[1].out_handle.has_value());
+  EXPECT_EQ(cross(r[2].point - r[1].point, r[1].point - *r[1].in_handle), 0.0);  // G1 at the line join
+  for (const OutlineNode& node : r)
+    for (const std::optional<Vec2> p : {std::optional(node.point), node.in_handle, node.out_handle})
+      if (p) EXPECT_TRUE(p->x == std::round(p->x) && p->y == std::round(p->y));
+}
+
 }  // namespace
 }  // namespace gf
