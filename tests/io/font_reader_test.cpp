@@ -87,7 +87,9 @@ TEST(Cff, ClosesAContourOnItsStartWithoutAResidueLine) {
     ASSERT_TRUE(c.closed);
     EXPECT_EQ(end_point(c.segments.back()), start_point(c.segments.front()));
     for (const Segment& s : c.segments)
-      if (std::holds_alternative<Line>(s)) EXPECT_GT(distance(start_point(s), end_point(s)), 1e-3);
+      if (std::holds_alternative<Line>(s)) {
+        EXPECT_GT(distance(start_point(s), end_point(s)), 1e-3);
+      }
     for (const Join& j : joins_of(c))
       if (distance(j.point, {334, 50.3}) < 1e-3) {
         seen = true;
