@@ -239,6 +239,10 @@ class LinePlacer {
     const double fold = unseated + fold_unit;
     double best = unseated + fold;
     std::vector<Vec2> candidates;
+    // A far node whose direction runs along the line, off it: no handle seats the curve, which
+    // must leave one of two parallel tangents for the other, an S (Caladea's z: a curve from
+    // its extremum down into a line 2.1° off the level that would stand level 3 units under it).
+    const bool parallel_off = steps_[k] && cross(*steps_[k], d) == 0.0 && cross(d, rounded_[k].point - end) != 0.0;
     if (steps_[k]) {
       candidates = handles_near_line(rounded_[k].point, *steps_[k], out ? 1.0 : -1.0, end, d);
     } else if (const double m = whole_steps(end, *wanted, d, 1.0); m != 0.0) {
@@ -249,7 +253,7 @@ class LinePlacer {
       const Cubic c = curve(h);
       const double kappa = node_curvature(c, out ? SegmentEnd::end : SegmentEnd::start);
       const double cost = (std::abs(kappa) <= 0.05 * limits_.flat_curvature ? 0.3 * distance(h, *wanted) : unseated) +
-                          (inner_axis_extrema(c) > extrema ? fold : 0.0);
+                          (parallel_off || inner_axis_extrema(c) > extrema ? fold : 0.0);
       best = std::min(best, cost);
     }
     return best;

@@ -94,5 +94,38 @@ TEST(LineRounding, ACornerTakesItsCurvesHandleAlong) {
   EXPECT_GT(rounded.p[1].x, rounded.p[0].x);  // it leaves the corner to the right, as it did
 }
 
+TEST(LineRounding, ALineStandsLevelOnlyWhereItsCurveCanMeetItWithoutAnS) {
+  // Caladea's z: the base's top descends from its extremum into a line 2.1° off the level,
+  // step (−27, −1). With its corner a unit up, the line would stand level at the shortest step,
+  // 3 units under the extremum: a curve from one level tangent to another below it is an S, or
+  // keeps curvature at the join (κ·UPM 0.29 in the font). The line keeps a lean the curve
+  // meets turning one way.
+  const std::vector<OutlineNode> nodes{
+      node(Vec2{365.0, -3.0}, std::nullopt, Vec2{348.36, -2.11}, false),
+      node(Vec2{229.06, 0.02}, Vec2{305.27, 0.02}, Vec2{148.59, 0.02}),
+      node(Vec2{67.0, -3.0}, Vec2{84.53, -2.35}, std::nullopt),
+      node(Vec2{40.0, -4.0}, std::nullopt, std::nullopt, false),
+      node(Vec2{32.0, 38.0}, std::nullopt, std::nullopt, false),
+  };
+  std::vector<OutlineNode> r = nearest_grid_points(nodes);
+  for (OutlineNode& n : r) {
+    if (n.in_handle) n.in_handle = nearest_grid_point(*n.in_handle);
+    if (n.out_handle) n.out_handle = nearest_grid_point(*n.out_handle);
+  }
+  std::vector<std::optional<Vec2>> steps(nodes.size());
+  steps[1] = Vec2{-1.0, 0.0};
+  HandleStepLimits limits;
+  limits.allowance = 0.6;
+  place_lines_on_grid(nodes, r, steps, true, limits);
+  ASSERT_TRUE(steps[2] && r[2].in_handle);
+  EXPECT_LT(steps[2]->y, 0.0);  // still descending
+  EXPECT_EQ(cross(*steps[2], *r[2].in_handle - r[2].point), 0.0);  // G1 exact on the grid
+  // The extremum's handle at the whole step nearest the line leaves a curve turning one way.
+  const std::vector<Vec2> seats = handles_near_line(r[1].point, *steps[1], 1.0, r[2].point, *steps[2]);
+  ASSERT_FALSE(seats.empty());
+  const Cubic curve{r[1].point, seats.front(), *r[2].in_handle, r[2].point};
+  EXPECT_EQ(curvature_shape(curve, 0.0).sign_changes, 0);
+}
+
 }  // namespace
 }  // namespace gf
