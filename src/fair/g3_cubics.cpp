@@ -502,6 +502,12 @@ std::optional<RunProblem> problem_for(const std::vector<OutlineNode>& nodes, con
 
 }  // namespace
 
+int g3_node_budget(std::size_t cubics, std::size_t nodes, std::size_t source_nodes, double share, double most_share) {
+  const double by_share = std::floor(share * static_cast<double>(cubics) + 0.5);
+  const double room = std::floor(most_share * static_cast<double>(source_nodes)) - static_cast<double>(nodes);
+  return static_cast<int>(std::max(0.0, std::min(by_share, room)));
+}
+
 G3CubicReport make_cubics_g3(std::vector<OutlineNode>& nodes, bool closed, std::span<const double> allowance_by_cubic,
                              const G3CubicSettings& settings) {
   G3CubicReport report;

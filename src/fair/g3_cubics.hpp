@@ -10,6 +10,7 @@
 // stayed within.
 #pragma once
 
+#include <cstddef>
 #include <span>
 #include <vector>
 
@@ -36,6 +37,12 @@ struct G3CubicReport {
     return *this;
   }
 };
+
+/// How many nodes a contour of `cubics` cubics and `nodes` nodes may gain by cuts: `share` of its
+/// cubics, rounded to the nearest, but never past `most_share` times its source's
+/// `source_nodes` (the fairing issue's bar, which the G3 output keeps too); none where the
+/// contour is there already.
+int g3_node_budget(std::size_t cubics, std::size_t nodes, std::size_t source_nodes, double share, double most_share);
 
 /// Makes the smooth runs of `nodes` as G3 as each allows. `allowance_by_cubic[i]`: how far
 /// (units) the cubic from node i may move; missing entries allow nothing.

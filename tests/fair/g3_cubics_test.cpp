@@ -95,6 +95,17 @@ Frame ellipse(double a, double b, double theta) {
   return {{a * std::cos(theta), b * std::sin(theta)}, d / speed, a * b / (speed * speed * speed)};
 }
 
+TEST(G3Cubics, TheNodeBudgetKeepsTheFairingBar) {
+  // 12 % of the cubics, rounded to the nearest: 25 cubics give 3.
+  EXPECT_EQ(g3_node_budget(25, 25, 100, 0.12, 1.3), 3);
+  // Held within 1.3 times the source's nodes: a contour of 20 nodes from a source of 16 may
+  // reach 20 (floor 20.8), and no more.
+  EXPECT_EQ(g3_node_budget(20, 20, 16, 0.12, 1.3), 0);
+  EXPECT_EQ(g3_node_budget(30, 19, 16, 0.12, 1.3), 1);
+  // Past the bar already: none (never a negative budget).
+  EXPECT_EQ(g3_node_budget(30, 30, 16, 0.12, 1.3), 0);
+}
+
 TEST(G3Cubics, ACircleInFourCubicsTakesTheHandlesWhoseEndsHaveNoSlope) {
   const double r = 500.0, k = 0.5523;
   std::vector<Cubic> quarters;
