@@ -32,9 +32,10 @@ namespace gf {
 /// far handle cannot give it κ = 0 at the join (|κ| within a twentieth of
 /// `limits.flat_curvature`: what the line leaves of the tolerance, at least a unit) and more
 /// again where the curve would gain an H/V extremum, or where its far node's direction runs
-/// along the line off it (no handle seats it: the curve is an S); no line turns by more than 0.1 rad or
-/// what its nearest grid points turn it, and a line horizontal or vertical on the grid keeps
-/// its y or x (a baseline, a cap height, a stem's side); the run's least total wins. A slid
+/// along the line off it (no handle seats it: the curve is an S); no line turns by more than
+/// 0.1 rad or what its nearest grid points turn it, and a line horizontal or vertical on the
+/// grid keeps its y or x (a baseline, a cap height, a stem's side); the run's least total
+/// wins. A slid
 /// end stays within what the line has left of the tolerance (`limits.allowance_at`) of it,
 /// both ways where it slid back past its handle. Ends slide where a handle on a line of long
 /// step strays (moves by more than a quarter of its length and its curve's allowance) or
