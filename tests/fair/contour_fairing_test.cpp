@@ -89,7 +89,7 @@ void expect_faired(const std::string& font, const std::string& glyph, FairProfil
     EXPECT_LE(brute_force_hausdorff(a, b), 1.01 * settings.tolerance_units) << glyph << " contour " << i;
     EXPECT_EQ(signed_area(a) > 0, signed_area(b) > 0) << glyph << " contour " << i;
     for (std::size_t k = 0; k < b.segments.size(); ++k) {
-      for_each_point(b.segments[k], [&](Vec2 p) { EXPECT_TRUE(p.x == std::round(p.x) && p.y == std::round(p.y)); });
+      for_each_point(b.segments[k], [&](Vec2 p) { EXPECT_TRUE(test::on_grid(p)); });
       EXPECT_LT(absolute_turning(b.segments[k]), std::numbers::pi) << glyph << " contour " << i << " segment " << k;
       const Segment& before = b.segments[(k + b.segments.size() - 1) % b.segments.size()];
       const Segment& after = b.segments[k];
@@ -196,7 +196,7 @@ TEST(ContourFairing, RoundingThatStraysIsDoneAgainOnLessAllowance) {
   EXPECT_LE(brute_force_hausdorff(chi, r.contour), 1.01 * settings.tolerance_units);
   EXPECT_EQ(signed_area(r.contour) > 0.0, signed_area(chi) > 0.0);
   for (const Segment& s : r.contour.segments)
-    for_each_point(s, [&](Vec2 p) { EXPECT_TRUE(p.x == std::round(p.x) && p.y == std::round(p.y)); });
+    for_each_point(s, [&](Vec2 p) { EXPECT_TRUE(test::on_grid(p)); });
 }
 
 TEST(ContourFairing, AKinkWhoseFilletTakesAWholeLineIsFilleted) {

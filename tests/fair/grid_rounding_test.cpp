@@ -17,9 +17,8 @@
 namespace gf {
 namespace {
 
-bool on_grid(Vec2 p) { return p.x == std::round(p.x) && p.y == std::round(p.y); }
-
 using test::node;
+using test::on_grid;
 
 TEST(GridRounding, PrimitiveStepsDivideByTheCommonDivisor) {
   // DejaVu's s spine: (63, −14) = 7·(9, −2).

@@ -16,6 +16,7 @@
 #include "geom/curvature.hpp"
 #include "geom/g2_hermite.hpp"
 #include "point_set_distance.hpp"
+#include "test_shapes.hpp"
 
 namespace gf {
 namespace {
@@ -383,7 +384,7 @@ TEST(HandleSteps, ACornerAfterALineLeavesThatLinesCurveToItsOwnJoin) {
   EXPECT_EQ(cross(r[2].point - r[1].point, r[1].point - *r[1].in_handle), 0.0);  // G1 at the line join
   for (const OutlineNode& node : r)
     for (const std::optional<Vec2> p : {std::optional(node.point), node.in_handle, node.out_handle})
-      if (p) EXPECT_TRUE(p->x == std::round(p->x) && p->y == std::round(p->y));
+      EXPECT_TRUE(!p || test::on_grid(*p));
 }
 
 }  // namespace

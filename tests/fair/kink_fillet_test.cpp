@@ -28,7 +28,7 @@ std::vector<std::size_t> fillets_checked(const Contour& out) {
   std::vector<std::size_t> fillets;
   for (std::size_t i = 0; i < out.segments.size(); ++i) {
     const Segment& s = out.segments[i];
-    for_each_point(s, [](Vec2 p) { EXPECT_TRUE(p.x == std::round(p.x) && p.y == std::round(p.y)); });
+    for_each_point(s, [](Vec2 p) { EXPECT_TRUE(test::on_grid(p)); });
     const Segment& next = out.segments[(i + 1) % out.segments.size()];
     const double turn = degrees(*end_tangent(s, SegmentEnd::end), *end_tangent(next, SegmentEnd::start));
     EXPECT_TRUE(turn == 0.0 || turn >= 3.0) << "join " << i << " turns " << turn << "°";

@@ -36,7 +36,7 @@ TEST(LineRounding, ACurveLeavingALongDiagonalLineKeepsItsHandleLength) {
   const Vec2 line = nodes[1].point - nodes[0].point, handle = *nodes[1].out_handle - nodes[1].point;
   ASSERT_TRUE(r[1].out_handle && steps[1]);
   const Vec2 h = *r[1].out_handle;
-  EXPECT_TRUE(h.x == std::round(h.x) && h.y == std::round(h.y));
+  EXPECT_TRUE(test::on_grid(h));
   EXPECT_EQ(cross(r[1].point - r[0].point, h - r[1].point), 0.0);  // G1 exact on the grid
   EXPECT_EQ(cross(*steps[1], h - r[1].point), 0.0);
   EXPECT_LT(norm(*steps[1]), 40.0);
