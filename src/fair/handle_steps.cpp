@@ -13,6 +13,7 @@
 #include "fair/cubic_change.hpp"
 #include "geom/curvature.hpp"
 #include "geom/join.hpp"
+#include "geom/polyline_distance.hpp"
 
 namespace gf {
 
@@ -26,6 +27,7 @@ constexpr double turn = 0.1;          // radians a node may turn on the grid (th
 // from where the passes found it. a–z A–Z rounded, g2-jumps at 1, 1.5, 2 and 3: Lato 7, 6, 6,
 // 8; Carlito 14, 13, 12, 12; TeX Gyre Pagella 82, 78, 78, 78; Noto Serif 13, 12, 12, 12.
 constexpr double slide_reach = 2.0;
+constexpr int slide_samples = 24;      // points per cubic where a node's slide is measured
 constexpr double target_jump = 0.03;  // below the check's 5 %, with room for its sampling
 constexpr double checked_jump = 0.05;  // the check's g2-jump (HandleStepLimits::counted_jump_cost)
 constexpr double wrong_way = 1e4;     // an inflection or extremum the unrounded cubic lacks
@@ -265,7 +267,7 @@ class CubicJudge {
       : unrounded_(rounded.size()), allowed_(rounded.size(), 0.0), ideal_(rounded.size()), seen_(rounded.size()),
         inflection_handles_(limits.inflection_handles), node_turns_(limits.node_turns), slope_jump_weight_(limits.slope_jump_weight),
         counted_jump_cost_(limits.counted_jump_cost), band_(limits.band), band_pieces_(rounded.size()),
-        keeps_corner_(rounded.size(), false), closed_(joins.closed) {
+        keeps_corner_(rounded.size(), false), closed_(joins.closed), along_outline_(rounded.size()) {
     for (std::size_t i = 0; i < rounded.size(); ++i) band_pieces_[i] = limits.band_piece(i);
     for (std::size_t i = 0; i < rounded.size(); ++i) {
       if (!joins.is_cubic(i)) continue;
@@ -274,6 +276,18 @@ class CubicJudge {
       allowed_[i] = std::max(allowance, moved_distance(outline_cubic(rounded, i), unrounded_[i], allowance));
       // κ turns count from 1 % of the outline's largest unrounded |κ|, as the check counts them.
       hysteresis_ = std::max(hysteresis_, 0.01 * curvature_shape(unrounded_[i], 0.0).largest);
+    }
+    // Each cubic's unrounded self with the unrounded cubics it joins smoothly, along the outline.
+    const std::size_t n = rounded.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!joins.is_cubic(i)) continue;
+      std::vector<Vec2>& along = along_outline_[i];
+      const auto add = [&](const Cubic& c) {
+        for (int t = along.empty() ? 0 : 1; t <= slide_samples; ++t) along.push_back(c.point_at(double(t) / slide_samples));
+      };
+      if (joins.joins_cubics(i)) add(unrounded_[(i + n - 1) % n]);
+      add(unrounded_[i]);
+      if (joins.joins_cubics((i + 1) % n)) add(unrounded_[(i + 1) % n]);
     }
     for (std::size_t i = 0; i < rounded.size(); ++i)
       if (joins.is_cubic(i)) ideal_[i] = measure(i, unrounded_[i]);
@@ -326,9 +340,34 @@ class CubicJudge {
   }
 
  private:
+  // How far `c`, in the place of cubic i, lies from the unrounded outline where its node slid
+  // along it: its points from the unrounded cubic and those it joins smoothly, and the points of
+  // those between where c's ends lie nearest from c. A node moved along its own tangent shortens
+  // one cubic and lengthens the other; each measured against its unrounded self alone, the
+  // shortened one "moves" by the whole slide, its end no longer reaching the old node. Past
+  // `within`, only that it is past.
+  double slid_distance(std::size_t i, const Cubic& c, double within) const {
+    const std::vector<Vec2>& along = along_outline_[i];
+    std::array<Vec2, slide_samples + 1> pc;
+    for (int t = 0; t <= slide_samples; ++t) pc[t] = c.point_at(double(t) / slide_samples);
+    const double there = directed_hausdorff(pc, along, within);
+    if (there > within) return there;
+    const auto nearest = [&](Vec2 p) {
+      std::size_t best = 0;
+      for (std::size_t k = 1; k < along.size(); ++k)
+        if (distance(along[k], p) < distance(along[best], p)) best = k;
+      return best;
+    };
+    const std::size_t a = nearest(c.p[0]), b = nearest(c.p[3]);
+    if (a >= b) return std::numeric_limits<double>::infinity();
+    const std::span<const Vec2> covered(along.data() + a, b - a + 1);
+    return std::max(there, directed_hausdorff(covered, pc, within));
+  }
+
   CubicTraits measure(std::size_t i, const Cubic& c) const {
     const EndCurvature start = end_curvature(c, SegmentEnd::start), end = end_curvature(c, SegmentEnd::end);
-    const double moved = moved_distance(c, unrounded_[i], allowed_[i]);
+    double moved = moved_distance(c, unrounded_[i], allowed_[i]);
+    if (moved > allowed_[i]) moved = std::min(moved, slid_distance(i, c, allowed_[i]));
     return {start.curvature.value_or(0.0),
             end.curvature.value_or(0.0),
             start.curvature_derivative.value_or(0.0),
@@ -352,6 +391,7 @@ class CubicJudge {
   std::vector<std::size_t> band_pieces_;  ///< the band's piece for each cubic
   std::vector<bool> keeps_corner_;
   bool closed_;
+  std::vector<std::vector<Vec2>> along_outline_;  ///< slid_distance's unrounded outline about each cubic
 };
 
 // One cubic of the outline and every choice of its two handles (state = out·ins + in).
@@ -1224,7 +1264,12 @@ bool polish_jumping_run(std::vector<OutlineNode>& nodes, const std::vector<Outli
       // Under G3, two units: dκ/ds at a cubic's end moves by tens of per cent a unit, and the
       // places a unit off left DejaVu Sans's median jump at 0.076 (0.049 with two, for 2.3 times
       // the time of a–z A–Z).
-      for (const Vec2 p : node_places(kept.point, ideal[i].point, judge.match_slopes() ? 2 : 1)) {
+      std::vector<Vec2> places = node_places(kept.point, ideal[i].point, judge.match_slopes() ? 2 : 1);
+      // Along its own direction by a step longer than a unit: both handles' tips can stay, and
+      // with them a far handle seated on a line (TeX Gyre Heros's S).
+      if (d == kept_step && std::max(std::abs(d.x), std::abs(d.y)) > 1.0)
+        for (const double sign : {-1.0, 1.0}) places.push_back(kept.point + d * sign);
+      for (const Vec2 p : places) {
         if (p == kept.point && d == kept_step) continue;
         if (only_on_line && !lands_on_line(p, d, *line_join == next, nodes[*line_join].point, *steps[*line_join])) continue;
         nodes[i].point = p;

@@ -632,6 +632,19 @@ TEST(ContourFairing, ACurveSlidesDownItsDiagonalLineUntilItLeavesItFlat) {
   EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm), 0);
 }
 
+TEST(ContourFairing, ANodeSlidesAlongItsTangentWhereItsNeighboursMeasureItAlongTheOutline) {
+  // Lato's K (the arm's curl, κ·UPM 55 against 32 at a node) and s (its upper terminal's curve
+  // left its line with κ·UPM 0.14): the matching handles need a node one step along its own
+  // tangent, its handles' tips kept. Each cubic measured against its unrounded self alone, the
+  // one shortened by the slide "moved" the whole step (its end no longer reaches the old node)
+  // and the slide was refused; measured along the unrounded outline beside it, it moves little.
+  for (const char* name : {"K", "s"}) {
+    FairedGlyph f;
+    expect_faired(test::lato, name, FairProfile::text, &f);
+    EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm), 0) << name;
+  }
+}
+
 // A smooth node a unit off a nearly straight stroke, its tangent a degree off the axis: rounded
 // along the axis, the cubic from the stroke has to come back to it and turns into an S (Inter's
 // b and p: one inflection the source lacks; its g: κ −31 per em against +0.25 there). The
