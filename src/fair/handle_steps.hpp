@@ -137,9 +137,11 @@ std::vector<Vec2> handles_for_curvature(Vec2 node, Vec2 step, bool out, Vec2 far
 /// curvature its far handle's offset gives shrinks; and chooses the steps again around
 /// what moved, at most sixteen passes; then, `limits.polish_rounds` times over each run that
 /// still jumps (or, with `limits.node_turns`, turns κ where the unrounded run does not), moves
-/// each node at or beside a jump (or turning so) with the handles around it chosen again.
-/// `ideal` is the outline before rounding; no cubic moves farther from it than the limits
-/// allow (as a curve: a handle slid along its tangent moves the curve little), none gains an
+/// each node at or beside a jump (or turning so), or a step along its own direction, with the
+/// handles around it chosen again. `ideal` is the outline before rounding; no cubic moves
+/// farther from it than the limits allow (as a curve: a handle slid along its tangent moves the
+/// curve little; and along the outline: a node slid along its tangent moves its cubics little),
+/// none gains an
 /// inflection, an H/V extremum (or carries one from within half a unit of its node farther
 /// off), a handle reaching far past its chord (overreach_length: of several, the least reach)
 /// or, shorter than 16 units, a loop or cusp (cubic_turning), and curvature variation inside a
