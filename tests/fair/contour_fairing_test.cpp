@@ -375,6 +375,13 @@ int g2_jumps(const Outline& faired, double upm) {
   return jumps;
 }
 
+// A text glyph faired within every check (expect_faired), with no g2-jump left.
+void expect_faired_g2(const std::string& font, const std::string& glyph) {
+  FairedGlyph f;
+  expect_faired(font, glyph, FairProfile::text, &f);
+  EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm), 0) << glyph;
+}
+
 bool has_fraction(const Outline& o) {
   bool any = false;
   for (const Contour& c : o.contours)
@@ -411,9 +418,7 @@ TEST(ContourFairing, ACurveMeetsARoundedLineWithZeroCurvature) {
   // left the upper curve's far handle 2.85 units off the line, farther than rounding may move
   // it: κ·UPM 2.3 where the curve meets the line. An unseated far handle now costs as much as
   // the farthest a line's end may move, and the line takes (13, −4), its curves sliding along.
-  FairedGlyph f;
-  expect_faired(test::dejavu_serif, "s", FairProfile::text, &f);
-  EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm), 0);
+  expect_faired_g2(test::dejavu_serif, "s");
 }
 
 TEST(ContourFairing, RoundingMovesACubicAsFarAsTheSourceAllows) {
@@ -537,9 +542,7 @@ TEST(ContourFairing, ACornersCurveSeatsOnItsLine) {
   // moved the cubic 1.81 units against an allowance of 1.71, so it stayed 0.07 units off the
   // line: κ·UPM −0.059 where the curve meets it, over the check's 0.05. The corner is tried
   // at the grid points around it too (two units over, the handle on the line), still a corner.
-  FairedGlyph f;
-  expect_faired(test::dejavu_serif, "R", FairProfile::text, &f);
-  EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm), 0);
+  expect_faired_g2(test::dejavu_serif, "R");
 }
 
 TEST(ContourFairing, ACurveSeatsOnItsLineFromTwoUnitsOff) {
@@ -562,9 +565,7 @@ TEST(ContourFairing, ACornerAtALineStaysACornerOnTheGrid) {
   // and faired again, the curve could leave the line with κ·UPM 3.4 at best on the grid. A
   // corner at a line that turned 4° or more keeps the kink limit (3°) through rounding, and
   // expect_faired checks that every corner does.
-  FairedGlyph f;
-  expect_faired(test::lato, "S", FairProfile::text, &f);
-  EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm), 0);
+  expect_faired_g2(test::lato, "S");
 }
 
 // The turn at each join of `c` (radians), with where it is; π where a side has no direction.
@@ -627,9 +628,7 @@ TEST(ContourFairing, ACurveSlidesDownItsDiagonalLineUntilItLeavesItFlat) {
   // lengthens that handle; three steps from where the passes found the join its curvature is
   // under the check's 0.05, but the slide was held within the cubic's chord of there (61
   // units): one step.
-  FairedGlyph f;
-  expect_faired(test::lato, "M", FairProfile::text, &f);
-  EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm), 0);
+  expect_faired_g2(test::lato, "M");
 }
 
 TEST(ContourFairing, ANodeSlidesAlongItsTangentWhereItsNeighboursMeasureItAlongTheOutline) {
@@ -639,9 +638,7 @@ TEST(ContourFairing, ANodeSlidesAlongItsTangentWhereItsNeighboursMeasureItAlongT
   // one shortened by the slide "moved" the whole step (its end no longer reaches the old node)
   // and the slide was refused; measured along the unrounded outline beside it, it moves little.
   for (const char* name : {"K", "s"}) {
-    FairedGlyph f;
-    expect_faired(test::lato, name, FairProfile::text, &f);
-    EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm), 0) << name;
+    expect_faired_g2(test::lato, name);
   }
 }
 
