@@ -392,11 +392,13 @@ void make_drawable(LacChain& chain, const ChainSpan& span, const RunReference& r
           at_start || at_end ? kept_corner_angle(at_start ? *start_corner : *end_corner, at_start, chain.tangent_angles[p],
                                                  g.chord - (at_start ? g.at_end : g.at_start))
                              : std::nullopt;
-      LacChain turned = chain;
-      if (kept) turned.tangent_angles[p] = *kept;
-      if (kept && build_chain_segment(turned, i).ok()) {
-        chain = std::move(turned);
-        continue;
+      if (kept) {
+        LacChain turned = chain;  // copied only where a turn is to be tried
+        turned.tangent_angles[p] = *kept;
+        if (build_chain_segment(turned, i).ok()) {
+          chain = std::move(turned);
+          continue;
+        }
       }
     }
     const double wanted = chain.alphas[i];
