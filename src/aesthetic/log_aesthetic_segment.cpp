@@ -91,6 +91,10 @@ std::optional<LacPoint> LogAestheticSegment::near_inflection_end(double before) 
 }
 
 LacPoint LogAestheticSegment::at(double sigma) const {
+  // The ends by σ itself: σ/scale at σ = length() can fall a last bit short of the standard
+  // end, and a bit short of an inflection end κ is far from 0 (α = −23: (10⁻¹⁶)^{1/23} ≈ 0.2).
+  if (sigma <= 0.0) return start();
+  if (sigma >= length()) return end();
   const double total = standard_end_length();
   const double s = std::clamp(reversed_ ? total - sigma / scale() : sigma / scale(), 0.0, total);
   if (s == 0.0) return standard_start();

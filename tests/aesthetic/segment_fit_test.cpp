@@ -225,6 +225,31 @@ TEST(InflectionStart, TheStraightRunOutOfTheInflectionIsDrawn) {
   }
 }
 
+TEST(InflectionStart, AtItsLengthTheSegmentIsAtItsInflectionEndExactly) {
+  // σ/scale at σ = length() can fall a last bit short of the standard end, where κ is far
+  // from 0 on a steep segment ((10⁻¹⁶)^{1/4.6} ≈ 3·10⁻⁴ at α = −4.6, κ·UPM 1.25 on Noto
+  // Serif's E). The seed example's α = −4.56 segment, placed at many scales with its
+  // inflection at the end (not reversed), must give exactly its end there.
+  const Vec2 p2{std::sqrt(2.0) + 1.0, 1.0};
+  const double a = 50.0 * std::numbers::pi / 180.0;
+  const SegmentFit fit = fit_inflection_start({0, 0}, {p2.x - p2.y / std::tan(a), 0.0}, p2);
+  ASSERT_TRUE(fit.ok()) << fit.reason;
+  const LogAestheticSegment& seed = *fit.segment;
+  ASSERT_TRUE(seed.reversed());
+  int short_of_it = 0;  // placements where σ/scale at σ = length() is not the standard end
+  for (int k = 0; k < 2000; ++k) {
+    const double scale = 3.0 + 97.0 * std::fmod(k * 0.6180339887498949, 1.0);
+    const LogAestheticSegment s(seed.curve(), seed.turning(), seed.log_end_ratio(), {123.4, -56.7},
+                                std::polar(scale, 0.1 * k), false, false);
+    const LacPoint end = s.end(), at_end = s.at(s.length());
+    if (s.length() / s.scale() != seed.length() / seed.scale()) ++short_of_it;
+    EXPECT_EQ(at_end.curvature, 0.0) << "scale " << scale;
+    EXPECT_EQ(at_end.point, end.point) << "scale " << scale;
+    EXPECT_EQ(s.at(0.0).point, s.start().point) << "scale " << scale;
+  }
+  EXPECT_GT(short_of_it, 0);  // the test reaches the case it is about
+}
+
 TEST(InflectionStart, NeedsTheLongerLegAtTheInflection) {
   EXPECT_FALSE(fit_inflection_start({0, 0}, {1, 0}, {1.5, 2}).ok());  // |P0P1| < |P1P2|
 }
