@@ -47,12 +47,18 @@ struct EndPlace {
 class Slide {
  public:
   /// `curve`: the exact cubic, starting at the join; `line_end`: the line's other end;
-  /// `off_limit`: what the line has left of the tolerance.
-  Slide(const Cubic& curve, Vec2 line_end, double off_limit) : curve_(curve), off_limit_(off_limit) {
+  /// `line_step`: the length of the line's primitive step on the grid; `off_limit`: what the
+  /// line has left of the tolerance.
+  Slide(const Cubic& curve, Vec2 line_end, double line_step, double off_limit) : curve_(curve), off_limit_(off_limit) {
     const Vec2 tangent = curve.p[1] - curve.p[0];
     into_ = tangent / norm(tangent);
     reach_ = std::min(max_slide, 0.5 * norm(tangent));
-    back_reach_ = std::max(reach_, std::min(max_back_slide, 0.5 * distance(line_end, curve.p[0])));
+    // Back far enough for the curve's handle to take one whole step of the line with its tip
+    // where it was, where the line has room for two (Gentium Plus's M: a 1110-unit leg of step
+    // (1, −111) and a 4-unit curve at its foot); a line of one step is no guide.
+    const double half_line = 0.5 * distance(line_end, curve.p[0]);
+    const double back = line_step + reach_ <= half_line ? std::max(max_back_slide, line_step + reach_) : max_back_slide;
+    back_reach_ = std::max(reach_, std::min(back, half_line));
     path_.push_back(line_end);
     for (int k = 0; k <= curve_samples; ++k) path_.push_back(curve.point_at(static_cast<double>(k) / curve_samples));
   }
@@ -243,6 +249,11 @@ class LinePlacer {
     // must leave one of two parallel tangents for the other, an S (Caladea's z: a curve from
     // its extremum down into a line 2.1° off the level that would stand level 3 units under it).
     const bool parallel_off = steps_[k] && cross(*steps_[k], d) == 0.0 && cross(d, rounded_[k].point - end) != 0.0;
+    // A handle on the line reaching past the curve's far node along their chord folds the curve
+    // back into it, whatever the far handle (Gentium Plus's M: one step of a (1, −111) leg, 2
+    // units past a 91-unit curve's end, an S at its foot).
+    const Vec2 chord = rounded_[k].point - end;
+    const bool overshoots = dot(near - end, chord) > dot(chord, chord);
     if (steps_[k]) {
       candidates = handles_near_line(rounded_[k].point, *steps_[k], out ? 1.0 : -1.0, end, d);
     } else if (const double m = whole_steps(end, *wanted, d, 1.0); m != 0.0) {
@@ -253,7 +264,7 @@ class LinePlacer {
       const Cubic c = curve(h);
       const double kappa = node_curvature(c, out ? SegmentEnd::end : SegmentEnd::start);
       const double cost = (std::abs(kappa) <= 0.05 * limits_.flat_curvature ? 0.3 * distance(h, *wanted) : unseated) +
-                          (parallel_off || inner_axis_extrema(c) > extrema ? fold : 0.0);
+                          (parallel_off || overshoots || inner_axis_extrema(c) > extrema ? fold : 0.0);
       best = std::min(best, cost);
     }
     return best;
@@ -407,7 +418,10 @@ class RunPlacement {
     const Cubic c = arrives ? outline_cubic(exact_, (l.i + n - 1) % n) : outline_cubic(exact_, l.j);
     const Cubic from_join = arrives ? c.reversed() : c;
     if (norm(from_join.p[1] - from_join.p[0]) == 0.0) return std::nullopt;
-    return Slide(from_join, exact_[arrives ? l.j : l.i].point, std::min(off_line, limits_.allowance_at(l.i)));
+    const std::optional<Vec2> step =
+        primitive_step(nearest_grid_point(exact_[l.j].point) - nearest_grid_point(exact_[l.i].point));
+    return Slide(from_join, exact_[arrives ? l.j : l.i].point, step ? norm(*step) : 0.0,
+                 std::min(off_line, limits_.allowance_at(l.i)));
   }
 
   const std::vector<OutlineNode>& exact_;

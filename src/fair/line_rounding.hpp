@@ -12,8 +12,9 @@
 // units earlier or later along the line, its handle's tip kept, barely moves it) to where the
 // line's step is short. A curve too short for even one step of its line (Because We Build's v:
 // 2.4 units from a 2° line to the bowl's foot, where every grid direction near 2° steps 17 units
-// or more) slides back along the line, up to half of it, and takes over that stretch: the curve
-// then has room for the step instead of folding back on itself.
+// or more) slides back along the line, up to half of it and 96 units or, on a line of two steps
+// or more, one step, and takes over that stretch: the curve then has room for the step instead
+// of folding back on itself.
 #pragma once
 
 #include <optional>
@@ -31,8 +32,9 @@ namespace gf {
 /// fiftieth of the slide) and a tenth of a unit per unit of step, and more where the curve's
 /// far handle cannot give it κ = 0 at the join (|κ| within a twentieth of
 /// `limits.flat_curvature`: what the line leaves of the tolerance, at least a unit) and more
-/// again where the curve would gain an H/V extremum, or where its far node's direction runs
-/// along the line off it (no handle seats it: the curve is an S); no line turns by more than
+/// again where the curve would gain an H/V extremum, where its far node's direction runs
+/// along the line off it (no handle seats it: the curve is an S), or where its handle on the
+/// line reaches past its far node (it folds back into it); no line turns by more than
 /// 0.1 rad or what its nearest grid points turn it, and a line horizontal or vertical on the
 /// grid keeps its y or x (a baseline, a cap height, a stem's side); the run's least total
 /// wins. A slid

@@ -127,5 +127,34 @@ TEST(LineRounding, ALineStandsLevelOnlyWhereItsCurveCanMeetItWithoutAnS) {
   EXPECT_EQ(curvature_shape(curve, 0.0).sign_changes, 0);
 }
 
+TEST(LineRounding, AHandleOnALineOfLongStepStopsShortOfItsCurvesEnd) {
+  // Gentium Plus's M: its right leg, 1,110 units of step (1, −111), meets a 4-unit curve at its
+  // foot. Any handle on the line is a whole step long: from the foot, 111 units past the curve;
+  // slid back a step less a few units, 6 units past its end, and the curve folds into an S there
+  // (κ·UPM 88, −179, −488 in the font). The join slides back far enough for a step to end
+  // short of the curve's end.
+  const std::vector<OutlineNode> nodes{
+      node(Vec2{1415.0, 1214.0}, std::nullopt, std::nullopt, false),
+      node(Vec2{1425.0, 104.0}, std::nullopt, Vec2{1425.0 + 0.43 / 111.0, 104.0 - 0.43}),  // along the line
+      node(Vec2{1425.87, 100.35}, Vec2{1425.02, 102.05}, Vec2{1426.46, 99.16}),
+      node(Vec2{1430.73, 93.59}, Vec2{1428.51, 95.80}, std::nullopt, false),
+  };
+  std::vector<OutlineNode> r = nearest_grid_points(nodes);
+  for (OutlineNode& n : r) {
+    if (n.in_handle) n.in_handle = nearest_grid_point(*n.in_handle);
+    if (n.out_handle) n.out_handle = nearest_grid_point(*n.out_handle);
+  }
+  std::vector<std::optional<Vec2>> steps(nodes.size());
+  steps[2] = Vec2{1.0, -2.0};
+  HandleStepLimits limits;
+  limits.allowance = 1.0;
+  place_lines_on_grid(nodes, r, steps, false, limits);
+  ASSERT_TRUE(steps[1] && r[1].out_handle);
+  const Vec2 join = r[1].point, h = *r[1].out_handle, chord = r[2].point - join;
+  EXPECT_EQ(cross(r[1].point - r[0].point, h - join), 0.0);  // G1 exact on the grid
+  EXPECT_LE(dot(h - join, chord), dot(chord, chord)) << "handle " << h.x << ", " << h.y;
+  EXPECT_LE(distance(r[0].point, nodes[0].point), 2.0);
+}
+
 }  // namespace
 }  // namespace gf
