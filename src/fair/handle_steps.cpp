@@ -267,7 +267,8 @@ class CubicJudge {
       : unrounded_(rounded.size()), allowed_(rounded.size(), 0.0), ideal_(rounded.size()), seen_(rounded.size()),
         inflection_handles_(limits.inflection_handles), node_turns_(limits.node_turns), slope_jump_weight_(limits.slope_jump_weight),
         counted_jump_cost_(limits.counted_jump_cost), band_(limits.band), band_pieces_(rounded.size()),
-        keeps_corner_(rounded.size(), false), closed_(joins.closed), along_outline_(rounded.size()) {
+        keeps_corner_(rounded.size(), false), closed_(joins.closed), joins_before_(rounded.size(), false),
+        along_outline_(rounded.size()) {
     for (std::size_t i = 0; i < rounded.size(); ++i) band_pieces_[i] = limits.band_piece(i);
     for (std::size_t i = 0; i < rounded.size(); ++i) {
       if (!joins.is_cubic(i)) continue;
@@ -277,18 +278,7 @@ class CubicJudge {
       // κ turns count from 1 % of the outline's largest unrounded |κ|, as the check counts them.
       hysteresis_ = std::max(hysteresis_, 0.01 * curvature_shape(unrounded_[i], 0.0).largest);
     }
-    // Each cubic's unrounded self with the unrounded cubics it joins smoothly, along the outline.
-    const std::size_t n = rounded.size();
-    for (std::size_t i = 0; i < n; ++i) {
-      if (!joins.is_cubic(i)) continue;
-      std::vector<Vec2>& along = along_outline_[i];
-      const auto add = [&](const Cubic& c) {
-        for (int t = along.empty() ? 0 : 1; t <= slide_samples; ++t) along.push_back(c.point_at(double(t) / slide_samples));
-      };
-      if (joins.joins_cubics(i)) add(unrounded_[(i + n - 1) % n]);
-      add(unrounded_[i]);
-      if (joins.joins_cubics((i + 1) % n)) add(unrounded_[(i + 1) % n]);
-    }
+    for (std::size_t i = 0; i < rounded.size(); ++i) joins_before_[i] = joins.joins_cubics(i);
     for (std::size_t i = 0; i < rounded.size(); ++i)
       if (joins.is_cubic(i)) ideal_[i] = measure(i, unrounded_[i]);
     for (std::size_t k = 0; k < rounded.size(); ++k) keeps_corner_[k] = corner_to_keep(ideal, closed_, k);
@@ -346,8 +336,8 @@ class CubicJudge {
   // one cubic and lengthens the other; each measured against its unrounded self alone, the
   // shortened one "moves" by the whole slide, its end no longer reaching the old node. Past
   // `within`, only that it is past.
-  double slid_distance(std::size_t i, const Cubic& c, double within) const {
-    const std::vector<Vec2>& along = along_outline_[i];
+  double slid_distance(std::size_t i, const Cubic& c, double within) {
+    const std::vector<Vec2>& along = along_outline(i);
     std::array<Vec2, slide_samples + 1> pc;
     for (int t = 0; t <= slide_samples; ++t) pc[t] = c.point_at(double(t) / slide_samples);
     const double there = directed_hausdorff(pc, along, within);
@@ -364,7 +354,22 @@ class CubicJudge {
     return std::max(there, directed_hausdorff(covered, pc, within));
   }
 
-  CubicTraits measure(std::size_t i, const Cubic& c) const {
+  // Cubic i's unrounded self with the unrounded cubics it joins smoothly, along the outline;
+  // built when slid_distance first asks (most cubics stay within their allowance).
+  const std::vector<Vec2>& along_outline(std::size_t i) {
+    std::vector<Vec2>& along = along_outline_[i];
+    if (!along.empty()) return along;
+    const std::size_t n = unrounded_.size();
+    const auto add = [&](const Cubic& c) {
+      for (int t = along.empty() ? 0 : 1; t <= slide_samples; ++t) along.push_back(c.point_at(double(t) / slide_samples));
+    };
+    if (joins_before_[i]) add(unrounded_[(i + n - 1) % n]);
+    add(unrounded_[i]);
+    if (joins_before_[(i + 1) % n]) add(unrounded_[(i + 1) % n]);
+    return along;
+  }
+
+  CubicTraits measure(std::size_t i, const Cubic& c) {
     const EndCurvature start = end_curvature(c, SegmentEnd::start), end = end_curvature(c, SegmentEnd::end);
     double moved = moved_distance(c, unrounded_[i], allowed_[i]);
     if (moved > allowed_[i]) moved = std::min(moved, slid_distance(i, c, allowed_[i]));
@@ -391,7 +396,8 @@ class CubicJudge {
   std::vector<std::size_t> band_pieces_;  ///< the band's piece for each cubic
   std::vector<bool> keeps_corner_;
   bool closed_;
-  std::vector<std::vector<Vec2>> along_outline_;  ///< slid_distance's unrounded outline about each cubic
+  std::vector<bool> joins_before_;                 ///< whether node i joins two cubics smoothly
+  std::vector<std::vector<Vec2>> along_outline_;  ///< along_outline(i), once asked for
 };
 
 // One cubic of the outline and every choice of its two handles (state = out·ins + in).
