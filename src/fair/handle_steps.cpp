@@ -369,6 +369,23 @@ class CubicJudge {
     return along;
   }
 
+  // Whether `c` (its band samples `pc`), in the place of cubic i, keeps within the band around
+  // the source, the source points its unrounded self answered for covered by it or by the
+  // unrounded cubics it joins smoothly (a node slid along the outline hands them over).
+  bool band_holds(std::size_t i, const Cubic& c) {
+    const std::vector<Vec2> pc = band_samples(c);
+    if (band_->holds(band_pieces_[i], pc)) return true;
+    const std::vector<Vec2>& along = along_outline(i);
+    const std::size_t n = unrounded_.size();
+    const std::size_t before = joins_before_[i] ? slide_samples : 0;
+    const std::size_t after = joins_before_[(i + 1) % n] ? slide_samples : 0;
+    if (before == 0 && after == 0) return false;
+    std::vector<Vec2> spliced(along.begin(), along.begin() + static_cast<std::ptrdiff_t>(before));
+    spliced.insert(spliced.end(), pc.begin(), pc.end());
+    spliced.insert(spliced.end(), along.end() - static_cast<std::ptrdiff_t>(after), along.end());
+    return band_->holds_along(band_pieces_[i], pc, spliced);
+  }
+
   CubicTraits measure(std::size_t i, const Cubic& c) {
     const EndCurvature start = end_curvature(c, SegmentEnd::start), end = end_curvature(c, SegmentEnd::end);
     double moved = moved_distance(c, unrounded_[i], allowed_[i]);
@@ -378,7 +395,7 @@ class CubicJudge {
             start.curvature_derivative.value_or(0.0),
             end.curvature_derivative.value_or(0.0),
             moved,
-            moved <= allowed_[i] || (band_ && band_->holds(band_pieces_[i], band_samples(c))),
+            moved <= allowed_[i] || (band_ && band_holds(i, c)),
             curvature_shape(c, hysteresis_),
             inner_axis_extrema_of(c),
             overreach_length(c),

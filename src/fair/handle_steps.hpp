@@ -32,7 +32,9 @@ struct HandleStepLimits {
   /// exactly rather than bounded by the triangle inequality (the unrounded cubic's own distance
   /// from the source plus the move): a far handle seated on its line moves a cubic most where
   /// the unrounded one lies nearest the source. DejaVu Serif's R: the seat moved its leg's
-  /// curve 2.311 units against an allowance of 2.297.
+  /// curve 2.311 units against an allowance of 2.297. The source a shortened cubic leaves at a
+  /// slid node may be covered by the unrounded cubic beside it (ToleranceBand::holds_along:
+  /// Noto Sans's h, a slide the shoulder's G2 needs).
   const ToleranceBand* band = nullptr;
   /// Rounds of moving each node at or beside a jump that the passes leave, with the handles of
   /// the cubics around it chosen again for every place tried: the joins a move of one node

@@ -55,8 +55,12 @@ ToleranceBand::ToleranceBand(std::span<const Vec2> source, std::span<const Neare
 }
 
 bool ToleranceBand::holds(std::size_t piece, std::span<const Vec2> replacement) const {
-  if (replacement.empty() || piece >= stretch_.size() || stretch_[piece].empty()) return false;
-  return directed_hausdorff(answering_[piece], replacement, bound_) <= bound_ &&
+  return holds_along(piece, replacement, replacement);
+}
+
+bool ToleranceBand::holds_along(std::size_t piece, std::span<const Vec2> replacement, std::span<const Vec2> along) const {
+  if (replacement.empty() || along.empty() || piece >= stretch_.size() || stretch_[piece].empty()) return false;
+  return directed_hausdorff(answering_[piece], along, bound_) <= bound_ &&
          directed_hausdorff(replacement, stretch_[piece], bound_) <= bound_;
 }
 

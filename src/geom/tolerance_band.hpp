@@ -34,6 +34,11 @@ class ToleranceBand {
   /// source, so a replacement that holds so holds.
   bool holds(std::size_t piece, std::span<const Vec2> replacement) const;
 
+  /// As holds, but the source points that answer to the piece may lie within `bound` of
+  /// `along` instead: the replacement with the unchanged pieces beside it spliced on, where a
+  /// node slid along the contour hands some of them to its neighbour.
+  bool holds_along(std::size_t piece, std::span<const Vec2> replacement, std::span<const Vec2> along) const;
+
   static constexpr double stretch_pad = 16.0;
 
  private:

@@ -63,6 +63,27 @@ TEST(ToleranceBand, ConcentricArcsHoldWhileTheirGapIsWithinTheBound) {
   EXPECT_FALSE(band.holds(2, arc(100.0, 2 * quarter, 3 * quarter - 0.0873, 200)));
 }
 
+TEST(ToleranceBand, ANeighbourMayCoverWhatAShortenedPieceLeaves) {
+  // A node slid 5° of arc along the circle: the shortened quarter leaves its end's source
+  // points to the next quarter, spliced on as it was.
+  const Pieces source = circle_in_pieces(100.0, 4, 400), faired = circle_in_pieces(100.0, 4, 100);
+  const PolylineGrid faired_grid(faired.points, 8.0);
+  const ToleranceBand band(source.points, nearest_pieces(faired_grid, faired.piece_of, source.points), 2.0);
+  const double quarter = 0.5 * std::numbers::pi, slid = 0.0873;
+  const std::vector<Vec2> shortened = arc(100.0, 2 * quarter, 3 * quarter - slid, 200);
+  std::vector<Vec2> along = shortened;
+  for (const Vec2 p : arc(100.0, 3 * quarter, 4 * quarter, 100)) along.push_back(p);
+  EXPECT_FALSE(band.holds(2, shortened));
+  EXPECT_TRUE(band.holds_along(2, shortened, along));
+  // The piece's own points still answer to the band: 2.01 units out is out, neighbour or not.
+  const std::vector<Vec2> out = arc(102.01, 2 * quarter, 3 * quarter - slid, 200);
+  std::vector<Vec2> out_along = out;
+  for (const Vec2 p : arc(100.0, 3 * quarter, 4 * quarter, 100)) out_along.push_back(p);
+  EXPECT_FALSE(band.holds_along(2, out, out_along));
+  // Without the neighbour, nothing covers the quarter's end.
+  EXPECT_FALSE(band.holds_along(2, shortened, shortened));
+}
+
 // A wobbly closed source, the faired contour a copy within half a unit of it in pieces of ten
 // chords; each piece replaced by itself shifted and bent at random.
 TEST(ToleranceBand, AReplacementThatHoldsKeepsTheWholeContourWithinTheBound) {
