@@ -230,10 +230,11 @@ class SpanWriter {
            std::vector<Piece>& pieces) {
     Fitted f = best_cubic(a, b, start_step, end_step);
     if (f.within(budget_) || depth >= max_depth || distance(path_.at(a).point, path_.at(b).point) < shortest_span_) {
-      if (!f.cubic) {  // no G2 cubic at all: keep G1 with third-chord handles
+      if (!f.cubic) {  // no G2 cubic at all: the nearest to G2, else G1 with third-chord handles
         const LacPoint pa = path_.at(a), pb = path_.at(b);
         const double h = distance(pa.point, pb.point) / 3.0;
-        f.cubic = Cubic{pa.point, pa.point + pa.tangent * h, pb.point - pb.tangent * h, pb.point};
+        f.cubic = nearest_to_g2(pa, pb).value_or(
+            Cubic{pa.point, pa.point + pa.tangent * h, pb.point - pb.tangent * h, pb.point});
         ++out_.g1_fallbacks;
       }
       pieces.push_back({*f.cubic, end_step});
@@ -339,6 +340,28 @@ class SpanWriter {
     for (const Cubic& c : free)
       if (bends_as_a_span(c)) out.push_back(c);
     return out;
+  }
+
+  // Where no cubic meets both ends' curvatures (a short, nearly straight span whose curvature
+  // falls by a quarter while it turns 2°: DejaVu Sans's Q tail, 30 units), the one that meets
+  // one end's and comes nearest the other's, bending one way: one jump, the least, where G1
+  // handles leave two. Of those meeting one end, the other end's handle at the lengths tried
+  // for a corner.
+  std::optional<Cubic> nearest_to_g2(const LacPoint& pa, const LacPoint& pb) const {
+    const HermiteEnd start{pa.point, pa.tangent, pa.curvature}, end{pb.point, pb.tangent, pb.curvature};
+    std::optional<Cubic> best;
+    double least = infeasible;
+    for (const SegmentEnd free : {SegmentEnd::start, SegmentEnd::end}) {
+      const double wanted = free == SegmentEnd::start ? pa.curvature : pb.curvature;
+      for (const double h : corner_handle_lengths(distance(pa.point, pb.point))) {
+        const std::optional<Cubic> c = g2_hermite_cubic_with_free_end(start, end, free, h);
+        if (!c || !bends_as_a_span(*c)) continue;
+        const double got = node_curvature(*c, free);
+        const double miss = std::abs(got - wanted) / std::max({std::abs(got), std::abs(wanted), 1e-300});
+        if (miss < least) least = miss, best = c;
+      }
+    }
+    return best;
   }
 
   struct Cut {

@@ -17,7 +17,9 @@ namespace gf {
 
 struct ChainCubics {
   std::vector<OutlineNode> nodes;  ///< an open chain's first and last nodes carry only their inner handle
-  int g1_fallbacks = 0;            ///< spans where no G2 Hermite cubic existed within the depth limit
+  /// Spans where no G2 Hermite cubic existed within the depth limit: written meeting one end's
+  /// curvature and nearest the other's where a cubic bending one way can, else with G1 handles.
+  int g1_fallbacks = 0;
 };
 
 /// Which ends of an open chain are corners. A corner's curvature binds nothing, so a span from

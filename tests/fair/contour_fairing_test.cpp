@@ -649,6 +649,16 @@ TEST(ContourFairing, ANodeSlidesAlongTheOutlineWhereTheBandAroundTheSourceHoldsI
   expect_faired_g2(test::noto_sans, "h");
 }
 
+TEST(ContourFairing, ASpanWithNoG2CubicMeetsOneEndsCurvature) {
+  // Linux Libertine's g, written as floats: two short, nearly flat spans of its ear had no
+  // cubic meeting both ends' curvatures, and G1 handles left a jump at each end (κ·UPM 1.24
+  // against 1.08, 1.25 against 2.15). The cubic meeting one end's exactly and nearest the
+  // other's leaves none the check counts there.
+  const FairedGlyph f = fair_named(test::linux_libertine, "g", options_for(FairProfile::text, Rounding::none));
+  ASSERT_TRUE(f.result.kept.empty()) << f.result.kept.front();
+  EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm), 0);
+}
+
 // A smooth node a unit off a nearly straight stroke, its tangent a degree off the axis: rounded
 // along the axis, the cubic from the stroke has to come back to it and turns into an S (Inter's
 // b and p: one inflection the source lacks; its g: κ −31 per em against +0.25 there). The
