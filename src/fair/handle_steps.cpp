@@ -369,9 +369,9 @@ class CubicJudge {
     return along;
   }
 
-  // Whether `c` (its band samples `pc`), in the place of cubic i, keeps within the band around
-  // the source, the source points its unrounded self answered for covered by it or by the
-  // unrounded cubics it joins smoothly (a node slid along the outline hands them over).
+  // Whether `c`, in the place of cubic i, keeps within the band around the source, the source
+  // points its unrounded self answered for covered by it or by the unrounded cubics it joins
+  // smoothly, spliced on either side of it (a node slid along the outline hands them over).
   bool band_holds(std::size_t i, const Cubic& c) {
     const std::vector<Vec2> pc = band_samples(c);
     if (band_->holds(band_pieces_[i], pc)) return true;

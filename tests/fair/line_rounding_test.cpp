@@ -20,6 +20,16 @@ std::vector<OutlineNode> nearest_grid_points(std::vector<OutlineNode> nodes) {
   return nodes;
 }
 
+// The nodes and their handles at their nearest grid points, as rounding first puts them.
+std::vector<OutlineNode> all_at_nearest_grid_points(const std::vector<OutlineNode>& nodes) {
+  std::vector<OutlineNode> r = nearest_grid_points(nodes);
+  for (OutlineNode& n : r) {
+    if (n.in_handle) n.in_handle = nearest_grid_point(*n.in_handle);
+    if (n.out_handle) n.out_handle = nearest_grid_point(*n.out_handle);
+  }
+  return r;
+}
+
 TEST(LineRounding, ACurveLeavingALongDiagonalLineKeepsItsHandleLength) {
   // Inter's y: a corner, a 1,877-unit diagonal line, a curve leaving it tangentially with a
   // 49-unit handle. The nearest grid points and their neighbours give the line no primitive
@@ -77,11 +87,7 @@ TEST(LineRounding, ACornerTakesItsCurvesHandleAlong) {
       node(Vec2{138.0, 330.0}, std::nullopt, Vec2{139.18, 337.45}, false),
       node(Vec2{143.0, 352.0}, Vec2{140.85, 344.8}, std::nullopt, false),
   };
-  std::vector<OutlineNode> r = nearest_grid_points(nodes);
-  for (OutlineNode& n : r) {
-    if (n.in_handle) n.in_handle = nearest_grid_point(*n.in_handle);
-    if (n.out_handle) n.out_handle = nearest_grid_point(*n.out_handle);
-  }
+  std::vector<OutlineNode> r = all_at_nearest_grid_points(nodes);
   std::vector<std::optional<Vec2>> steps(nodes.size());
   HandleStepLimits limits;
   limits.allowance = 5.0;
@@ -107,11 +113,7 @@ TEST(LineRounding, ALineStandsLevelOnlyWhereItsCurveCanMeetItWithoutAnS) {
       node(Vec2{40.0, -4.0}, std::nullopt, std::nullopt, false),
       node(Vec2{32.0, 38.0}, std::nullopt, std::nullopt, false),
   };
-  std::vector<OutlineNode> r = nearest_grid_points(nodes);
-  for (OutlineNode& n : r) {
-    if (n.in_handle) n.in_handle = nearest_grid_point(*n.in_handle);
-    if (n.out_handle) n.out_handle = nearest_grid_point(*n.out_handle);
-  }
+  std::vector<OutlineNode> r = all_at_nearest_grid_points(nodes);
   std::vector<std::optional<Vec2>> steps(nodes.size());
   steps[1] = Vec2{-1.0, 0.0};
   HandleStepLimits limits;
@@ -139,11 +141,7 @@ TEST(LineRounding, AHandleOnALineOfLongStepStopsShortOfItsCurvesEnd) {
       node(Vec2{1425.87, 100.35}, Vec2{1425.02, 102.05}, Vec2{1426.46, 99.16}),
       node(Vec2{1430.73, 93.59}, Vec2{1428.51, 95.80}, std::nullopt, false),
   };
-  std::vector<OutlineNode> r = nearest_grid_points(nodes);
-  for (OutlineNode& n : r) {
-    if (n.in_handle) n.in_handle = nearest_grid_point(*n.in_handle);
-    if (n.out_handle) n.out_handle = nearest_grid_point(*n.out_handle);
-  }
+  std::vector<OutlineNode> r = all_at_nearest_grid_points(nodes);
   std::vector<std::optional<Vec2>> steps(nodes.size());
   steps[2] = Vec2{1.0, -2.0};
   HandleStepLimits limits;
