@@ -312,11 +312,19 @@ Attempt fair_with_budgets(const ContourPlan& plan, const FairSettings& settings,
     const bool start_smooth = run.closed || run.start.kind == RunEndKind::line;
     smooth_before[i] = start_smooth || previous_ends_smooth;
     starts[i] = faired_start(faired).point;
-    for (std::size_t k = 0; k < faired.chains.size(); ++k) {
+    // The inflections between chains that the writeback turns onto an axis (flat_inflection_axis).
+    const std::size_t chains = faired.chains.size();
+    std::vector<std::optional<Vec2>> flat_axis(chains);  // at the end of chain k
+    for (std::size_t k = 0; k + 1 < chains || (run.closed && chains > 1 && k < chains); ++k)
+      flat_axis[k] = flat_inflection_axis(faired.chains[k], faired.chains[(k + 1) % chains], budgets.cubic);
+    for (std::size_t k = 0; k < chains; ++k) {
       const FairedChain& chain = faired.chains[k];
       a.mismatch = std::max(a.mismatch, chain.max_mismatch_relative);
-      const ChainEnds ends{k == 0 && !run.closed && run.start.kind == RunEndKind::corner,
-                           k + 1 == faired.chains.size() && !run.closed && run.end.kind == RunEndKind::corner};
+      ChainEnds ends;
+      ends.start_corner = k == 0 && !run.closed && run.start.kind == RunEndKind::corner;
+      ends.end_corner = k + 1 == chains && !run.closed && run.end.kind == RunEndKind::corner;
+      ends.end_axis = flat_axis[k];
+      if (k > 0 || (run.closed && chains > 1)) ends.start_axis = flat_axis[(k + chains - 1) % chains];
       ChainCubics cubics = write_chain_as_cubics(chain, budgets.cubic, settings.flat_curvature, ends,
                                                  settings.rounding == Rounding::integers ? shortest_rounded_span
                                                                                          : shortest_span_units);

@@ -532,7 +532,41 @@ void snap_extremum_to_corner(ChainPath& path, double budget, double flat_curvatu
   nodes.erase(nodes.begin() + static_cast<std::ptrdiff_t>(e));
 }
 
+// The axis extremum of `path` nearest its end `end`, within snap_reach of it.
+std::optional<RequiredNode> extremum_near_end(const ChainPath& path, SegmentEnd end) {
+  const std::vector<RequiredNode> extrema = axis_extrema(path);
+  if (extrema.empty()) return std::nullopt;
+  const RequiredNode e = end == SegmentEnd::start ? extrema.front() : extrema.back();
+  const double from_end = end == SegmentEnd::start ? e.sigma : path.total() - e.sigma;
+  if (from_end > snap_reach || from_end < 0.5) return std::nullopt;  // within half a unit it is the end
+  return e;
+}
+
+// Drops the extremum near an end turned onto an axis; the end takes the axis as its step.
+void turn_end_onto_axis(ChainPath& path, std::vector<RequiredNode>& nodes, SegmentEnd end, Vec2 axis) {
+  const std::optional<RequiredNode> e = extremum_near_end(path, end);
+  path.turn_end(end, axis);
+  (end == SegmentEnd::start ? nodes.front() : nodes.back()).grid_step = axis;
+  if (!e || nodes.size() < 3) return;
+  const auto inner = std::find_if(nodes.begin() + 1, nodes.end() - 1, [&](const RequiredNode& n) { return n.sigma == e->sigma; });
+  if (inner != nodes.end() - 1) nodes.erase(inner);
+}
+
 }  // namespace
+
+std::optional<Vec2> flat_inflection_axis(const FairedChain& before, const FairedChain& after, double budget) {
+  if (before.closed || after.closed) return std::nullopt;
+  const ChainPath b(before), a(after);
+  const std::optional<RequiredNode> e1 = extremum_near_end(b, SegmentEnd::end), e2 = extremum_near_end(a, SegmentEnd::start);
+  if (!e1 || !e2 || !e1->grid_step || e2->grid_step != e1->grid_step) return std::nullopt;
+  // Turning one way onto the axis and back the other: an overshoot across an inflection.
+  const LacPoint p1 = b.at(e1->sigma), p2 = a.at(e2->sigma);
+  if (!(p1.curvature * p2.curvature < 0.0)) return std::nullopt;
+  const Vec2 axis = *e1->grid_step, across{-axis.y, axis.x};
+  if (std::abs(dot(p1.point - p2.point, across)) > budget) return std::nullopt;
+  if (std::abs(turning_angle(b.at(b.total()).tangent, axis)) > snap_turn) return std::nullopt;
+  return axis;
+}
 
 ChainCubics write_chain_as_cubics(const FairedChain& chain, double budget, double flat_curvature, ChainEnds ends,
                                   double shortest_span) {
@@ -559,6 +593,8 @@ ChainCubics write_chain_as_cubics(const FairedChain& chain, double budget, doubl
   if (chain.closed && distinct.size() == 1) distinct.push_back({distinct.front().sigma + 0.5 * total, std::nullopt});
 
   if (!chain.closed) {
+    if (ends.start_axis) turn_end_onto_axis(path, distinct, SegmentEnd::start, *ends.start_axis);
+    if (ends.end_axis) turn_end_onto_axis(path, distinct, SegmentEnd::end, *ends.end_axis);
     snap_extremum_to_corner(path, budget, flat_curvature, shortest_span, ends, distinct, SegmentEnd::start);
     snap_extremum_to_corner(path, budget, flat_curvature, shortest_span, ends, distinct, SegmentEnd::end);
   }

@@ -8,6 +8,7 @@
 // ones whose coarsest node rounding can set finest, span ends included.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "fair/outline_nodes.hpp"
@@ -30,7 +31,19 @@ struct ChainCubics {
 /// extremum is the corner (where that takes no more cubics).
 struct ChainEnds {
   bool start_corner = false, end_corner = false;
+  /// An end at an inflection turned onto this axis (flat_inflection_axis): its tangent along
+  /// it, κ = 0, and the axis extremum next to it dropped.
+  std::optional<Vec2> start_axis, end_axis;
 };
+
+/// Where chain `before` ends and chain `after` starts at an inflection, each turning onto the
+/// same axis within snap_reach of it at points no farther apart across the axis than the
+/// writeback's budget (a tip's turn overshooting the horizontal by a degree before the bowl:
+/// Lato's and Carlito's j, 0.9 and 1.2 units): that axis, along `before`'s travel. Rounding
+/// puts both extrema on one grid line or two and flattens the cubics between, against the
+/// curvature of the turns beside them; turned onto the axis, the inflection is the one
+/// extremum, flat.
+std::optional<Vec2> flat_inflection_axis(const FairedChain& before, const FairedChain& after, double budget_units);
 
 /// A span shorter than this (units) is one cubic, within the budget or not: halves of it would
 /// round onto the same few grid points.

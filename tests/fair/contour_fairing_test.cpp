@@ -649,6 +649,14 @@ TEST(ContourFairing, ANodeSlidesAlongTheOutlineWhereTheBandAroundTheSourceHoldsI
   expect_faired_g2(test::noto_sans, "h");
 }
 
+TEST(ContourFairing, ATailThatOvershootsTheHorizontalIsFlatAtItsInflection) {
+  // Lato's j: the tail's tip turns past the horizontal by a degree before the inflection into
+  // the bowl, so the faired curve had two horizontal extrema 0.9 units apart across it, each a
+  // node; rounded onto one grid line, the cubics between went flat against the turns beside
+  // them (κ·UPM −18.5 against 0). The inflection turned onto the axis is the one extremum.
+  expect_faired_g2(test::lato, "j");
+}
+
 TEST(ContourFairing, ASpanWithNoG2CubicMeetsOneEndsCurvature) {
   // Linux Libertine's g, written as floats: two short, nearly flat spans of its ear had no
   // cubic meeting both ends' curvatures, and G1 handles left a jump at each end (κ·UPM 1.24

@@ -36,7 +36,7 @@ TEST(CubicWriteback, AnExtremumNextToACornerIsTheCorner) {
   ASSERT_TRUE(kept.nodes[1].grid_step);
   EXPECT_EQ(*kept.nodes[1].grid_step, (Vec2{0, 1}));
   // At a corner: the corner's tangent turns onto the vertical and the extremum's node goes.
-  const ChainCubics snapped = write_chain_as_cubics(chain, budget, flat, {.start_corner = true});
+  const ChainCubics snapped = write_chain_as_cubics(chain, budget, flat, {.start_corner = true, .start_axis = {}, .end_axis = {}});
   ASSERT_GE(snapped.nodes.size(), 2u);
   EXPECT_LT(snapped.nodes.size(), kept.nodes.size());
   const OutlineNode& corner = snapped.nodes.front();
@@ -85,7 +85,7 @@ TEST(CubicWriteback, ACornersCurvatureIsFree) {
   chain.segments.push_back(*fit.segment);
   const double budget = 0.3, flat = 5e-4;
   const ChainCubics bound = write_chain_as_cubics(chain, budget, flat);
-  const ChainCubics free = write_chain_as_cubics(chain, budget, flat, {.start_corner = true, .end_corner = true});
+  const ChainCubics free = write_chain_as_cubics(chain, budget, flat, {.start_corner = true, .end_corner = true, .start_axis = {}, .end_axis = {}});
   EXPECT_EQ(bound.nodes.size(), 4u);
   EXPECT_EQ(free.nodes.size(), 3u);
 
@@ -119,7 +119,7 @@ TEST(CubicWriteback, ACurveFromALineToACornerIsOneCubic) {
   chain.zero_curvature_start = true;
   ASSERT_EQ(chain.segments.front().start().curvature, 0.0);
   const double budget = 0.5, flat = 5e-4;
-  const ChainCubics written = write_chain_as_cubics(chain, budget, flat, {.end_corner = true});
+  const ChainCubics written = write_chain_as_cubics(chain, budget, flat, {.end_corner = true, .start_axis = {}, .end_axis = {}});
   ASSERT_EQ(written.nodes.size(), 2u);
   const Cubic c = outline_cubic(written.nodes, 0);
   EXPECT_NEAR(*end_curvature(c, SegmentEnd::start).curvature, 0.0, 1e-12);
