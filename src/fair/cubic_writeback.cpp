@@ -542,14 +542,16 @@ std::optional<RequiredNode> extremum_near_end(const ChainPath& path, SegmentEnd 
   return e;
 }
 
-// Drops the extremum near an end turned onto an axis; the end takes the axis as its step.
+// Turns an end onto an axis, which it takes as its step, and drops the node of the extremum
+// next to it (the one extremum_near_end found: `nodes` are the chain's ends and extrema).
 void turn_end_onto_axis(ChainPath& path, std::vector<RequiredNode>& nodes, SegmentEnd end, Vec2 axis) {
-  const std::optional<RequiredNode> e = extremum_near_end(path, end);
   path.turn_end(end, axis);
-  (end == SegmentEnd::start ? nodes.front() : nodes.back()).grid_step = axis;
-  if (!e || nodes.size() < 3) return;
-  const auto inner = std::find_if(nodes.begin() + 1, nodes.end() - 1, [&](const RequiredNode& n) { return n.sigma == e->sigma; });
-  if (inner != nodes.end() - 1) nodes.erase(inner);
+  const bool start = end == SegmentEnd::start;
+  (start ? nodes.front() : nodes.back()).grid_step = axis;
+  if (nodes.size() < 3) return;
+  const std::size_t next = start ? 1 : nodes.size() - 2;
+  const double from_end = start ? nodes[next].sigma : path.total() - nodes[next].sigma;
+  if (nodes[next].grid_step == axis && from_end <= snap_reach) nodes.erase(nodes.begin() + static_cast<std::ptrdiff_t>(next));
 }
 
 }  // namespace

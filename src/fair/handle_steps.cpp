@@ -337,7 +337,7 @@ class CubicJudge {
   // shortened one "moves" by the whole slide, its end no longer reaching the old node. Past
   // `within`, only that it is past.
   double slid_distance(std::size_t i, const Cubic& c, double within) {
-    const std::vector<Vec2>& along = along_outline(i);
+    const std::vector<Vec2>& along = along_outline(i).points;
     std::array<Vec2, slide_samples + 1> pc;
     for (int t = 0; t <= slide_samples; ++t) pc[t] = c.point_at(double(t) / slide_samples);
     const double there = directed_hausdorff(pc, along, within);
@@ -354,35 +354,40 @@ class CubicJudge {
     return std::max(there, directed_hausdorff(covered, pc, within));
   }
 
-  // Cubic i's unrounded self with the unrounded cubics it joins smoothly, along the outline;
-  // built when slid_distance first asks (most cubics stay within their allowance).
-  const std::vector<Vec2>& along_outline(std::size_t i) {
-    std::vector<Vec2>& along = along_outline_[i];
-    if (!along.empty()) return along;
+  // Cubic i's unrounded self with the unrounded cubics it joins smoothly, along the outline:
+  // `points`, of which [own_first, own_last] are its own. Built when first asked for (most
+  // cubics stay within their allowance).
+  struct Stretch {
+    std::vector<Vec2> points;
+    std::size_t own_first = 0, own_last = 0;
+  };
+  const Stretch& along_outline(std::size_t i) {
+    Stretch& along = along_outline_[i];
+    if (!along.points.empty()) return along;
     const std::size_t n = unrounded_.size();
     const auto add = [&](const Cubic& c) {
-      for (int t = along.empty() ? 0 : 1; t <= slide_samples; ++t) along.push_back(c.point_at(double(t) / slide_samples));
+      for (int t = along.points.empty() ? 0 : 1; t <= slide_samples; ++t)
+        along.points.push_back(c.point_at(double(t) / slide_samples));
     };
     if (joins_before_[i]) add(unrounded_[(i + n - 1) % n]);
+    along.own_first = along.points.empty() ? 0 : along.points.size() - 1;
     add(unrounded_[i]);
+    along.own_last = along.points.size() - 1;
     if (joins_before_[(i + 1) % n]) add(unrounded_[(i + 1) % n]);
     return along;
   }
 
   // Whether `c`, in the place of cubic i, keeps within the band around the source, the source
   // points its unrounded self answered for covered by it or by the unrounded cubics it joins
-  // smoothly, spliced on either side of it (a node slid along the outline hands them over).
+  // smoothly, spliced on either side of it in place of its unrounded self (a node slid along
+  // the outline hands them over; what c itself covers, the splice covers too).
   bool band_holds(std::size_t i, const Cubic& c) {
     const std::vector<Vec2> pc = band_samples(c);
-    if (band_->holds(band_pieces_[i], pc)) return true;
-    const std::vector<Vec2>& along = along_outline(i);
-    const std::size_t n = unrounded_.size();
-    const std::size_t before = joins_before_[i] ? slide_samples : 0;
-    const std::size_t after = joins_before_[(i + 1) % n] ? slide_samples : 0;
-    if (before == 0 && after == 0) return false;
-    std::vector<Vec2> spliced(along.begin(), along.begin() + static_cast<std::ptrdiff_t>(before));
+    const Stretch& along = along_outline(i);
+    if (along.own_first == 0 && along.own_last + 1 == along.points.size()) return band_->holds(band_pieces_[i], pc);
+    std::vector<Vec2> spliced(along.points.begin(), along.points.begin() + static_cast<std::ptrdiff_t>(along.own_first));
     spliced.insert(spliced.end(), pc.begin(), pc.end());
-    spliced.insert(spliced.end(), along.end() - static_cast<std::ptrdiff_t>(after), along.end());
+    spliced.insert(spliced.end(), along.points.begin() + static_cast<std::ptrdiff_t>(along.own_last + 1), along.points.end());
     return band_->holds_along(band_pieces_[i], pc, spliced);
   }
 
@@ -414,7 +419,7 @@ class CubicJudge {
   std::vector<bool> keeps_corner_;
   bool closed_;
   std::vector<bool> joins_before_;                 ///< whether node i joins two cubics smoothly
-  std::vector<std::vector<Vec2>> along_outline_;  ///< along_outline(i), once asked for
+  std::vector<Stretch> along_outline_;             ///< along_outline(i), once asked for
 };
 
 // One cubic of the outline and every choice of its two handles (state = out·ins + in).
