@@ -91,11 +91,13 @@ CurvatureShape curvature_shape(const Cubic& c, double hysteresis) {
     shape.largest = std::max(shape.largest, std::abs(kappa));
     previous = kappa;
     if (std::abs(kappa) < 1e-12) continue;
+    if (shape.first_sign == 0) shape.first_sign = kappa > 0.0 ? 1 : -1;
     shape.sign_changes += last_signed * kappa < 0.0;
     last_signed = kappa;
   }
   shape.turns = whole.turns;
-  if (shape.sign_changes == 0 && last_signed != 0.0) shape.bend = last_signed > 0.0 ? 1 : -1;
+  if (last_signed != 0.0) shape.last_sign = last_signed > 0.0 ? 1 : -1;
+  if (shape.sign_changes == 0) shape.bend = shape.last_sign;
   return shape;
 }
 

@@ -67,6 +67,9 @@ struct CurvatureShape {
   int sign_changes = 0;
   /// +1 or −1 where κ keeps that sign throughout (zeros aside), else 0.
   int bend = 0;
+  /// The sign of κ nearest each end (zeros aside; 0 where κ is 0 throughout): where an
+  /// inflection at a node may have moved across it (fair/inflection_count.hpp).
+  int first_sign = 0, last_sign = 0;
   double variation = 0.0, largest = 0.0;
   int turns = 0;
   /// κ over the first half (t = 0, 1/32, …, 1/2) and the counter's state after the second

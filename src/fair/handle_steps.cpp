@@ -11,6 +11,7 @@
 
 #include "fair/contour_plan.hpp"
 #include "fair/cubic_change.hpp"
+#include "fair/inflection_count.hpp"
 #include "geom/curvature.hpp"
 #include "geom/join.hpp"
 #include "geom/polyline_distance.hpp"
@@ -31,6 +32,7 @@ constexpr int slide_samples = 24;      // points per cubic where a node's slide 
 constexpr double target_jump = 0.03;  // below the check's 5 %, with room for its sampling
 constexpr double checked_jump = 0.05;  // the check's g2-jump (HandleStepLimits::counted_jump_cost)
 constexpr double wrong_way = 1e4;     // an inflection or extremum the unrounded cubic lacks
+constexpr double moved_inflection_cost = 1.0;  // an inflection moved off its node, in seat_flat_nodes
 constexpr double infeasible = std::numeric_limits<double>::infinity();
 constexpr double kink_limit = radians(kink_limit_deg);  // fair/contour_plan.hpp's
 // Curvature variation a rounded cubic adds inside, relative to its unrounded largest |κ|: free
@@ -320,6 +322,18 @@ class CubicJudge {
                            before.shape.turns > ideal_[h].shape.turns || after.shape.turns > ideal_[i].shape.turns);
   }
   const CubicTraits& unrounded(std::size_t i) const { return ideal_[i]; }
+  /// The inflections `t`, in the place of cubic i, adds inside itself; a flip at an end whose
+  /// node joins another cubic is that node's (fair/inflection_count.hpp).
+  int inflections_added(std::size_t i, const CubicTraits& t) const {
+    const std::size_t n = ideal_.size();
+    return inflections_added_within(t.shape, ideal_[i].shape, inflects_at(i), inflects_at((i + 1) % n));
+  }
+  /// What happens to an inflection at the node where cubic h (as `before`) meets cubic i (as
+  /// `after`): the inflections added there (inflections_at).
+  NodeInflections inflections_at_node(std::size_t h, const CubicTraits& before, std::size_t i,
+                                      const CubicTraits& after) const {
+    return inflections_at(before.shape, ideal_[h].shape, after.shape, ideal_[i].shape);
+  }
 
   /// The traits of `c` in the place of cubic i.
   const CubicTraits& traits(std::size_t i, const Cubic& c) {
@@ -419,6 +433,12 @@ class CubicJudge {
   std::vector<bool> keeps_corner_;
   bool closed_;
   std::vector<bool> joins_before_;                 ///< whether node i joins two cubics smoothly
+  // Whether node i joins two cubics whose unrounded κ changes sign across it: an inflection
+  // that may move across it.
+  bool inflects_at(std::size_t i) const {
+    const std::size_t n = ideal_.size();
+    return joins_before_[i] && inflection_between(ideal_[(i + n - 1) % n].shape, ideal_[i].shape);
+  }
   std::vector<Stretch> along_outline_;             ///< along_outline(i), once asked for
 };
 
@@ -476,7 +496,7 @@ CubicChoices cubic_choices(const std::vector<OutlineNode>& nodes, std::span<cons
         if (line_after) cost += judge.g2_cost(jump(t.k_end, 0.0, flat));
         // Where the grid allows only near zero, or a corner's handle moves, the cubic must not
         // bend the other way near its end: an inflection the unrounded cubic does not have.
-        if (t.shape.sign_changes > ideal.shape.sign_changes) cost += wrong_way;
+        if (judge.inflections_added(i, t) > 0) cost += wrong_way;
         // Nor turn horizontal or vertical inside: an extremum without a node.
         if (t.extrema.all > ideal.extrema.all) cost += wrong_way;
         // Nor carry one that sat within half a unit of its node farther off it.
@@ -541,10 +561,12 @@ std::vector<std::size_t> cheapest_first(std::span<const double> costs) {
 }
 
 // What the join between state s of cubic a and state t of the cubic b after it costs: its jump
-// of κ and, where asked, of dκ/ds (not the turns at its node).
+// of κ and, where asked, of dκ/ds (not the turns at its node), and an inflection either side's
+// end adds there.
 double join_cost(const CubicJudge& judge, const CubicChoices& a, std::size_t s, const CubicChoices& b, std::size_t t,
                  double flat) {
-  return judge.g2_cost(jump(a.k_end[s], b.k_start[t], flat)) + judge.slope_cost(*a.traits[s], *b.traits[t]);
+  return judge.g2_cost(jump(a.k_end[s], b.k_start[t], flat)) + judge.slope_cost(*a.traits[s], *b.traits[t]) +
+         wrong_way * judge.inflections_at_node(a.start, *a.traits[s], b.start, *b.traits[t]).added;
 }
 
 // The cheapest states of a run of cubics joined at smooth nodes; `first`, for a run that
@@ -648,7 +670,7 @@ class NodeChange {
       if (joins.is_cubic(k)) cubics_.push_back(k);
     for (const std::size_t k : cubics_) {
       const CubicTraits &a = judge.unrounded(k), &b = judge.traits(k, outline_cubic(nodes, k));
-      most_.push_back({std::max(a.shape.sign_changes, b.shape.sign_changes), std::max(a.extrema.all, b.extrema.all),
+      most_.push_back({judge.inflections_added(k, b), std::max(a.extrema.all, b.extrema.all),
                        std::max(a.overreach, b.overreach), std::max(a.turning, b.turning)});
     }
     // The cubics beyond the neighbours stay as they are: their curvature there, once.
@@ -668,7 +690,7 @@ class NodeChange {
   /// extremum or curvature variation its unrounded self lacks, as the cubic choice weighs them
   /// (a nearly straight cubic whose rounded ends leave its chord outside their tangents can
   /// only be an S).
-  double bend_cost() const { return wrong_way * inflections_added() + shapes_cost(); }
+  double bend_cost() const { return inflections_cost() + shapes_cost(); }
   /// Both.
   double cost() const { return jump_costs() + bend_cost(); }
   /// cost() where it is under `best` and the outline as it stands is an allowed change: the
@@ -683,7 +705,7 @@ class NodeChange {
   /// Whether either cubic bends the wrong way, or any of those jumps is over the target.
   bool needs_change() const {
     const std::array<double, 3> j = jumps_now();
-    return inflections_added() > 0 ||
+    return inflections_cost() >= wrong_way ||
            std::any_of(j.begin(), j.end(), [](double x) { return jump_cost(x) > target_jump * target_jump; });
   }
 
@@ -694,18 +716,26 @@ class NodeChange {
       const std::size_t k = cubics_[side];
       const CubicTraits& t = judge_.traits(k, outline_cubic(nodes_, k));
       const Most& most = most_[side];
-      if (!t.within || t.shape.sign_changes > most.sign_changes || t.extrema.all > most.extrema ||
+      if (!t.within || judge_.inflections_added(k, t) > most.inflections || t.extrema.all > most.extrema ||
           t.overreach > most.overreach || t.turning > most.turning + fold_turn)
         return false;
     }
     return true;
   }
 
-  int inflections_added() const {
-    int added = 0;
-    for (const std::size_t k : cubics_)
-      added += judge_.traits(k, outline_cubic(nodes_, k)).shape.sign_changes > judge_.unrounded(k).shape.sign_changes;
-    return added;
+  // What the inflections cost as the cubic choice weighs them: those either cubic at i adds
+  // inside, and what happens at node i and its neighbours where they join two cubics.
+  double inflections_cost() const {
+    const std::size_t n = nodes_.size();
+    const auto traits = [&](std::size_t k) -> const CubicTraits& { return judge_.traits(k, outline_cubic(nodes_, k)); };
+    double cost = 0.0;
+    for (const std::size_t k : cubics_) cost += judge_.inflections_added(k, traits(k)) > 0 ? wrong_way : 0.0;
+    for (const std::size_t k : {h_, i_, j_}) {
+      if (!joins_.joins_cubics(k) || (k == j_ && j_ == h_)) continue;
+      const std::size_t before = (k + n - 1) % n;
+      cost += wrong_way * judge_.inflections_at_node(before, traits(before), k, traits(k)).added;
+    }
+    return cost;
   }
 
   // shape_cost of both cubics at i, as the cubic choice weighs them: without the variation, a
@@ -747,7 +777,7 @@ class NodeChange {
   std::vector<std::size_t> cubics_;  ///< the cubics at i: before it (h) and after it, where they are cubics
   // Per cubic at i, the most of each fault its unrounded self or its state before the change has.
   struct Most {
-    int sign_changes, extrema;
+    int inflections, extrema;  ///< inflections: CubicJudge::inflections_added
     double overreach, turning;
   };
   std::vector<Most> most_;
@@ -866,11 +896,17 @@ std::vector<std::size_t> seat_flat_nodes(std::vector<OutlineNode>& nodes, const 
     const std::size_t h = (i + n - 1) % n, j = (i + 1) % n;
     if (!joins.joins_cubics(i) || !steps[i]) continue;
     const std::pair<double, double> rounded = curvatures_at(nodes, i);
-    if (jump(rounded.first, rounded.second, flat) <= target_jump || !flat_node(judge, h, i, rounded, flat)) continue;
+    // An inflection the choices moved off the node (a flip at one side's end, no jump) is
+    // seated too, weighed as a jump just over the target: its places on the grid come before
+    // a hair of the other bend (each is κ = 0 from both sides).
+    const bool moved_off =
+        judge.inflections_at_node(h, judge.traits(h, outline_cubic(nodes, h)), i, judge.traits(i, outline_cubic(nodes, i))).moved;
+    if ((jump(rounded.first, rounded.second, flat) <= target_jump && !moved_off) || !flat_node(judge, h, i, rounded, flat))
+      continue;
     const NodeChange change(nodes, joins, judge, flat, i);
     const OutlineNode kept = nodes[i], kept_h = nodes[h], kept_j = nodes[j];
     const OutlineNode& target = ideal[i];
-    double best_cost = change.cost();
+    double best_cost = change.cost() + (moved_off ? moved_inflection_cost : 0.0);
     std::optional<std::array<OutlineNode, 3>> best;
     std::optional<Vec2> best_step;
     for (const Vec2 d : directions_near(*target.out_handle - *target.in_handle, turn, 16))
@@ -941,8 +977,19 @@ std::vector<std::size_t> seat_line_joins(std::vector<OutlineNode>& nodes, const 
     const NodeChange change(nodes, joins, judge, flat, i);
     const OutlineNode kept = nodes[i];
     const OutlineNode& target = ideal[i];
+    // The far handle of the cubic on i's other side, a step or three either way along its own
+    // node's direction: moved across its tangent, node i changes that cubic's curvature at i as
+    // much as the line join's (Lato's c: its cap's top two units down).
+    const std::size_t far = before ? (i + 1) % nodes.size() : (i + nodes.size() - 1) % nodes.size();
+    std::optional<Vec2>& far_handle = before ? nodes[far].in_handle : nodes[far].out_handle;
+    const Vec2 kept_far = *far_handle;
+    std::vector<Vec2> fars{kept_far};
+    if (steps[far])
+      for (int c = -reach; c <= reach; ++c)
+        if (c != 0 && whole_steps(nodes[far].point, kept_far, *steps[far], before ? -1.0 : 1.0) + c >= 1.0)
+          fars.push_back(kept_far + *steps[far] * (before ? -c : c));
     double best_cost = change.cost();
-    std::optional<OutlineNode> best;
+    std::optional<std::pair<OutlineNode, Vec2>> best;
     std::optional<Vec2> best_step;
     // Sides up to 16: only a step that lands on the line is taken, not one set by curvature.
     for (const Vec2 d : node_directions(*steps[i], target, 16))
@@ -958,10 +1005,15 @@ std::vector<std::size_t> seat_line_joins(std::vector<OutlineNode>& nodes, const 
         for (int b = -reach; b <= reach; ++b) {
           if (m_other + b < 1.0) continue;
           (before ? nodes[i].out_handle : nodes[i].in_handle) = p - d * (sign * (m_other + b));
-          if (const std::optional<double> c = change.cost_under(best_cost)) best_cost = *c, best = nodes[i], best_step = d;
+          for (const Vec2 f : fars) {
+            far_handle = f;
+            if (const std::optional<double> c = change.cost_under(best_cost))
+              best_cost = *c, best = {nodes[i], f}, best_step = d;
+          }
         }
       }
-    nodes[i] = best ? *best : kept;
+    nodes[i] = best ? best->first : kept;
+    far_handle = best ? best->second : kept_far;
     if (!best) continue;
     steps[i] = best_step;
     seated.push_back(i);

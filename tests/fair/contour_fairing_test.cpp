@@ -550,7 +550,10 @@ TEST(ContourFairing, ACurveSeatsOnItsLineFromTwoUnitsOff) {
   // line of step (3, −4), and its far handle lies on that line at whole steps only where the
   // top is at y = 222 or 226, two units off: a unit off, the handle stayed 0.2 units from the
   // line, and κ·UPM 10.7 where the curve meets it. The top of t's stem is alike. The far node
-  // is tried up to two units from its grid point, the band around the source deciding.
+  // is tried up to two units from its grid point, the band around the source deciding, with
+  // the far handle of the cubic before it a step or three either way (moved two units across
+  // that handle's tangent, the top jumped κ·UPM 13 on its other side, when the bowl's
+  // inflection before it had rounded otherwise).
   for (const char* name : {"c", "t"}) {
     const FairedGlyph f = fair_named(test::lato, name, FairOptions{});
     ASSERT_TRUE(f.result.kept.empty()) << name << ": " << f.result.kept.front();
@@ -655,6 +658,25 @@ TEST(ContourFairing, ATailThatOvershootsTheHorizontalIsFlatAtItsInflection) {
   // node; rounded onto one grid line, the cubics between went flat against the turns beside
   // them (κ·UPM −18.5 against 0). The inflection turned onto the axis is the one extremum.
   expect_faired_g2(test::lato, "j");
+}
+
+TEST(ContourFairing, RoundingMayMoveAnInflectionAcrossItsNode) {
+  // Lato's g: the far handle that seats the bowl's flat node at (538, 214) leaves the cubic
+  // before it bending the other way a hair short of the node (κ·UPM −0.019), where the cubic
+  // after bends that way too: the inflection moved across the node, no more of them in the
+  // run. Weighed per cubic, it was an inflection added, and the handle a unit off kept κ·UPM
+  // 0.073 against 0 there.
+  FairedGlyph f;
+  expect_faired(test::lato, "g", FairProfile::text, &f);
+  EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm), 0);
+  EXPECT_LE(inflections(f.result.glyph.outline, f.upm), inflections(f.source.outline, f.upm));
+  // Cantarell's S under G3: the spine's inflection node kept κ·UPM 0.012 against −0.110.
+  FairOptions g3;
+  g3.continuity = Continuity::g3;
+  const FairedGlyph s = fair_named(test::cantarell, "S", g3);
+  ASSERT_TRUE(s.result.kept.empty()) << s.result.kept.front();
+  EXPECT_EQ(g2_jumps(s.result.glyph.outline, s.upm), 0);
+  EXPECT_LE(inflections(s.result.glyph.outline, s.upm), inflections(s.source.outline, s.upm));
 }
 
 TEST(ContourFairing, ASpanWithNoG2CubicMeetsOneEndsCurvature) {
