@@ -899,8 +899,8 @@ std::vector<std::size_t> seat_flat_nodes(std::vector<OutlineNode>& nodes, const 
     // An inflection the choices moved off the node (a flip at one side's end, no jump) is
     // seated too, weighed as a jump just over the target: its places on the grid come before
     // a hair of the other bend (each is κ = 0 from both sides).
-    const bool moved_off =
-        judge.inflections_at_node(h, judge.traits(h, outline_cubic(nodes, h)), i, judge.traits(i, outline_cubic(nodes, i))).moved;
+    const CubicTraits &before = judge.traits(h, outline_cubic(nodes, h)), &after = judge.traits(i, outline_cubic(nodes, i));
+    const bool moved_off = judge.inflections_at_node(h, before, i, after).moved;
     if ((jump(rounded.first, rounded.second, flat) <= target_jump && !moved_off) || !flat_node(judge, h, i, rounded, flat))
       continue;
     const NodeChange change(nodes, joins, judge, flat, i);

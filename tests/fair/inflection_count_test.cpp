@@ -13,6 +13,12 @@ const CurvatureShape right_arch = curvature_shape(Cubic{{0, 0}, {1, 2}, {2, 2}, 
 const CurvatureShape left_then_right = curvature_shape(Cubic{{0, 0}, {1, -1}, {2, 1}, {3, 0}}, 0.0);
 const CurvatureShape right_then_left = curvature_shape(Cubic{{0, 0}, {1, 1}, {2, -1}, {3, 0}}, 0.0);
 
+// What inflections_at found at a node: `added` sign changes, the inflection `moved` off it.
+void expect_node(const NodeInflections& got, int added, bool moved) {
+  EXPECT_EQ(got.added, added);
+  EXPECT_EQ(got.moved, moved);
+}
+
 TEST(CurvatureShape, TheSignsNearestTheEnds) {
   EXPECT_EQ(left_arch.first_sign, 1);
   EXPECT_EQ(left_arch.last_sign, 1);
@@ -32,25 +38,17 @@ TEST(InflectionCount, AnInflectionMovedAcrossItsNodeAddsNone) {
   // across the node.
   ASSERT_TRUE(inflection_between(left_arch, right_arch));
   EXPECT_EQ(inflections_added_within(left_then_right, left_arch, false, true), 0);
-  const NodeInflections before = inflections_at(left_then_right, left_arch, right_arch, right_arch);
-  EXPECT_EQ(before.added, 0);
-  EXPECT_TRUE(before.moved);
+  expect_node(inflections_at(left_then_right, left_arch, right_arch, right_arch), 0, true);
   // The same flip at the start of the cubic after.
   EXPECT_EQ(inflections_added_within(left_then_right, right_arch, true, false), 0);
-  const NodeInflections after = inflections_at(left_arch, left_arch, left_then_right, right_arch);
-  EXPECT_EQ(after.added, 0);
-  EXPECT_TRUE(after.moved);
+  expect_node(inflections_at(left_arch, left_arch, left_then_right, right_arch), 0, true);
   // Neither side flipped: the inflection is where it was.
-  const NodeInflections kept = inflections_at(left_arch, left_arch, right_arch, right_arch);
-  EXPECT_EQ(kept.added, 0);
-  EXPECT_FALSE(kept.moved);
+  expect_node(inflections_at(left_arch, left_arch, right_arch, right_arch), 0, false);
 }
 
 TEST(InflectionCount, BothSidesFlippedAtAnInflectionNodeAddTwo) {
   // + → − inside the first, − → + across the node, + → − inside the second: three against one.
-  const NodeInflections both = inflections_at(left_then_right, left_arch, left_then_right, right_arch);
-  EXPECT_EQ(both.added, 2);
-  EXPECT_FALSE(both.moved);
+  expect_node(inflections_at(left_then_right, left_arch, left_then_right, right_arch), 2, false);
 }
 
 TEST(InflectionCount, AFlipWhereKappaKeptItsSignIsTheCubicsOwn) {
@@ -58,10 +56,8 @@ TEST(InflectionCount, AFlipWhereKappaKeptItsSignIsTheCubicsOwn) {
   // cubic, counted there; the node adds nothing of its own.
   ASSERT_FALSE(inflection_between(left_arch, left_arch));
   EXPECT_EQ(inflections_added_within(left_then_right, left_arch, false, false), 1);
-  const NodeInflections none = inflections_at(left_then_right, left_arch, left_arch, left_arch);
-  EXPECT_EQ(none.added, 0);
-  EXPECT_FALSE(none.moved);
-  // Nor does an end that is not an inflection node lend the flip to it.
+  expect_node(inflections_at(left_then_right, left_arch, left_arch, left_arch), 0, false);
+  // Nor does the other end being an inflection node take the flip over.
   EXPECT_EQ(inflections_added_within(left_then_right, left_arch, true, false), 1);
 }
 
