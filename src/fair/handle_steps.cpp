@@ -328,6 +328,12 @@ class CubicJudge {
     const std::size_t n = ideal_.size();
     return inflections_added_within(t.shape, ideal_[i].shape, inflects_at(i), inflects_at((i + 1) % n));
   }
+  /// Whether node i joins two cubics whose unrounded κ changes sign across it: an inflection
+  /// that may move across it.
+  bool inflects_at(std::size_t i) const {
+    const std::size_t n = ideal_.size();
+    return joins_before_[i] && inflection_between(ideal_[(i + n - 1) % n].shape, ideal_[i].shape);
+  }
   /// What happens to an inflection at the node where cubic h (as `before`) meets cubic i (as
   /// `after`): the inflections added there (inflections_at).
   NodeInflections inflections_at_node(std::size_t h, const CubicTraits& before, std::size_t i,
@@ -433,12 +439,6 @@ class CubicJudge {
   std::vector<bool> keeps_corner_;
   bool closed_;
   std::vector<bool> joins_before_;                 ///< whether node i joins two cubics smoothly
-  // Whether node i joins two cubics whose unrounded κ changes sign across it: an inflection
-  // that may move across it.
-  bool inflects_at(std::size_t i) const {
-    const std::size_t n = ideal_.size();
-    return joins_before_[i] && inflection_between(ideal_[(i + n - 1) % n].shape, ideal_[i].shape);
-  }
   std::vector<Stretch> along_outline_;             ///< along_outline(i), once asked for
 };
 
@@ -675,6 +675,8 @@ class NodeChange {
     }
     // The cubics beyond the neighbours stay as they are: their curvature there, once.
     const std::size_t n = nodes.size();
+    for (const std::size_t k : {h_, i_, j_})
+      if (judge.inflects_at(k) && !(k == j_ && j_ == h_)) inflection_nodes_.push_back(k);
     if (n >= 4) {
       if (joins.joins_cubics(h_)) beyond_h_ = node_curvature(outline_cubic(nodes, (h_ + n - 1) % n), SegmentEnd::end);
       if (joins.joins_cubics(j_)) beyond_j_ = node_curvature(outline_cubic(nodes, j_), SegmentEnd::start);
@@ -724,14 +726,13 @@ class NodeChange {
   }
 
   // What the inflections cost as the cubic choice weighs them: those either cubic at i adds
-  // inside, and what happens at node i and its neighbours where they join two cubics.
+  // inside, and what happens at the inflection nodes among i and its neighbours.
   double inflections_cost() const {
     const std::size_t n = nodes_.size();
     const auto traits = [&](std::size_t k) -> const CubicTraits& { return judge_.traits(k, outline_cubic(nodes_, k)); };
     double cost = 0.0;
     for (const std::size_t k : cubics_) cost += judge_.inflections_added(k, traits(k)) > 0 ? wrong_way : 0.0;
-    for (const std::size_t k : {h_, i_, j_}) {
-      if (!joins_.joins_cubics(k) || (k == j_ && j_ == h_)) continue;
+    for (const std::size_t k : inflection_nodes_) {
       const std::size_t before = (k + n - 1) % n;
       cost += wrong_way * judge_.inflections_at_node(before, traits(before), k, traits(k)).added;
     }
@@ -774,6 +775,7 @@ class NodeChange {
   double flat_;
   std::size_t i_, h_, j_;
   std::optional<double> beyond_h_, beyond_j_;
+  std::vector<std::size_t> inflection_nodes_;  ///< of h, i and j, those CubicJudge::inflects_at
   std::vector<std::size_t> cubics_;  ///< the cubics at i: before it (h) and after it, where they are cubics
   // Per cubic at i, the most of each fault its unrounded self or its state before the change has.
   struct Most {
