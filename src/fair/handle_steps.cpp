@@ -322,8 +322,8 @@ class CubicJudge {
                            before.shape.turns > ideal_[h].shape.turns || after.shape.turns > ideal_[i].shape.turns);
   }
   const CubicTraits& unrounded(std::size_t i) const { return ideal_[i]; }
-  /// The inflections `t`, in the place of cubic i, adds inside itself; a flip at an end whose
-  /// node joins another cubic is that node's (fair/inflection_count.hpp).
+  /// The inflections `t`, in the place of cubic i, adds inside itself; a flip at an end on an
+  /// inflection node (inflects_at) is that node's (fair/inflection_count.hpp).
   int inflections_added(std::size_t i, const CubicTraits& t) const {
     const std::size_t n = ideal_.size();
     return inflections_added_within(t.shape, ideal_[i].shape, inflects_at(i), inflects_at((i + 1) % n));
@@ -901,10 +901,11 @@ std::vector<std::size_t> seat_flat_nodes(std::vector<OutlineNode>& nodes, const 
     // An inflection the choices moved off the node (a flip at one side's end, no jump) is
     // seated too, weighed as a jump just over the target: its places on the grid come before
     // a hair of the other bend (each is κ = 0 from both sides).
-    const CubicTraits &before = judge.traits(h, outline_cubic(nodes, h)), &after = judge.traits(i, outline_cubic(nodes, i));
+    const CubicTraits& before = judge.traits(h, outline_cubic(nodes, h));
+    const CubicTraits& after = judge.traits(i, outline_cubic(nodes, i));
     const bool moved_off = judge.inflections_at_node(h, before, i, after).moved;
-    if ((jump(rounded.first, rounded.second, flat) <= target_jump && !moved_off) || !flat_node(judge, h, i, rounded, flat))
-      continue;
+    const bool jumps = jump(rounded.first, rounded.second, flat) > target_jump;
+    if (!(jumps || moved_off) || !flat_node(judge, h, i, rounded, flat)) continue;
     const NodeChange change(nodes, joins, judge, flat, i);
     const OutlineNode kept = nodes[i], kept_h = nodes[h], kept_j = nodes[j];
     const OutlineNode& target = ideal[i];
