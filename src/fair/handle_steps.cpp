@@ -981,16 +981,13 @@ std::vector<std::size_t> seat_line_joins(std::vector<OutlineNode>& nodes, const 
     const OutlineNode kept = nodes[i];
     const OutlineNode& target = ideal[i];
     // The far handle of the cubic on i's other side, a step or three either way along its own
-    // node's direction: moved across its tangent, node i changes that cubic's curvature at i as
-    // much as the line join's (Lato's c: its cap's top two units down).
+    // node's direction (a corner's stays): moved across its tangent, node i changes that cubic's
+    // curvature at i as much as the line join's (Lato's c: its cap's top two units down).
     const std::size_t far = before ? (i + 1) % nodes.size() : (i + nodes.size() - 1) % nodes.size();
     std::optional<Vec2>& far_handle = before ? nodes[far].in_handle : nodes[far].out_handle;
     const Vec2 kept_far = *far_handle;
-    std::vector<Vec2> fars{kept_far};
-    if (steps[far])
-      for (int c = -reach; c <= reach; ++c)
-        if (c != 0 && whole_steps(nodes[far].point, kept_far, *steps[far], before ? -1.0 : 1.0) + c >= 1.0)
-          fars.push_back(kept_far + *steps[far] * (before ? -c : c));
+    const std::vector<Vec2> fars =
+        steps[far] ? handle_candidates(nodes[far], steps[far], !before) : std::vector<Vec2>{kept_far};
     double best_cost = change.cost();
     std::optional<std::pair<OutlineNode, Vec2>> best;
     std::optional<Vec2> best_step;
