@@ -9,6 +9,7 @@
 #include <numbers>
 #include <utility>
 
+#include "fair/bracket_placements.hpp"
 #include "fair/contour_plan.hpp"
 #include "fair/cubic_change.hpp"
 #include "fair/inflection_count.hpp"
@@ -1370,6 +1371,65 @@ bool polish_jumping_run(std::vector<OutlineNode>& nodes, const std::vector<Outli
   return moved;
 }
 
+// The most placements of a bracket judged (nearest the unrounded bracket first): the Pagella
+// serifs that take one take it among the first few.
+constexpr std::size_t bracket_tries = 48;
+
+// A run of two cubics between two line joins that still jumps once the passes end (a serif's
+// bracket), placed as one piece (fair/bracket_placements.hpp): each line turned about its far
+// corner or slid, the node moved and turned, all handles set together; the cheapest allowed
+// placement stands, where it costs less than the run as it is. `h` is the run's first node
+// (the first join), i its node, j the last join. Returns whether it moved.
+bool place_bracket(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal,
+                   std::vector<std::optional<Vec2>>& steps, const OutlineJoins& joins, std::size_t h, CubicJudge& judge,
+                   double flat) {
+  const std::size_t n = nodes.size(), i = (h + 1) % n, j = (i + 1) % n, before = (h + n - 1) % n, after = (j + 1) % n;
+  if (n < 5 || !steps[h] || !steps[i] || !steps[j]) return false;
+  // A line may turn about a far end that is a corner, where it is not horizontal or vertical;
+  // that corner may go back to its nearest grid point where the line beyond it is horizontal or
+  // vertical and stays so.
+  const auto line = [&](std::size_t join, std::size_t far, std::size_t beyond) {
+    const Vec2 d = ideal[far].point - ideal[join].point;
+    BracketLine l{nodes[far].point, std::nullopt, nodes[join].point, *steps[join], ideal[far].point, ideal[join].point,
+                  !nodes[far].smooth && d.x != 0.0 && d.y != 0.0};
+    const Vec2 nearest = nearest_grid_point(ideal[far].point), other = nodes[beyond].point;
+    const bool beyond_is_line = !(far == before ? joins.is_cubic(beyond) : joins.is_cubic(far));
+    const bool stays_upright = (l.far.x == other.x && nearest.x == other.x) || (l.far.y == other.y && nearest.y == other.y);
+    if (l.may_turn && beyond_is_line && stays_upright && nearest != l.far) l.far_alternative = nearest;
+    return l;
+  };
+  const Bracket bracket{line(h, before, (before + n - 1) % n), line(j, after, (after + 1) % n),
+                        {ideal[h].point, *ideal[h].out_handle, *ideal[i].in_handle, ideal[i].point,
+                         *ideal[i].out_handle, *ideal[j].in_handle, ideal[j].point}};
+  const std::vector<BracketPlacement> placements =
+      bracket_placements(bracket, node_places(nodes[i].point, ideal[i].point, 2), node_directions(*steps[i], ideal[i]),
+                         flat, target_jump, turn, bracket_tries);
+  if (placements.empty()) return false;
+  const NodeChange change(nodes, joins, judge, flat, i);
+  // The far corners turn no less than the kink limit, or than they did.
+  const double least_before = std::min(kink_limit, turn_at(ideal, joins.closed, before));
+  const double least_after = std::min(kink_limit, turn_at(ideal, joins.closed, after));
+  const std::array<OutlineNode, 5> kept{nodes[before], nodes[h], nodes[i], nodes[j], nodes[after]};
+  double best_cost = change.cost();
+  const BracketPlacement* best = nullptr;
+  const auto place = [&](const BracketPlacement& p) {
+    nodes[before].point = p.far1, nodes[after].point = p.far2;
+    nodes[h].point = p.join1, nodes[h].out_handle = p.handle1;
+    nodes[i].point = p.node, nodes[i].in_handle = p.handle2, nodes[i].out_handle = p.handle3;
+    nodes[j].point = p.join2, nodes[j].in_handle = p.handle4;
+  };
+  for (const BracketPlacement& p : placements) {
+    place(p);
+    if (turn_at(nodes, joins.closed, before) < least_before || turn_at(nodes, joins.closed, after) < least_after) continue;
+    if (const std::optional<double> c = change.cost_under(best_cost)) best_cost = *c, best = &p;
+  }
+  nodes[before] = kept[0], nodes[h] = kept[1], nodes[i] = kept[2], nodes[j] = kept[3], nodes[after] = kept[4];
+  if (!best) return false;
+  place(*best);
+  steps[h] = best->step1, steps[i] = best->node_step, steps[j] = best->step2;
+  return true;
+}
+
 }  // namespace
 
 std::vector<Vec2> handles_near_line(Vec2 node, Vec2 step, double sign, Vec2 line_point, Vec2 line_dir) {
@@ -1467,6 +1527,10 @@ void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<Outl
       if (!polish_jumping_run(nodes, ideal, steps, joins, runs[r], cycle, judge, limits.flat_curvature,
                               limits.polish_only_at_jumps))
         break;
+  for (const std::vector<std::size_t>& run : runs)
+    if (!cycle && run.size() == 2 && joins.meets_line(run.front()) && joins.meets_line((run.back() + 1) % n) &&
+        jumps_in(run) > 0)
+      place_bracket(nodes, ideal, steps, joins, run.front(), judge, limits.flat_curvature);
 }
 
 }  // namespace gf

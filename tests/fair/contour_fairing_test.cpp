@@ -679,6 +679,14 @@ TEST(ContourFairing, RoundingMayMoveAnInflectionAcrossItsNode) {
   EXPECT_LE(inflections(s.result.glyph.outline, s.upm), inflections(s.source.outline, s.upm));
 }
 
+TEST(ContourFairing, ABracketBetweenTwoLinesIsPlacedAsOnePiece) {
+  // Noto Serif's A and E: a serif's bracket, two cubics between two lines, whose three joins
+  // the passes left with a jump at one (the A's node κ·UPM 11.9 against 5.0, the E's arm 5.9
+  // against 0 at its line), each node's move weighed against lines placed before them. Placed
+  // as one piece (fair/bracket_placements.hpp), all three meet.
+  for (const char* name : {"A", "E"}) expect_faired_g2(test::noto_serif, name);
+}
+
 TEST(ContourFairing, ASpanWithNoG2CubicMeetsOneEndsCurvature) {
   // Linux Libertine's g, written as floats: two short, nearly flat spans of its ear had no
   // cubic meeting both ends' curvatures, and G1 handles left a jump at each end (κ·UPM 1.24

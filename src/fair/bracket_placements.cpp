@@ -1,0 +1,158 @@
+#include "fair/bracket_placements.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "fair/handle_steps.hpp"
+#include "geom/polyline_distance.hpp"
+
+namespace gf {
+
+namespace {
+
+constexpr double slide = 16.0;    // units a join may lie along its line from the unrounded one
+constexpr double off_line = 0.75;  // units a turned line's join may lie off the unrounded line
+constexpr int exact_samples = 48;  // points per unrounded cubic the spread is measured against
+
+// A join's place on its line and the line's step there, along the contour's direction.
+struct JoinPlace {
+  Vec2 far, join, step;
+};
+
+// Where a join may go: along its line within `slide` of the unrounded join, or, where the line
+// may turn about its far end, at grid points within `off_line` of the unrounded line (the step
+// then from the far end to the join), turning the line by at most `most_turn`. `arrives`: the
+// line arrives at the join (the bracket's first line), else it leaves it. The line keeps half
+// its unrounded length.
+std::vector<JoinPlace> join_places(const BracketLine& line, bool arrives, double most_turn) {
+  const Vec2 exact_dir = arrives ? line.exact_join - line.exact_far : line.exact_far - line.exact_join;
+  const double exact_length = norm(exact_dir);
+  std::vector<JoinPlace> out;
+  if (exact_length == 0.0) return out;
+  const Vec2 e = exact_dir / exact_length;
+  const auto keeps_length = [&](Vec2 p, Vec2 far) { return distance(p, far) >= 0.5 * exact_length; };
+  if (!line.may_turn) {
+    const double unit = norm(line.step);
+    for (int k = -static_cast<int>(slide / unit); k * unit <= slide; ++k) {
+      const Vec2 p = line.join + line.step * static_cast<double>(k);
+      if (std::abs(dot(p - line.exact_join, e)) <= slide && keeps_length(p, line.far))
+        out.push_back({line.far, p, line.step});
+    }
+    return out;
+  }
+  std::vector<Vec2> fars{line.far};
+  if (line.far_alternative) fars.push_back(*line.far_alternative);
+  // Grid points near the unrounded line: along its major axis, the two either side of it.
+  const bool along_x = std::abs(e.x) >= std::abs(e.y);
+  const double major = along_x ? e.x : e.y;
+  const double span = slide * std::abs(major) + 1.0;
+  const double centre = along_x ? line.exact_join.x : line.exact_join.y;
+  for (double u = std::ceil(centre - span); u <= centre + span; ++u) {
+    const double t = (u - centre) / major;  // along the line from the exact join
+    const Vec2 on = line.exact_join + e * t;
+    const double minor = along_x ? on.y : on.x;
+    for (const double v : {std::floor(minor), std::ceil(minor)}) {
+      const Vec2 p = along_x ? Vec2{u, v} : Vec2{v, u};
+      if (std::abs(cross(e, p - line.exact_join)) > off_line || std::abs(dot(p - line.exact_join, e)) > slide) continue;
+      for (const Vec2 far : fars) {
+        const std::optional<Vec2> step = primitive_step(arrives ? p - far : far - p);
+        if (!step || std::abs(turning_angle(e, *step)) > most_turn || !keeps_length(p, far)) continue;
+        if (std::none_of(out.begin(), out.end(), [&](const JoinPlace& q) { return q.join == p && q.far == far; }))
+          out.push_back({far, p, *step});
+      }
+    }
+  }
+  return out;
+}
+
+// One cubic of a bracket from a join on a line to the node, or from the node to a join: its
+// handle on the line a whole number of the line's steps from the join, its far handle (on the
+// node's direction) nearest the line; κ within target·flat of 0 at the join.
+struct SideCubic {
+  std::size_t place;    ///< into the side's join places
+  Vec2 line_handle, node_handle;
+  double node_kappa;    ///< κ at the node
+  double spread;        ///< the farthest of its quarter points from the unrounded bracket
+};
+
+// The cubics of one side for the node at `node` stepping `u`: `first` is the side from the
+// first line's join to the node.
+std::vector<SideCubic> side_cubics(std::span<const JoinPlace> places, bool first, Vec2 node, Vec2 u, double flat,
+                                   double target, std::span<const Vec2> exact) {
+  std::vector<SideCubic> out;
+  for (std::size_t k = 0; k < places.size(); ++k) {
+    const JoinPlace& place = places[k];
+    // Along the line from the join into the bracket.
+    const Vec2 into = first ? place.step : place.step * -1.0;
+    for (const Vec2 far : handles_near_line(node, u, first ? -1.0 : 1.0, place.join, place.step)) {
+      const double far_along = dot(far - place.join, into);
+      for (double a = 1.0; dot(into, into) * a < far_along; ++a) {
+        const Vec2 near = place.join + into * a;
+        const Cubic c = first ? Cubic{place.join, near, far, node} : Cubic{node, far, near, place.join};
+        const SegmentEnd at_join = first ? SegmentEnd::start : SegmentEnd::end;
+        if (std::abs(node_curvature(c, at_join)) > target * flat) continue;
+        const std::array<Vec2, 3> quarters{c.point_at(0.25), c.point_at(0.5), c.point_at(0.75)};
+        out.push_back({k, near, far, node_curvature(c, first ? SegmentEnd::end : SegmentEnd::start),
+                       directed_hausdorff(quarters, exact, std::numeric_limits<double>::infinity())});
+      }
+    }
+  }
+  return out;
+}
+
+// The relative jump between two curvatures, as handle_steps weighs it.
+double relative_jump(double k1, double k2, double flat) {
+  return std::abs(k1 - k2) / std::max({std::abs(k1), std::abs(k2), flat});
+}
+
+// The `most` placements of least spread, in that order.
+void keep_least_spread(std::vector<BracketPlacement>& found, std::size_t most) {
+  const auto less = [](const BracketPlacement& a, const BracketPlacement& b) { return a.spread < b.spread; };
+  if (found.size() > most) {
+    std::nth_element(found.begin(), found.begin() + static_cast<std::ptrdiff_t>(most), found.end(), less);
+    found.resize(most);
+  }
+  std::sort(found.begin(), found.end(), less);
+}
+
+}  // namespace
+
+std::vector<BracketPlacement> bracket_placements(const Bracket& bracket, std::span<const Vec2> node_points,
+                                                 std::span<const Vec2> node_steps, double flat, double target,
+                                                 double most_turn, std::size_t most) {
+  const std::vector<JoinPlace> firsts = join_places(bracket.first, true, most_turn);
+  const std::vector<JoinPlace> lasts = join_places(bracket.last, false, most_turn);
+  std::vector<BracketPlacement> found;
+  if (firsts.empty() || lasts.empty()) return found;
+  // The unrounded bracket with a stretch of each line, which a slid join's cubic takes over.
+  const std::array<Vec2, 7>& x = bracket.exact;
+  std::vector<Vec2> exact{x[0] + (bracket.first.exact_far - x[0]) * std::min(1.0, slide / distance(bracket.first.exact_far, x[0]))};
+  for (const Cubic& c : {Cubic{x[0], x[1], x[2], x[3]}, Cubic{x[3], x[4], x[5], x[6]}})
+    for (int t = 0; t <= exact_samples; ++t) exact.push_back(c.point_at(double(t) / exact_samples));
+  exact.push_back(x[6] + (bracket.last.exact_far - x[6]) * std::min(1.0, slide / distance(bracket.last.exact_far, x[6])));
+
+  for (const Vec2 node : node_points)
+    for (const Vec2 u : node_steps) {
+      const std::vector<SideCubic> ones = side_cubics(firsts, true, node, u, flat, target, exact);
+      if (ones.empty()) continue;
+      std::vector<SideCubic> twos = side_cubics(lasts, false, node, u, flat, target, exact);
+      std::sort(twos.begin(), twos.end(), [](const SideCubic& a, const SideCubic& b) { return a.node_kappa < b.node_kappa; });
+      for (const SideCubic& one : ones) {
+        // Curvatures within `target` of one.node_kappa lie within its magnitude's share either side.
+        const double margin = target * std::max(std::abs(one.node_kappa), flat);
+        auto it = std::lower_bound(twos.begin(), twos.end(), one.node_kappa - margin,
+                                   [](const SideCubic& s, double k) { return s.node_kappa < k; });
+        for (; it != twos.end() && it->node_kappa <= one.node_kappa + margin; ++it) {
+          if (relative_jump(one.node_kappa, it->node_kappa, flat) > target) continue;
+          const JoinPlace &p1 = firsts[one.place], &p2 = lasts[it->place];
+          found.push_back({p1.far, p1.join, p1.step, one.line_handle, one.node_handle, node, u, it->node_handle,
+                           it->line_handle, p2.join, p2.step, p2.far, std::max(one.spread, it->spread)});
+          if (found.size() >= 4 * most) keep_least_spread(found, most);
+        }
+      }
+    }
+  keep_least_spread(found, most);
+  return found;
+}
+
+}  // namespace gf

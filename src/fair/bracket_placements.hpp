@@ -1,0 +1,59 @@
+// A curve between two lines drawn as two cubics (a serif's bracket: line, join, cubic, node,
+// cubic, join, line), placed on the grid as one piece. Its three joins are G2 on the grid only
+// together: κ = 0 where it leaves a line needs its far handle exactly on that line, a whole
+// step of the node's direction that a line of long step (Pagella's serif tops: (16, 1)) seldom
+// offers; the node's curvature must then match across it, set by whole steps of both handles.
+// The passes choosing steps move one node at a time against lines placed before them, and
+// left TeX Gyre Pagella's H serifs with κ·UPM 0.13 at the join although placements exist that
+// meet all three within the tolerance: the line turned a quarter of a degree about its far
+// corner onto a step of (15, 1), its join on a grid point of that line, the node two units off.
+// This lists such placements, nearest the unrounded bracket first; the caller judges them
+// (fair/handle_steps.cpp: within the allowance, no inflection or extremum gained).
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "fair/outline_nodes.hpp"
+
+namespace gf {
+
+/// A line the bracket meets tangentially, along the contour's direction.
+struct BracketLine {
+  Vec2 far;                    ///< its other end, as rounded
+  /// Another place of its other end: where rounding moved that corner off its nearest grid
+  /// point along the line beyond it (Pagella's i: a serif's top corner a unit up its side).
+  std::optional<Vec2> far_alternative;
+  Vec2 join, step;             ///< the join and the line's primitive step, as rounded
+  Vec2 exact_far, exact_join;  ///< the unrounded line
+  /// Whether the line may turn about `far` (a corner there, the line off the axes): its join
+  /// then goes to grid points near the unrounded line, else only slides along the line.
+  bool may_turn = false;
+};
+
+/// The bracket as the passes left it and its unrounded self: `first` arrives at the bracket's
+/// start, `last` leaves its end; `exact` is the unrounded J1, P1, P2, N, Q1, Q2, J2.
+struct Bracket {
+  BracketLine first, last;
+  std::array<Vec2, 7> exact;
+};
+
+/// A placement: joins, handles and node on the grid, G1 exact at all three joins.
+struct BracketPlacement {
+  Vec2 far1, join1, step1, handle1, handle2, node, node_step, handle3, handle4, join2, step2, far2;
+  double spread = 0.0;  ///< the farthest of its cubics' quarter points from the unrounded bracket
+};
+
+/// Placements whose curvature is within `target` (relative, as handle_steps' `jump`, flat under
+/// `flat`) of 0 at both joins and of itself across the node, the node at one of `node_points`
+/// in one of `node_steps` (along the contour's direction), each join within `slide` units
+/// along its line of the unrounded one (`off_line` across it, where the line turns) and
+/// turning its line by at most `most_turn` radians; at most `most`, least spread first.
+std::vector<BracketPlacement> bracket_placements(const Bracket& bracket, std::span<const Vec2> node_points,
+                                                 std::span<const Vec2> node_steps, double flat, double target,
+                                                 double most_turn, std::size_t most);
+
+}  // namespace gf
