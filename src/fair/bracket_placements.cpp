@@ -13,6 +13,10 @@ namespace {
 constexpr double slide = 16.0;    // units a join may lie along its line from the unrounded one
 constexpr double off_line = 0.75;  // units a turned line's join may lie off the unrounded line
 constexpr int exact_samples = 48;  // points per unrounded cubic the spread is measured against
+// Placements kept per cubic of the leading side, those of the other side's cubics nearest the
+// unrounded bracket: else one far cubic and every stem slide that matches it filled the list
+// (Pagella's M: 48 placements, one cubic on the serif's side, none allowed).
+constexpr std::size_t pairings_per_cubic = 3;
 
 // A join's place on its line and the line's step there, along the contour's direction.
 struct JoinPlace {
@@ -72,28 +76,57 @@ struct SideCubic {
   std::size_t place;    ///< into the side's join places
   Vec2 line_handle, node_handle;
   double node_kappa;    ///< κ at the node
-  double spread;        ///< the farthest of its quarter points from the unrounded bracket
+  Cubic cubic;
+  /// The farthest of its quarter points from the unrounded bracket, once asked for (most
+  /// cubics match none of the other side's).
+  mutable std::optional<double> spread;
 };
 
+// A side cubic's spread (SideCubic::spread), or some value past `bound` where it is past.
+double spread_of(const SideCubic& s, std::span<const Vec2> exact, double bound) {
+  if (!s.spread) {
+    const std::array<Vec2, 3> quarters{s.cubic.point_at(0.25), s.cubic.point_at(0.5), s.cubic.point_at(0.75)};
+    const double d = directed_hausdorff(quarters, exact, bound);
+    if (d > bound) return d;  // only that it is past: not kept
+    s.spread = d;
+  }
+  return *s.spread;
+}
+
 // The cubics of one side for the node at `node` stepping `u`: `first` is the side from the
-// first line's join to the node.
+// first line's join to the node. Where `wanted` is given, only those whose κ at the node lies
+// within it: κ there is linear in the near handle's steps (the node and its handle stay:
+// (2/3)·(far − near) × (node − far) / |node − far|³), so two steps find the range.
 std::vector<SideCubic> side_cubics(std::span<const JoinPlace> places, bool first, Vec2 node, Vec2 u, double flat,
-                                   double target, std::span<const Vec2> exact) {
+                                   double target, std::optional<std::pair<double, double>> wanted = std::nullopt) {
   std::vector<SideCubic> out;
+  const SegmentEnd at_join = first ? SegmentEnd::start : SegmentEnd::end;
+  const SegmentEnd at_node = first ? SegmentEnd::end : SegmentEnd::start;
   for (std::size_t k = 0; k < places.size(); ++k) {
     const JoinPlace& place = places[k];
     // Along the line from the join into the bracket.
     const Vec2 into = first ? place.step : place.step * -1.0;
     for (const Vec2 far : handles_near_line(node, u, first ? -1.0 : 1.0, place.join, place.step)) {
-      const double far_along = dot(far - place.join, into);
-      for (double a = 1.0; dot(into, into) * a < far_along; ++a) {
+      const auto cubic = [&](double a) {
         const Vec2 near = place.join + into * a;
-        const Cubic c = first ? Cubic{place.join, near, far, node} : Cubic{node, far, near, place.join};
-        const SegmentEnd at_join = first ? SegmentEnd::start : SegmentEnd::end;
+        return first ? Cubic{place.join, near, far, node} : Cubic{node, far, near, place.join};
+      };
+      // The near handle short of the far one along the line.
+      double lo = 1.0, hi = std::ceil(dot(far - place.join, into) / dot(into, into)) - 1.0;
+      if (wanted) {
+        const double k1 = node_curvature(cubic(1.0), at_node), per_step = node_curvature(cubic(2.0), at_node) - k1;
+        if (per_step == 0.0) {
+          if (k1 < wanted->first || k1 > wanted->second) continue;
+        } else {
+          const double a1 = 1.0 + (wanted->first - k1) / per_step, a2 = 1.0 + (wanted->second - k1) / per_step;
+          lo = std::max(lo, std::ceil(std::min(a1, a2)));
+          hi = std::min(hi, std::floor(std::max(a1, a2)));
+        }
+      }
+      for (double a = lo; a <= hi; ++a) {
+        const Cubic c = cubic(a);
         if (std::abs(node_curvature(c, at_join)) > target * flat) continue;
-        const std::array<Vec2, 3> quarters{c.point_at(0.25), c.point_at(0.5), c.point_at(0.75)};
-        out.push_back({k, near, far, node_curvature(c, first ? SegmentEnd::end : SegmentEnd::start),
-                       directed_hausdorff(quarters, exact, std::numeric_limits<double>::infinity())});
+        out.push_back({k, c.p[first ? 1 : 2], far, node_curvature(c, at_node), c, std::nullopt});
       }
     }
   }
@@ -124,6 +157,7 @@ std::vector<BracketPlacement> bracket_placements(const Bracket& bracket, std::sp
   const std::vector<JoinPlace> lasts = join_places(bracket.last, false, most_turn);
   std::vector<BracketPlacement> found;
   if (firsts.empty() || lasts.empty()) return found;
+  double bound = std::numeric_limits<double>::infinity();
   // The unrounded bracket with a stretch of each line, which a slid join's cubic takes over.
   const std::array<Vec2, 7>& x = bracket.exact;
   std::vector<Vec2> exact{x[0] + (bracket.first.exact_far - x[0]) * std::min(1.0, slide / distance(bracket.first.exact_far, x[0]))};
@@ -131,23 +165,49 @@ std::vector<BracketPlacement> bracket_placements(const Bracket& bracket, std::sp
     for (int t = 0; t <= exact_samples; ++t) exact.push_back(c.point_at(double(t) / exact_samples));
   exact.push_back(x[6] + (bracket.last.exact_far - x[6]) * std::min(1.0, slide / distance(bracket.last.exact_far, x[6])));
 
+  // The side whose line steps longer has fewer cubics: it leads, and the other side's cubics
+  // are found only where their κ at the node can match (a stem's unit steps give hundreds).
+  const bool first_leads = norm(bracket.first.step) >= norm(bracket.last.step);
+  const std::vector<JoinPlace>& lead_places = first_leads ? firsts : lasts;
+  const std::vector<JoinPlace>& follow_places = first_leads ? lasts : firsts;
+  const auto by_kappa = [](const SideCubic& a, const SideCubic& b) { return a.node_kappa < b.node_kappa; };
   for (const Vec2 node : node_points)
     for (const Vec2 u : node_steps) {
-      const std::vector<SideCubic> ones = side_cubics(firsts, true, node, u, flat, target, exact);
-      if (ones.empty()) continue;
-      std::vector<SideCubic> twos = side_cubics(lasts, false, node, u, flat, target, exact);
-      std::sort(twos.begin(), twos.end(), [](const SideCubic& a, const SideCubic& b) { return a.node_kappa < b.node_kappa; });
-      for (const SideCubic& one : ones) {
-        // Curvatures within `target` of one.node_kappa lie within its magnitude's share either side.
-        const double margin = target * std::max(std::abs(one.node_kappa), flat);
-        auto it = std::lower_bound(twos.begin(), twos.end(), one.node_kappa - margin,
+      const std::vector<SideCubic> leads = side_cubics(lead_places, first_leads, node, u, flat, target);
+      if (leads.empty()) continue;
+      const auto [least, most_kappa] = std::minmax_element(leads.begin(), leads.end(), by_kappa);
+      const double margin = target * std::max({std::abs(least->node_kappa), std::abs(most_kappa->node_kappa), flat});
+      std::vector<SideCubic> follows = side_cubics(follow_places, !first_leads, node, u, flat, target,
+                                                   std::pair{least->node_kappa - margin, most_kappa->node_kappa + margin});
+      std::sort(follows.begin(), follows.end(), by_kappa);
+      std::vector<const SideCubic*> matched;
+      for (const SideCubic& lead : leads) {
+        // Curvatures within `target` of lead.node_kappa lie within its magnitude's share either side.
+        const double within = target * std::max(std::abs(lead.node_kappa), flat);
+        auto it = std::lower_bound(follows.begin(), follows.end(), lead.node_kappa - within,
                                    [](const SideCubic& s, double k) { return s.node_kappa < k; });
-        for (; it != twos.end() && it->node_kappa <= one.node_kappa + margin; ++it) {
-          if (relative_jump(one.node_kappa, it->node_kappa, flat) > target) continue;
-          const JoinPlace &p1 = firsts[one.place], &p2 = lasts[it->place];
-          found.push_back({p1.far, p1.join, p1.step, one.line_handle, one.node_handle, node, u, it->node_handle,
-                           it->line_handle, p2.join, p2.step, p2.far, std::max(one.spread, it->spread)});
-          if (found.size() >= 4 * most) keep_least_spread(found, most);
+        matched.clear();
+        for (; it != follows.end() && it->node_kappa <= lead.node_kappa + within; ++it)
+          if (relative_jump(lead.node_kappa, it->node_kappa, flat) <= target) matched.push_back(&*it);
+        if (matched.empty()) continue;
+        const double lead_spread = spread_of(lead, exact, bound);
+        if (lead_spread >= bound) continue;
+        // A few of the other side's cubics each: the placements one cubic dominates differ
+        // in what the other side does at its least spread.
+        std::erase_if(matched, [&](const SideCubic* f) { return spread_of(*f, exact, bound) >= bound; });
+        const std::size_t keep = std::min(matched.size(), pairings_per_cubic);
+        std::partial_sort(matched.begin(), matched.begin() + static_cast<std::ptrdiff_t>(keep), matched.end(),
+                          [](const SideCubic* a, const SideCubic* b) { return *a->spread < *b->spread; });
+        for (std::size_t k = 0; k < keep; ++k) {
+          const SideCubic& one = first_leads ? lead : *matched[k];
+          const SideCubic& two = first_leads ? *matched[k] : lead;
+          const JoinPlace &p1 = firsts[one.place], &p2 = lasts[two.place];
+          found.push_back({p1.far, p1.join, p1.step, one.line_handle, one.node_handle, node, u, two.node_handle,
+                           two.line_handle, p2.join, p2.step, p2.far, std::max(lead_spread, *matched[k]->spread)});
+        }
+        if (found.size() >= 4 * most) {
+          keep_least_spread(found, most);
+          bound = found.back().spread;  // past the farthest of a full list, a placement is not kept
         }
       }
     }
