@@ -18,10 +18,13 @@ constexpr int exact_samples = 48;  // points per unrounded cubic the spread is m
 // (Pagella's M: 48 placements, one cubic on the serif's side, none allowed).
 constexpr std::size_t pairings_per_cubic = 3;
 
-// A join's place on its line and the line's step there, along the contour's direction.
+// A join's place on its line and the line's step there, along the contour's direction; or, at
+// an end that is a node, that node, its direction and the curvature to meet there.
 struct JoinPlace {
   Vec2 far, join, step;
+  std::optional<double> kappa;
 };
+
 
 // Where a join may go: along its line within `slide` of the unrounded join, or, where the line
 // may turn about its far end, at grid points within `off_line` of the unrounded line (the step
@@ -40,7 +43,7 @@ std::vector<JoinPlace> join_places(const BracketLine& line, bool arrives, double
     for (int k = -static_cast<int>(slide / unit); k * unit <= slide; ++k) {
       const Vec2 p = line.join + line.step * static_cast<double>(k);
       if (std::abs(dot(p - line.exact_join, e)) <= slide && keeps_length(p, line.far))
-        out.push_back({line.far, p, line.step});
+        out.push_back({line.far, p, line.step, std::nullopt});
     }
     return out;
   }
@@ -62,19 +65,28 @@ std::vector<JoinPlace> join_places(const BracketLine& line, bool arrives, double
         const std::optional<Vec2> step = primitive_step(arrives ? p - far : far - p);
         if (!step || std::abs(turning_angle(e, *step)) > most_turn || !keeps_length(p, far)) continue;
         if (std::none_of(out.begin(), out.end(), [&](const JoinPlace& q) { return q.join == p && q.far == far; }))
-          out.push_back({far, p, *step});
+          out.push_back({far, p, *step, std::nullopt});
       }
     }
   }
   return out;
 }
 
-// One cubic of a bracket from a join on a line to the node, or from the node to a join: its
-// handle on the line a whole number of the line's steps from the join, its far handle (on the
-// node's direction) nearest the line; κ within target·flat of 0 at the join.
+// The places of a bracket's end: its line's (join_places) or its node.
+std::vector<JoinPlace> end_places(const std::variant<BracketLine, BracketNode>& end, bool arrives, double most_turn) {
+  if (const BracketNode* node = std::get_if<BracketNode>(&end)) return {{node->point, node->point, node->step, node->kappa}};
+  return join_places(std::get<BracketLine>(end), arrives, most_turn);
+}
+
+// The relative jump between two curvatures, as handle_steps weighs it.
+double relative_jump(double k1, double k2, double flat) {
+  return std::abs(k1 - k2) / std::max({std::abs(k1), std::abs(k2), flat});
+}
+
+// One cubic of a bracket from one of its ends to its node, or from the node to an end.
 struct SideCubic {
-  std::size_t place;    ///< into the side's join places
-  Vec2 line_handle, node_handle;
+  std::size_t place;    ///< into the side's end places
+  Vec2 end_handle, node_handle;  ///< the end's handle and the bracket node's
   double node_kappa;    ///< κ at the node
   Cubic cubic;
   /// The farthest of its quarter points from the unrounded bracket, once asked for (most
@@ -93,49 +105,71 @@ double spread_of(const SideCubic& s, std::span<const Vec2> exact, double bound) 
   return *s.spread;
 }
 
-// The cubics of one side for the node at `node` stepping `u`: `first` is the side from the
-// first line's join to the node. Where `wanted` is given, only those whose κ at the node lies
-// within it: κ there is linear in the near handle's steps (the node and its handle stay:
-// (2/3)·(far − near) × (node − far) / |node − far|³), so two steps find the range.
+// The cubics from an end node (place.kappa) to the bracket's node at `node` stepping `u`, or
+// back: the bracket node's handle any whole steps of u short of the end node, the end node's the
+// whole steps of its direction that give it its κ (handles_for_curvature). `first`: the
+// bracket's first side; `wanted`: as side_cubics.
+void node_side_cubics(const JoinPlace& place, std::size_t k, bool first, Vec2 node, Vec2 u, double flat, double target,
+                      std::optional<std::pair<double, double>> wanted, std::vector<SideCubic>& out) {
+  const SegmentEnd at_end = first ? SegmentEnd::start : SegmentEnd::end;
+  const SegmentEnd at_node = first ? SegmentEnd::end : SegmentEnd::start;
+  for (double m = 1.0; m * norm(u) < distance(node, place.join); ++m) {
+    const Vec2 far = node + u * (first ? -m : m);
+    for (const Vec2 near : handles_for_curvature(place.join, place.step, first, far, node, *place.kappa)) {
+      const Cubic c = first ? Cubic{place.join, near, far, node} : Cubic{node, far, near, place.join};
+      const double kappa = node_curvature(c, at_node);
+      if (relative_jump(node_curvature(c, at_end), *place.kappa, flat) > target ||
+          (wanted && (kappa < wanted->first || kappa > wanted->second)))
+        continue;
+      out.push_back({k, near, far, kappa, c, std::nullopt});
+    }
+  }
+}
+
+// The cubics from a join on a line to the bracket's node, or back: the join's handle whole
+// steps of the line's from it, short of the node's handle, which lies the whole steps of u
+// nearest the line (handles_near_line); κ within target·flat of 0 at the join. Where `wanted`
+// is given, only those whose κ at the node lies within it: κ there is linear in the join
+// handle's steps (the node and its handle stay: (2/3)·(far − near) × (node − far) /
+// |node − far|³), so two steps find the range.
+void line_side_cubics(const JoinPlace& place, std::size_t k, bool first, Vec2 node, Vec2 u, double flat, double target,
+                      std::optional<std::pair<double, double>> wanted, std::vector<SideCubic>& out) {
+  const SegmentEnd at_join = first ? SegmentEnd::start : SegmentEnd::end;
+  const SegmentEnd at_node = first ? SegmentEnd::end : SegmentEnd::start;
+  const Vec2 into = first ? place.step : place.step * -1.0;  // along the line into the bracket
+  for (const Vec2 far : handles_near_line(node, u, first ? -1.0 : 1.0, place.join, place.step)) {
+    const auto cubic = [&](double a) {
+      const Vec2 near = place.join + into * a;
+      return first ? Cubic{place.join, near, far, node} : Cubic{node, far, near, place.join};
+    };
+    double lo = 1.0, hi = std::ceil(dot(far - place.join, into) / dot(into, into)) - 1.0;
+    if (wanted) {
+      const double k1 = node_curvature(cubic(1.0), at_node), per_step = node_curvature(cubic(2.0), at_node) - k1;
+      if (per_step == 0.0) {
+        if (k1 < wanted->first || k1 > wanted->second) continue;
+      } else {
+        const double a1 = 1.0 + (wanted->first - k1) / per_step, a2 = 1.0 + (wanted->second - k1) / per_step;
+        lo = std::max(lo, std::ceil(std::min(a1, a2)));
+        hi = std::min(hi, std::floor(std::max(a1, a2)));
+      }
+    }
+    for (double a = lo; a <= hi; ++a) {
+      const Cubic c = cubic(a);
+      if (std::abs(node_curvature(c, at_join)) > target * flat) continue;
+      out.push_back({k, c.p[first ? 1 : 2], far, node_curvature(c, at_node), c, std::nullopt});
+    }
+  }
+}
+
+// The cubics of one side of the bracket for its node at `node` stepping `u`, from each of the
+// side's end places: `first` is the side from the bracket's start. Where `wanted` is given,
+// only those whose κ at the node lies within it.
 std::vector<SideCubic> side_cubics(std::span<const JoinPlace> places, bool first, Vec2 node, Vec2 u, double flat,
                                    double target, std::optional<std::pair<double, double>> wanted = std::nullopt) {
   std::vector<SideCubic> out;
-  const SegmentEnd at_join = first ? SegmentEnd::start : SegmentEnd::end;
-  const SegmentEnd at_node = first ? SegmentEnd::end : SegmentEnd::start;
-  for (std::size_t k = 0; k < places.size(); ++k) {
-    const JoinPlace& place = places[k];
-    // Along the line from the join into the bracket.
-    const Vec2 into = first ? place.step : place.step * -1.0;
-    for (const Vec2 far : handles_near_line(node, u, first ? -1.0 : 1.0, place.join, place.step)) {
-      const auto cubic = [&](double a) {
-        const Vec2 near = place.join + into * a;
-        return first ? Cubic{place.join, near, far, node} : Cubic{node, far, near, place.join};
-      };
-      // The near handle short of the far one along the line.
-      double lo = 1.0, hi = std::ceil(dot(far - place.join, into) / dot(into, into)) - 1.0;
-      if (wanted) {
-        const double k1 = node_curvature(cubic(1.0), at_node), per_step = node_curvature(cubic(2.0), at_node) - k1;
-        if (per_step == 0.0) {
-          if (k1 < wanted->first || k1 > wanted->second) continue;
-        } else {
-          const double a1 = 1.0 + (wanted->first - k1) / per_step, a2 = 1.0 + (wanted->second - k1) / per_step;
-          lo = std::max(lo, std::ceil(std::min(a1, a2)));
-          hi = std::min(hi, std::floor(std::max(a1, a2)));
-        }
-      }
-      for (double a = lo; a <= hi; ++a) {
-        const Cubic c = cubic(a);
-        if (std::abs(node_curvature(c, at_join)) > target * flat) continue;
-        out.push_back({k, c.p[first ? 1 : 2], far, node_curvature(c, at_node), c, std::nullopt});
-      }
-    }
-  }
+  for (std::size_t k = 0; k < places.size(); ++k)
+    (places[k].kappa ? node_side_cubics : line_side_cubics)(places[k], k, first, node, u, flat, target, wanted, out);
   return out;
-}
-
-// The relative jump between two curvatures, as handle_steps weighs it.
-double relative_jump(double k1, double k2, double flat) {
-  return std::abs(k1 - k2) / std::max({std::abs(k1), std::abs(k2), flat});
 }
 
 // The `most` placements of least spread, in that order.
@@ -153,21 +187,30 @@ void keep_least_spread(std::vector<BracketPlacement>& found, std::size_t most) {
 std::vector<BracketPlacement> bracket_placements(const Bracket& bracket, std::span<const Vec2> node_points,
                                                  std::span<const Vec2> node_steps, double flat, double target,
                                                  double most_turn, std::size_t most) {
-  const std::vector<JoinPlace> firsts = join_places(bracket.first, true, most_turn);
-  const std::vector<JoinPlace> lasts = join_places(bracket.last, false, most_turn);
+  const std::vector<JoinPlace> firsts = end_places(bracket.first, true, most_turn);
+  const std::vector<JoinPlace> lasts = end_places(bracket.last, false, most_turn);
   std::vector<BracketPlacement> found;
   if (firsts.empty() || lasts.empty()) return found;
   double bound = std::numeric_limits<double>::infinity();
   // The unrounded bracket with a stretch of each line, which a slid join's cubic takes over.
   const std::array<Vec2, 7>& x = bracket.exact;
-  std::vector<Vec2> exact{x[0] + (bracket.first.exact_far - x[0]) * std::min(1.0, slide / distance(bracket.first.exact_far, x[0]))};
+  const auto line_stretch = [](const std::variant<BracketLine, BracketNode>& end, Vec2 join) {
+    const BracketLine* line = std::get_if<BracketLine>(&end);
+    return line ? join + (line->exact_far - join) * std::min(1.0, slide / distance(line->exact_far, join)) : join;
+  };
+  std::vector<Vec2> exact{line_stretch(bracket.first, x[0])};
   for (const Cubic& c : {Cubic{x[0], x[1], x[2], x[3]}, Cubic{x[3], x[4], x[5], x[6]}})
     for (int t = 0; t <= exact_samples; ++t) exact.push_back(c.point_at(double(t) / exact_samples));
-  exact.push_back(x[6] + (bracket.last.exact_far - x[6]) * std::min(1.0, slide / distance(bracket.last.exact_far, x[6])));
+  exact.push_back(line_stretch(bracket.last, x[6]));
 
-  // The side whose line steps longer has fewer cubics: it leads, and the other side's cubics
-  // are found only where their κ at the node can match (a stem's unit steps give hundreds).
-  const bool first_leads = norm(bracket.first.step) >= norm(bracket.last.step);
+  // The side with fewer cubics leads (an end node's, else the one whose line steps longer),
+  // and the other side's cubics are found only where their κ at the node can match (a stem's
+  // unit steps give hundreds).
+  const auto leading = [](const std::variant<BracketLine, BracketNode>& end) {
+    const BracketLine* line = std::get_if<BracketLine>(&end);
+    return line ? norm(line->step) : std::numeric_limits<double>::infinity();
+  };
+  const bool first_leads = leading(bracket.first) >= leading(bracket.last);
   const std::vector<JoinPlace>& lead_places = first_leads ? firsts : lasts;
   const std::vector<JoinPlace>& follow_places = first_leads ? lasts : firsts;
   const auto by_kappa = [](const SideCubic& a, const SideCubic& b) { return a.node_kappa < b.node_kappa; };
@@ -202,8 +245,8 @@ std::vector<BracketPlacement> bracket_placements(const Bracket& bracket, std::sp
           const SideCubic& one = first_leads ? lead : *matched[k];
           const SideCubic& two = first_leads ? *matched[k] : lead;
           const JoinPlace &p1 = firsts[one.place], &p2 = lasts[two.place];
-          found.push_back({p1.far, p1.join, p1.step, one.line_handle, one.node_handle, node, u, two.node_handle,
-                           two.line_handle, p2.join, p2.step, p2.far, std::max(lead_spread, *matched[k]->spread)});
+          found.push_back({p1.far, p1.join, p1.step, one.end_handle, one.node_handle, node, u, two.node_handle,
+                           two.end_handle, p2.join, p2.step, p2.far, std::max(lead_spread, *matched[k]->spread)});
         }
         if (found.size() >= 4 * most) {
           keep_least_spread(found, most);

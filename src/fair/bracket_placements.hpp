@@ -15,6 +15,7 @@
 #include <cstddef>
 #include <optional>
 #include <span>
+#include <variant>
 #include <vector>
 
 #include "fair/outline_nodes.hpp"
@@ -34,21 +35,30 @@ struct BracketLine {
   bool may_turn = false;
 };
 
+/// A smooth node a bracket ends at instead of a line (the third node of a longer run from a
+/// line): it stays where it is, its handle on the bracket's side takes whole steps of its
+/// direction `step`, and κ there must match `kappa`, the curvature of the cubic beyond it.
+struct BracketNode {
+  Vec2 point, step;
+  double kappa = 0.0;
+};
+
 /// The bracket as the passes left it and its unrounded self: `first` arrives at the bracket's
 /// start, `last` leaves its end; `exact` is the unrounded J1, P1, P2, N, Q1, Q2, J2.
 struct Bracket {
-  BracketLine first, last;
+  std::variant<BracketLine, BracketNode> first, last;
   std::array<Vec2, 7> exact;
 };
 
-/// A placement: joins, handles and node on the grid, G1 exact at all three joins.
+/// A placement: joins, handles and node on the grid, G1 exact at all three joins (at an end
+/// that is a node, its join is that node and its far end too).
 struct BracketPlacement {
   Vec2 far1, join1, step1, handle1, handle2, node, node_step, handle3, handle4, join2, step2, far2;
   double spread = 0.0;  ///< the farthest of its cubics' quarter points from the unrounded bracket
 };
 
 /// Placements whose curvature is within `target` (relative, as handle_steps' `jump`, flat under
-/// `flat`) of 0 at both joins and of itself across the node, the node at one of `node_points`
+/// `flat`) of 0 at both joins (of an end node's `kappa` there) and of itself across the node, the node at one of `node_points`
 /// in one of `node_steps` (along the contour's direction), each join within `slide` units
 /// along its line of the unrounded one (`off_line` across it, where the line turns) and
 /// turning its line by at most `most_turn` radians; at most `most`, least spread first.

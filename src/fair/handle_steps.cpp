@@ -1375,11 +1375,12 @@ bool polish_jumping_run(std::vector<OutlineNode>& nodes, const std::vector<Outli
 // serifs that take one take it among the first few.
 constexpr std::size_t bracket_tries = 48;
 
-// A run of two cubics between two line joins that still jumps once the passes end (a serif's
-// bracket), placed as one piece (fair/bracket_placements.hpp): each line turned about its far
-// corner or slid, the node moved and turned, all handles set together; the cheapest allowed
-// placement stands, where it costs less than the run as it is. `h` is the run's first node
-// (the first join), i its node, j the last join. Returns whether it moved.
+// Two cubics of a run, from node h through node i to node j, of which h or j is a line join,
+// that still jump once the passes end (a serif's bracket; in a longer run, the two next to its
+// line), placed as one piece (fair/bracket_placements.hpp): each line turned about its far
+// corner or slid, an end inside the run kept with κ there to match the cubic beyond, the node
+// moved and turned, all handles set together; the cheapest allowed placement stands, where it
+// costs less than the run as it is. Returns whether it moved.
 bool place_bracket(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal,
                    std::vector<std::optional<Vec2>>& steps, const OutlineJoins& joins, std::size_t h, CubicJudge& judge,
                    double flat) {
@@ -1387,8 +1388,12 @@ bool place_bracket(std::vector<OutlineNode>& nodes, const std::vector<OutlineNod
   if (n < 5 || !steps[h] || !steps[i] || !steps[j]) return false;
   // A line may turn about a far end that is a corner, where it is not horizontal or vertical;
   // that corner may go back to its nearest grid point where the line beyond it is horizontal or
-  // vertical and stays so.
-  const auto line = [&](std::size_t join, std::size_t far, std::size_t beyond) {
+  // vertical and stays so. A node inside the run stays, with the curvature beyond it.
+  const auto end = [&](std::size_t join, std::size_t far, std::size_t beyond) -> std::variant<BracketLine, BracketNode> {
+    if (!joins.meets_line(join)) {
+      const double kappa = far == before ? curvatures_at(nodes, join).first : curvatures_at(nodes, join).second;
+      return BracketNode{nodes[join].point, *steps[join], kappa};
+    }
     const Vec2 d = ideal[far].point - ideal[join].point;
     BracketLine l{nodes[far].point, std::nullopt, nodes[join].point, *steps[join], ideal[far].point, ideal[join].point,
                   !nodes[far].smooth && d.x != 0.0 && d.y != 0.0};
@@ -1398,7 +1403,7 @@ bool place_bracket(std::vector<OutlineNode>& nodes, const std::vector<OutlineNod
     if (l.may_turn && beyond_is_line && stays_upright && nearest != l.far) l.far_alternative = nearest;
     return l;
   };
-  const Bracket bracket{line(h, before, (before + n - 1) % n), line(j, after, (after + 1) % n),
+  const Bracket bracket{end(h, before, (before + n - 1) % n), end(j, after, (after + 1) % n),
                         {ideal[h].point, *ideal[h].out_handle, *ideal[i].in_handle, ideal[i].point,
                          *ideal[i].out_handle, *ideal[j].in_handle, ideal[j].point}};
   const std::vector<BracketPlacement> placements =
@@ -1406,21 +1411,25 @@ bool place_bracket(std::vector<OutlineNode>& nodes, const std::vector<OutlineNod
                          flat, target_jump, turn, bracket_tries);
   if (placements.empty()) return false;
   const NodeChange change(nodes, joins, judge, flat, i);
-  // The far corners turn no less than the kink limit, or than they did.
+  // The far corners of lines turn no less than the kink limit, or than they did.
+  const bool line_before = joins.meets_line(h), line_after = joins.meets_line(j);
   const double least_before = std::min(kink_limit, turn_at(ideal, joins.closed, before));
   const double least_after = std::min(kink_limit, turn_at(ideal, joins.closed, after));
   const std::array<OutlineNode, 5> kept{nodes[before], nodes[h], nodes[i], nodes[j], nodes[after]};
   double best_cost = change.cost();
   const BracketPlacement* best = nullptr;
   const auto place = [&](const BracketPlacement& p) {
-    nodes[before].point = p.far1, nodes[after].point = p.far2;
-    nodes[h].point = p.join1, nodes[h].out_handle = p.handle1;
+    if (line_before) nodes[before].point = p.far1, nodes[h].point = p.join1;
+    if (line_after) nodes[after].point = p.far2, nodes[j].point = p.join2;
+    nodes[h].out_handle = p.handle1;
     nodes[i].point = p.node, nodes[i].in_handle = p.handle2, nodes[i].out_handle = p.handle3;
-    nodes[j].point = p.join2, nodes[j].in_handle = p.handle4;
+    nodes[j].in_handle = p.handle4;
   };
   for (const BracketPlacement& p : placements) {
     place(p);
-    if (turn_at(nodes, joins.closed, before) < least_before || turn_at(nodes, joins.closed, after) < least_after) continue;
+    if ((line_before && turn_at(nodes, joins.closed, before) < least_before) ||
+        (line_after && turn_at(nodes, joins.closed, after) < least_after))
+      continue;
     if (const std::optional<double> c = change.cost_under(best_cost)) best_cost = *c, best = &p;
   }
   nodes[before] = kept[0], nodes[h] = kept[1], nodes[i] = kept[2], nodes[j] = kept[3], nodes[after] = kept[4];
@@ -1527,10 +1536,20 @@ void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<Outl
       if (!polish_jumping_run(nodes, ideal, steps, joins, runs[r], cycle, judge, limits.flat_curvature,
                               limits.polish_only_at_jumps))
         break;
-  for (const std::vector<std::size_t>& run : runs)
-    if (!cycle && run.size() == 2 && joins.meets_line(run.front()) && joins.meets_line((run.back() + 1) % n) &&
-        jumps_in(run) > 0)
-      place_bracket(nodes, ideal, steps, joins, run.front(), judge, limits.flat_curvature);
+  // Brackets: the two cubics next to each line a run meets, where a join of theirs jumps.
+  const auto jumps_at = [&](std::size_t h) {
+    const std::array<std::size_t, 3> at{h, (h + 1) % n, (h + 2) % n};
+    return std::any_of(at.begin(), at.end(), [&](std::size_t k) { return join_jump(joins, k, limits.flat_curvature) > target_jump; });
+  };
+  for (const std::vector<std::size_t>& run : runs) {
+    if (cycle || run.size() < 2) continue;
+    const std::size_t last = (run.back() + 1) % n;
+    const bool from_line = joins.meets_line(run.front()), to_line = joins.meets_line(last);
+    if (run.size() == 2 ? !(from_line && to_line) : !(from_line || to_line)) continue;
+    if (from_line && jumps_at(run.front())) place_bracket(nodes, ideal, steps, joins, run.front(), judge, limits.flat_curvature);
+    if (run.size() > 2 && to_line && jumps_at(run[run.size() - 2]))
+      place_bracket(nodes, ideal, steps, joins, run[run.size() - 2], judge, limits.flat_curvature);
+  }
 }
 
 }  // namespace gf

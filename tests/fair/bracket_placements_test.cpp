@@ -37,8 +37,8 @@ bool whole_steps_of(Vec2 from, Vec2 to, Vec2 step) {
 // 0.13 however the node's handle went.
 Bracket pagella_serif() {
   Bracket b;
-  b.first = {{315, 27}, std::nullopt, {279, 30}, {-12, 1}, {315, 27}, {267, 30}, true};
-  b.last = {{216, 343}, std::nullopt, {216, 120}, {0, 1}, {216, 343}, {216, 120}, false};
+  b.first = BracketLine{{315, 27}, std::nullopt, {279, 30}, {-12, 1}, {315, 27}, {267, 30}, true};
+  b.last = BracketLine{{216, 343}, std::nullopt, {216, 120}, {0, 1}, {216, 343}, {216, 120}, false};
   b.exact = {Vec2{267, 30}, {252.19, 30.93}, {237.6, 31.84}, {229.14, 40.3}, {216, 53.44}, {216, 86.4}, {216, 120}};
   return b;
 }
@@ -61,7 +61,7 @@ TEST(BracketPlacements, MeetG2AtAllThreeJoinsWithG1Exact) {
     const BracketPlacement& p = found[k];
     for (const Vec2 q : {p.join1, p.handle1, p.handle2, p.node, p.handle3, p.handle4, p.join2}) EXPECT_TRUE(on_grid(q));
     // The serif's top turns about its corner onto the join's step; the stem stays upright.
-    EXPECT_EQ(p.far1, bracket.first.far);
+    EXPECT_EQ(p.far1, (Vec2{315, 27}));
     EXPECT_TRUE(whole_steps_of(p.far1, p.join1, p.step1));
     EXPECT_TRUE(whole_steps_of(p.join1, p.handle1, p.step1));
     EXPECT_LE(std::abs(std::atan2(p.step1.y, p.step1.x) - std::atan2(1.0, -16.0)), most_turn);
@@ -87,12 +87,13 @@ TEST(BracketPlacements, MeetG2AtAllThreeJoinsWithG1Exact) {
 
 TEST(BracketPlacements, ALineThatMayNotTurnOnlySlides) {
   Bracket bracket = pagella_serif();
-  bracket.first.may_turn = false;
+  BracketLine& top = std::get<BracketLine>(bracket.first);
+  top.may_turn = false;
   const std::vector<Vec2> steps{{-1, 1}, {-4, 5}, {-5, 4}};
   for (const BracketPlacement& p : bracket_placements(bracket, node_points(), steps, flat, target, most_turn, 48)) {
     EXPECT_EQ(p.step1, (Vec2{-12, 1}));
-    EXPECT_TRUE(p.join1 == bracket.first.join || whole_steps_of(bracket.first.join, p.join1, p.step1) ||
-                whole_steps_of(p.join1, bracket.first.join, p.step1));
+    EXPECT_TRUE(p.join1 == top.join || whole_steps_of(top.join, p.join1, p.step1) ||
+                whole_steps_of(p.join1, top.join, p.step1));
   }
 }
 
@@ -101,8 +102,8 @@ TEST(BracketPlacements, ACornerMayGoBackToItsNearestGridPoint) {
   // grid point near the top's unrounded line lies a long step from it; from (271, 27) the line
   // of step (−15, 1) carries the bracket.
   Bracket bracket;
-  bracket.first = {{271, 28}, Vec2{271, 27}, {245, 28}, {-1, 0}, {271, 27}, {225, 30}, true};
-  bracket.last = {{188, 465}, std::nullopt, {188, 102}, {0, 1}, {188, 465}, {188, 102}, false};
+  bracket.first = BracketLine{{271, 28}, Vec2{271, 27}, {245, 28}, {-1, 0}, {271, 27}, {225, 30}, true};
+  bracket.last = BracketLine{{188, 465}, std::nullopt, {188, 102}, {0, 1}, {188, 465}, {188, 102}, false};
   bracket.exact = {Vec2{225, 30}, {214.75, 30.67}, {204.04, 31.37}, {197.87, 37.54}, {188, 47.41}, {188, 72.98}, {188, 102}};
   std::vector<Vec2> points;
   for (int dy = -2; dy <= 2; ++dy)
@@ -115,6 +116,29 @@ TEST(BracketPlacements, ACornerMayGoBackToItsNearestGridPoint) {
     EXPECT_TRUE(whole_steps_of(p.far1, p.join1, p.step1));
   }
   EXPECT_EQ(found.front().far1, (Vec2{271, 27}));
+}
+
+TEST(BracketPlacements, AnEndInsideARunKeepsItsNodeAndMeetsItsCurvature) {
+  // The serif's bracket seen from a longer run: its stem end is a node at (216, 120) going up,
+  // beyond which the run's next cubic starts with κ = −0.004; the node stays, its in-handle
+  // takes whole steps up the stem, and κ there meets the next cubic's.
+  Bracket bracket = pagella_serif();
+  const double beyond = -0.004;
+  bracket.last = BracketNode{{216, 120}, {0, 1}, beyond};
+  const std::vector<Vec2> steps{{-1, 1}, {-4, 5}, {-5, 4}, {-5, 6}, {-6, 5}};
+  const std::vector<BracketPlacement> found =
+      bracket_placements(bracket, node_points(), steps, flat, target, most_turn, 48);
+  ASSERT_FALSE(found.empty());
+  for (const BracketPlacement& p : found) {
+    EXPECT_EQ(p.join2, (Vec2{216, 120}));
+    EXPECT_EQ(p.far2, (Vec2{216, 120}));
+    EXPECT_TRUE(whole_steps_of(p.handle4, p.join2, Vec2{0, 1}));
+    EXPECT_TRUE(whole_steps_of(p.node, p.handle3, p.node_step));
+    // κ reaching the node (216, 120): the reversed cubic leaves it with the opposite sign.
+    const double at_end = -start_curvature(p.join2, p.handle4, p.handle3);
+    EXPECT_LE(std::abs(at_end - beyond), target * std::max(std::abs(at_end), std::abs(beyond)));
+    EXPECT_LE(std::abs(start_curvature(p.join1, p.handle1, p.handle2)), target * flat);
+  }
 }
 
 }  // namespace

@@ -687,6 +687,13 @@ TEST(ContourFairing, ABracketBetweenTwoLinesIsPlacedAsOnePiece) {
   for (const char* name : {"A", "E"}) expect_faired_g2(test::noto_serif, name);
 }
 
+TEST(ContourFairing, TheTwoCubicsNextToALineInALongerRunArePlacedAsOnePiece) {
+  // Noto Serif's Y and Z: runs of three cubics from a line, whose first two kept a jump (the
+  // Y's arm κ·UPM 25.0 against 26.5 at the node, the Z's spine −0.21 against 0 at its line).
+  // Placed as a bracket ending at the run's next node, κ there kept as the cubic beyond has it.
+  for (const char* name : {"Y", "Z"}) expect_faired_g2(test::noto_serif, name);
+}
+
 TEST(ContourFairing, ASpanWithNoG2CubicMeetsOneEndsCurvature) {
   // Linux Libertine's g, written as floats: two short, nearly flat spans of its ear had no
   // cubic meeting both ends' curvatures, and G1 handles left a jump at each end (κ·UPM 1.24
