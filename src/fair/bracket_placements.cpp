@@ -22,7 +22,8 @@ constexpr std::size_t pairings_per_cubic = 3;
 // an end that is a node, that node, its direction and the curvature to meet there.
 struct JoinPlace {
   Vec2 far, join, step;
-  std::optional<double> kappa;
+  bool at_node = false;
+  std::optional<double> kappa;  ///< at a node: the curvature to meet there, if any
 };
 
 
@@ -43,7 +44,7 @@ std::vector<JoinPlace> join_places(const BracketLine& line, bool arrives, double
     for (int k = -static_cast<int>(slide / unit); k * unit <= slide; ++k) {
       const Vec2 p = line.join + line.step * static_cast<double>(k);
       if (std::abs(dot(p - line.exact_join, e)) <= slide && keeps_length(p, line.far))
-        out.push_back({line.far, p, line.step, std::nullopt});
+        out.push_back({line.far, p, line.step, false, std::nullopt});
     }
     return out;
   }
@@ -65,7 +66,7 @@ std::vector<JoinPlace> join_places(const BracketLine& line, bool arrives, double
         const std::optional<Vec2> step = primitive_step(arrives ? p - far : far - p);
         if (!step || std::abs(turning_angle(e, *step)) > most_turn || !keeps_length(p, far)) continue;
         if (std::none_of(out.begin(), out.end(), [&](const JoinPlace& q) { return q.join == p && q.far == far; }))
-          out.push_back({far, p, *step, std::nullopt});
+          out.push_back({far, p, *step, false, std::nullopt});
       }
     }
   }
@@ -74,7 +75,8 @@ std::vector<JoinPlace> join_places(const BracketLine& line, bool arrives, double
 
 // The places of a bracket's end: its line's (join_places) or its node.
 std::vector<JoinPlace> end_places(const std::variant<BracketLine, BracketNode>& end, bool arrives, double most_turn) {
-  if (const BracketNode* node = std::get_if<BracketNode>(&end)) return {{node->point, node->point, node->step, node->kappa}};
+  if (const BracketNode* node = std::get_if<BracketNode>(&end))
+    return {{node->point, node->point, node->step, true, node->kappa}};
   return join_places(std::get<BracketLine>(end), arrives, most_turn);
 }
 
@@ -105,20 +107,26 @@ double spread_of(const SideCubic& s, std::span<const Vec2> exact, double bound) 
   return *s.spread;
 }
 
-// The cubics from an end node (place.kappa) to the bracket's node at `node` stepping `u`, or
-// back: the bracket node's handle any whole steps of u short of the end node, the end node's the
-// whole steps of its direction that give it its κ (handles_for_curvature). `first`: the
-// bracket's first side; `wanted`: as side_cubics.
+// The cubics from an end node to the bracket's node at `node` stepping `u`, or back: the
+// bracket node's handle any whole steps of u short of the end node; the end node's the whole
+// steps of its direction that give it its κ (handles_for_curvature), or, at a corner, any
+// short of the bracket node. `first`: the bracket's first side; `wanted`: as side_cubics.
 void node_side_cubics(const JoinPlace& place, std::size_t k, bool first, Vec2 node, Vec2 u, double flat, double target,
                       std::optional<std::pair<double, double>> wanted, std::vector<SideCubic>& out) {
   const SegmentEnd at_end = first ? SegmentEnd::start : SegmentEnd::end;
   const SegmentEnd at_node = first ? SegmentEnd::end : SegmentEnd::start;
-  for (double m = 1.0; m * norm(u) < distance(node, place.join); ++m) {
+  const double chord = distance(node, place.join);
+  const Vec2 into = first ? place.step : place.step * -1.0;  // from the end node into the bracket
+  for (double m = 1.0; m * norm(u) < chord; ++m) {
     const Vec2 far = node + u * (first ? -m : m);
-    for (const Vec2 near : handles_for_curvature(place.join, place.step, first, far, node, *place.kappa)) {
+    std::vector<Vec2> nears;
+    if (place.kappa) nears = handles_for_curvature(place.join, place.step, first, far, node, *place.kappa);
+    else
+      for (double a = 1.0; a * norm(into) < chord; ++a) nears.push_back(place.join + into * a);
+    for (const Vec2 near : nears) {
       const Cubic c = first ? Cubic{place.join, near, far, node} : Cubic{node, far, near, place.join};
       const double kappa = node_curvature(c, at_node);
-      if (relative_jump(node_curvature(c, at_end), *place.kappa, flat) > target ||
+      if ((place.kappa && relative_jump(node_curvature(c, at_end), *place.kappa, flat) > target) ||
           (wanted && (kappa < wanted->first || kappa > wanted->second)))
         continue;
       out.push_back({k, near, far, kappa, c, std::nullopt});
@@ -168,7 +176,7 @@ std::vector<SideCubic> side_cubics(std::span<const JoinPlace> places, bool first
                                    double target, std::optional<std::pair<double, double>> wanted = std::nullopt) {
   std::vector<SideCubic> out;
   for (std::size_t k = 0; k < places.size(); ++k)
-    (places[k].kappa ? node_side_cubics : line_side_cubics)(places[k], k, first, node, u, flat, target, wanted, out);
+    (places[k].at_node ? node_side_cubics : line_side_cubics)(places[k], k, first, node, u, flat, target, wanted, out);
   return out;
 }
 

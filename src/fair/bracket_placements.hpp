@@ -35,12 +35,13 @@ struct BracketLine {
   bool may_turn = false;
 };
 
-/// A smooth node a bracket ends at instead of a line (the third node of a longer run from a
-/// line): it stays where it is, its handle on the bracket's side takes whole steps of its
-/// direction `step`, and κ there must match `kappa`, the curvature of the cubic beyond it.
+/// A node a bracket ends at instead of a line: the third node of a longer run from a line,
+/// whose κ must match `kappa`, the curvature of the cubic beyond it, or a corner (no `kappa`:
+/// its curvature binds nothing). It stays where it is, its handle on the bracket's side taking
+/// whole steps of its direction `step` (along the contour's direction).
 struct BracketNode {
   Vec2 point, step;
-  double kappa = 0.0;
+  std::optional<double> kappa;
 };
 
 /// The bracket as the passes left it and its unrounded self: `first` arrives at the bracket's
@@ -58,7 +59,7 @@ struct BracketPlacement {
 };
 
 /// Placements whose curvature is within `target` (relative, as handle_steps' `jump`, flat under
-/// `flat`) of 0 at both joins (of an end node's `kappa` there) and of itself across the node, the node at one of `node_points`
+/// `flat`) of 0 at both joins (of an end node's `kappa` there, if any) and of itself across the node, the node at one of `node_points`
 /// in one of `node_steps` (along the contour's direction), each join within `slide` units
 /// along its line of the unrounded one (`off_line` across it, where the line turns) and
 /// turning its line by at most `most_turn` radians; at most `most`, least spread first.

@@ -1377,25 +1377,34 @@ constexpr std::size_t bracket_tries = 48;
 
 // Two cubics of a run, from node h through node i to node j, of which h or j is a line join,
 // that still jump once the passes end (a serif's bracket; in a longer run, the two next to its
-// line), placed as one piece (fair/bracket_placements.hpp): each line turned about its far
-// corner or slid, an end inside the run kept with κ there to match the cubic beyond, the node
-// moved and turned, all handles set together; the cheapest allowed placement stands, where it
-// costs less than the run as it is. Returns whether it moved.
+// line; a curve from a line to a corner), placed as one piece (fair/bracket_placements.hpp):
+// each line turned about its far corner or slid, an end inside the run kept with κ there to
+// match the cubic beyond, a corner kept with its handle's direction, the node moved and turned,
+// all handles set together; the cheapest allowed placement stands, where it costs less than the
+// run as it is. Returns whether it moved.
 bool place_bracket(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal,
                    std::vector<std::optional<Vec2>>& steps, const OutlineJoins& joins, std::size_t h, CubicJudge& judge,
                    double flat) {
   const std::size_t n = nodes.size(), i = (h + 1) % n, j = (i + 1) % n, before = (h + n - 1) % n, after = (j + 1) % n;
-  if (n < 5 || !steps[h] || !steps[i] || !steps[j]) return false;
+  // Each end's direction along the contour: a line's or node's step, a corner's handle's.
+  const auto end_step = [&](std::size_t k) -> std::optional<Vec2> {
+    if (nodes[k].smooth) return steps[k];
+    return primitive_step(k == h ? *nodes[k].out_handle - nodes[k].point : nodes[k].point - *nodes[k].in_handle);
+  };
+  const std::optional<Vec2> step_h = end_step(h), step_j = end_step(j);
+  if (n < 5 || !step_h || !steps[i] || !step_j) return false;
   // A line may turn about a far end that is a corner, where it is not horizontal or vertical;
   // that corner may go back to its nearest grid point where the line beyond it is horizontal or
   // vertical and stays so. A node inside the run stays, with the curvature beyond it.
   const auto end = [&](std::size_t join, std::size_t far, std::size_t beyond) -> std::variant<BracketLine, BracketNode> {
+    const Vec2 step = join == h ? *step_h : *step_j;
     if (!joins.meets_line(join)) {
+      if (!nodes[join].smooth) return BracketNode{nodes[join].point, step, std::nullopt};
       const double kappa = far == before ? curvatures_at(nodes, join).first : curvatures_at(nodes, join).second;
-      return BracketNode{nodes[join].point, *steps[join], kappa};
+      return BracketNode{nodes[join].point, step, kappa};
     }
     const Vec2 d = ideal[far].point - ideal[join].point;
-    BracketLine l{nodes[far].point, std::nullopt, nodes[join].point, *steps[join], ideal[far].point, ideal[join].point,
+    BracketLine l{nodes[far].point, std::nullopt, nodes[join].point, step, ideal[far].point, ideal[join].point,
                   !nodes[far].smooth && d.x != 0.0 && d.y != 0.0};
     const Vec2 nearest = nearest_grid_point(ideal[far].point), other = nodes[beyond].point;
     const bool beyond_is_line = !(far == before ? joins.is_cubic(beyond) : joins.is_cubic(far));
@@ -1435,7 +1444,9 @@ bool place_bracket(std::vector<OutlineNode>& nodes, const std::vector<OutlineNod
   nodes[before] = kept[0], nodes[h] = kept[1], nodes[i] = kept[2], nodes[j] = kept[3], nodes[after] = kept[4];
   if (!best) return false;
   place(*best);
-  steps[h] = best->step1, steps[i] = best->node_step, steps[j] = best->step2;
+  if (line_before) steps[h] = best->step1;
+  if (line_after) steps[j] = best->step2;
+  steps[i] = best->node_step;
   return true;
 }
 
@@ -1536,7 +1547,8 @@ void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<Outl
       if (!polish_jumping_run(nodes, ideal, steps, joins, runs[r], cycle, judge, limits.flat_curvature,
                               limits.polish_only_at_jumps))
         break;
-  // Brackets: the two cubics next to each line a run meets, where a join of theirs jumps.
+  // Brackets: the two cubics next to each line a run meets, where a join of theirs jumps (a
+  // run of two from a line to a corner too).
   const auto jumps_at = [&](std::size_t h) {
     const std::array<std::size_t, 3> at{h, (h + 1) % n, (h + 2) % n};
     return std::any_of(at.begin(), at.end(), [&](std::size_t k) { return join_jump(joins, k, limits.flat_curvature) > target_jump; });
@@ -1545,7 +1557,7 @@ void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<Outl
     if (cycle || run.size() < 2) continue;
     const std::size_t last = (run.back() + 1) % n;
     const bool from_line = joins.meets_line(run.front()), to_line = joins.meets_line(last);
-    if (run.size() == 2 ? !(from_line && to_line) : !(from_line || to_line)) continue;
+    if (!(from_line || to_line)) continue;
     if (from_line && jumps_at(run.front())) place_bracket(nodes, ideal, steps, joins, run.front(), judge, limits.flat_curvature);
     if (run.size() > 2 && to_line && jumps_at(run[run.size() - 2]))
       place_bracket(nodes, ideal, steps, joins, run[run.size() - 2], judge, limits.flat_curvature);

@@ -141,5 +141,24 @@ TEST(BracketPlacements, AnEndInsideARunKeepsItsNodeAndMeetsItsCurvature) {
   }
 }
 
+TEST(BracketPlacements, ACornerEndKeepsItsHandlesDirectionAndAnyCurvature) {
+  // The bracket ending at a corner on the stem instead: the corner stays, its handle whole
+  // steps down the stem from it, κ there free; the joins at the line and the node still meet.
+  Bracket bracket = pagella_serif();
+  bracket.last = BracketNode{{216, 120}, {0, 1}, std::nullopt};
+  const std::vector<Vec2> steps{{-1, 1}, {-4, 5}, {-5, 4}};
+  const std::vector<BracketPlacement> found =
+      bracket_placements(bracket, node_points(), steps, flat, target, most_turn, 48);
+  ASSERT_FALSE(found.empty());
+  for (const BracketPlacement& p : found) {
+    EXPECT_EQ(p.join2, (Vec2{216, 120}));
+    EXPECT_TRUE(whole_steps_of(p.handle4, p.join2, Vec2{0, 1}));
+    EXPECT_LE(std::abs(start_curvature(p.join1, p.handle1, p.handle2)), target * flat);
+    const double before = -start_curvature(p.node, p.handle2, p.handle1);
+    const double after = start_curvature(p.node, p.handle3, p.handle4);
+    EXPECT_LE(std::abs(before - after), target * std::max({std::abs(before), std::abs(after), flat}));
+  }
+}
+
 }  // namespace
 }  // namespace gf

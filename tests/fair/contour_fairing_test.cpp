@@ -694,6 +694,12 @@ TEST(ContourFairing, TheTwoCubicsNextToALineInALongerRunArePlacedAsOnePiece) {
   for (const char* name : {"Y", "Z"}) expect_faired_g2(test::noto_serif, name);
 }
 
+TEST(ContourFairing, TwoCubicsFromALineToACornerArePlacedAsOnePiece) {
+  // Noto Serif's v: a run of two cubics from a line to a corner kept a jump; placed as a
+  // bracket whose corner keeps its handle's direction (its curvature binds nothing), it meets.
+  expect_faired_g2(test::noto_serif, "v");
+}
+
 TEST(ContourFairing, ASpanWithNoG2CubicMeetsOneEndsCurvature) {
   // Linux Libertine's g, written as floats: two short, nearly flat spans of its ear had no
   // cubic meeting both ends' curvatures, and G1 handles left a jump at each end (κ·UPM 1.24
