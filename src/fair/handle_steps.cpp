@@ -1548,7 +1548,7 @@ void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<Outl
                               limits.polish_only_at_jumps))
         break;
   // Brackets: the two cubics next to each line a run meets, where a join of theirs jumps (a
-  // run of two from a line to a corner too).
+  // run of two between a line and a corner too).
   const auto jumps_at = [&](std::size_t h) {
     const std::array<std::size_t, 3> at{h, (h + 1) % n, (h + 2) % n};
     return std::any_of(at.begin(), at.end(), [&](std::size_t k) { return join_jump(joins, k, limits.flat_curvature) > target_jump; });
@@ -1557,9 +1557,11 @@ void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<Outl
     if (cycle || run.size() < 2) continue;
     const std::size_t last = (run.back() + 1) % n;
     const bool from_line = joins.meets_line(run.front()), to_line = joins.meets_line(last);
-    if (!(from_line || to_line)) continue;
-    if (from_line && jumps_at(run.front())) place_bracket(nodes, ideal, steps, joins, run.front(), judge, limits.flat_curvature);
-    if (run.size() > 2 && to_line && jumps_at(run[run.size() - 2]))
+    // A run of two is one bracket from whichever end is a line; a longer run has one at each.
+    const bool pair = run.size() == 2;
+    if ((from_line || (pair && to_line)) && jumps_at(run.front()))
+      place_bracket(nodes, ideal, steps, joins, run.front(), judge, limits.flat_curvature);
+    if (!pair && to_line && jumps_at(run[run.size() - 2]))
       place_bracket(nodes, ideal, steps, joins, run[run.size() - 2], judge, limits.flat_curvature);
   }
 }

@@ -694,10 +694,11 @@ TEST(ContourFairing, TheTwoCubicsNextToALineInALongerRunArePlacedAsOnePiece) {
   for (const char* name : {"Y", "Z"}) expect_faired_g2(test::noto_serif, name);
 }
 
-TEST(ContourFairing, TwoCubicsFromALineToACornerArePlacedAsOnePiece) {
-  // Noto Serif's v: a run of two cubics from a line to a corner kept a jump; placed as a
-  // bracket whose corner keeps its handle's direction (its curvature binds nothing), it meets.
-  expect_faired_g2(test::noto_serif, "v");
+TEST(ContourFairing, TwoCubicsBetweenALineAndACornerArePlacedAsOnePiece) {
+  // Noto Serif's v and k: runs of two cubics from a line to a corner, and from a corner to a
+  // line, kept a jump each; placed as a bracket whose corner keeps its handle's direction (its
+  // curvature binds nothing), they meet.
+  for (const char* name : {"v", "k"}) expect_faired_g2(test::noto_serif, name);
 }
 
 TEST(ContourFairing, ASpanWithNoG2CubicMeetsOneEndsCurvature) {
