@@ -89,11 +89,6 @@ std::vector<JoinPlace> end_places(const std::variant<BracketLine, BracketNode>& 
   return join_places(std::get<BracketLine>(end), arrives, most_turn);
 }
 
-// The relative jump between two curvatures, as handle_steps weighs it.
-double relative_jump(double k1, double k2, double flat) {
-  return std::abs(k1 - k2) / std::max({std::abs(k1), std::abs(k2), flat});
-}
-
 // One cubic of a bracket from one of its ends to its node, or from the node to an end.
 struct SideCubic {
   std::size_t place;    ///< into the side's end places

@@ -85,12 +85,8 @@ double shape_cost(const CurvatureShape& rounded, const CurvatureShape& unrounded
          variation_cost(rounded, unrounded, flat);
 }
 
-// The jump between two curvatures (or two dκ/ds), relative to the larger unless both are under
-// `flat`; 0 where both are 0 and nothing is flat.
-double jump(double k1, double k2, double flat) {
-  const double big = std::max({std::abs(k1), std::abs(k2), flat});
-  return big > 0.0 ? std::abs(k1 - k2) / big : 0.0;
-}
+// relative_jump (fair/handle_steps.hpp), by its short name here.
+double jump(double k1, double k2, double flat) { return relative_jump(k1, k2, flat); }
 
 // G2 first: any jump over the target costs more than every choice that meets it.
 double jump_cost(double j) { return j <= target_jump ? j * j : 1.0 + 100.0 * j; }

@@ -9,6 +9,9 @@
 // first cubic enumerated when the run closes on itself).
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+
 #include <optional>
 #include <span>
 #include <vector>
@@ -112,6 +115,14 @@ struct HandleStepLimits {
     return node < band_piece_by_cubic.size() ? band_piece_by_cubic[node] : node;
   }
 };
+
+/// The jump between two curvatures (or two dκ/ds), relative to the larger unless both are under
+/// `flat`; 0 where both are 0 and nothing is flat. What every choice of steps weighs, and what
+/// bracket placements (fair/bracket_placements.hpp) must meet.
+inline double relative_jump(double k1, double k2, double flat) {
+  const double big = std::max({std::abs(k1), std::abs(k2), flat});
+  return big > 0.0 ? std::abs(k1 - k2) / big : 0.0;
+}
 
 /// The handles node + sign·m·step (m ≥ 1 whole steps; sign −1 for an in-handle) nearest the
 /// line through `line_point` along `line_dir` on either side of it (one when a whole step lies
