@@ -8,7 +8,7 @@
 // meet all three within the tolerance: the line turned a quarter of a degree about its far
 // corner onto a step of (15, 1), its join on a grid point of that line, the node two units off.
 // This lists such placements, nearest the unrounded bracket first; the caller judges them
-// (fair/handle_steps.cpp: within the allowance, no inflection or extremum gained).
+// (fair/bracket_choice: within the allowance, no inflection or extremum gained).
 #pragma once
 
 #include <array>
@@ -58,7 +58,7 @@ struct BracketPlacement {
   double spread = 0.0;  ///< the farthest of its cubics' quarter points from the unrounded bracket
 };
 
-/// Placements whose curvature is within `target` (relative, as handle_steps' `jump`, flat under
+/// Placements whose curvature is within `target` (relative, relative_jump, flat under
 /// `flat`) of 0 at both joins (of an end node's `kappa` there, if any) and of itself across the node, the node at one of `node_points`
 /// in one of `node_steps` (along the contour's direction), each join within 16 units along its
 /// line of the unrounded one (0.75 across it where the line turns; four of its steps where it

@@ -124,6 +124,15 @@ inline double relative_jump(double k1, double k2, double flat) {
   return big > 0.0 ? std::abs(k1 - k2) / big : 0.0;
 }
 
+/// How many steps (not necessarily whole) of `step` from `node`, on the side `sign` gives, reach
+/// the line through `line_point` along `line_dir`; none where they run parallel (as far from the
+/// line at every step).
+std::optional<double> steps_to_line(Vec2 node, Vec2 step, double sign, Vec2 line_point, Vec2 line_dir);
+
+/// steps_to_line where that is a whole number m ≥ 1: the handle node + sign·m·step lies exactly
+/// on the line (κ = 0 where a curve meets it); none elsewhere.
+std::optional<double> whole_steps_to_line(Vec2 node, Vec2 step, double sign, Vec2 line_point, Vec2 line_dir);
+
 /// The handles node + sign·m·step (m ≥ 1 whole steps; sign −1 for an in-handle) nearest the
 /// line through `line_point` along `line_dir` on either side of it (one when a whole step lies
 /// on it): where a curve meets a line, its far handle there gives it the least curvature at

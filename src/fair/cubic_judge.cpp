@@ -1,0 +1,142 @@
+#include "fair/cubic_judge.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <span>
+
+#include "geom/curvature.hpp"
+#include "geom/polyline_distance.hpp"
+
+namespace gf {
+
+namespace {
+
+constexpr int slide_samples = 24;      // points per cubic where a node's slide is measured
+
+// The unrounded cubic i with each end that meets a line moved along its tangent as far as
+// rounding moved that end along it (line_rounding slides a curve's end along its line, its
+// handle's tip kept): what a cubic from the slid end should be measured against. What that
+// slide strays line_rounding weighed; the rounded contour is measured whole against the source
+// after all (fair/contour_fairing.cpp rounds again within less where it strays).
+Cubic along_lines(Cubic c, const std::vector<OutlineNode>& rounded, std::size_t i, const OutlineJoins& joins) {
+  const std::size_t j = (i + 1) % joins.size();
+  auto slide = [](Vec2& end, Vec2 handle, Vec2 to) {
+    const Vec2 t = handle - end;
+    const double length = norm(t);
+    if (length == 0.0) return;
+    const Vec2 u = t / length;
+    end = end + u * dot(u, to - end);
+  };
+  if (joins.meets_line(i)) slide(c.p[0], c.p[1], rounded[i].point);
+  if (joins.meets_line(j)) slide(c.p[3], c.p[2], rounded[j].point);
+  return c;
+}
+
+// A cubic as a polyline for the band around the source: a point every four units of its
+// control polygon or so (chords then stray a few hundredths of a unit at glyph curvatures),
+// 16 to 96 in all.
+std::vector<Vec2> band_samples(const Cubic& c) {
+  const double polygon = distance(c.p[0], c.p[1]) + distance(c.p[1], c.p[2]) + distance(c.p[2], c.p[3]);
+  const int n = std::clamp(static_cast<int>(polygon / 4.0), 16, 96);
+  std::vector<Vec2> out;
+  out.reserve(n + 1);
+  for (int k = 0; k <= n; ++k) out.push_back(c.point_at(double(k) / n));
+  return out;
+}
+
+}  // namespace
+
+int turns_at_node(const CubicTraits& before, const CubicTraits& after, double hysteresis) {
+  TurnCounter joined = before.shape.tail, alone;
+  joined.turns = 0;
+  for (const double k : after.shape.head) {
+    joined.add(k, hysteresis), alone.add(k, hysteresis);
+    // Once both counters stand alike, the rest of the half adds to both alike.
+    if (joined.direction == alone.direction && joined.anchor == alone.anchor) break;
+  }
+  return joined.turns - alone.turns;
+}
+
+CubicJudge::CubicJudge(const std::vector<OutlineNode>& rounded, const std::vector<OutlineNode>& ideal,
+                       const OutlineJoins& joins, const HandleStepLimits& limits)
+    : unrounded_(rounded.size()), allowed_(rounded.size(), 0.0), ideal_(rounded.size()), seen_(rounded.size()),
+      inflection_handles_(limits.inflection_handles), node_turns_(limits.node_turns), slope_jump_weight_(limits.slope_jump_weight),
+      counted_jump_cost_(limits.counted_jump_cost), band_(limits.band), band_pieces_(rounded.size()),
+      keeps_corner_(rounded.size(), false), closed_(joins.closed), joins_before_(rounded.size(), false),
+      along_outline_(rounded.size()) {
+  for (std::size_t i = 0; i < rounded.size(); ++i) band_pieces_[i] = limits.band_piece(i);
+  for (std::size_t i = 0; i < rounded.size(); ++i) {
+    if (!joins.is_cubic(i)) continue;
+    unrounded_[i] = along_lines(outline_cubic(ideal, i), rounded, i, joins);
+    const double allowance = limits.allowance_at(i);
+    allowed_[i] = std::max(allowance, moved_distance(outline_cubic(rounded, i), unrounded_[i], allowance));
+    // κ turns count from 1 % of the outline's largest unrounded |κ|, as the check counts them.
+    hysteresis_ = std::max(hysteresis_, 0.01 * curvature_shape(unrounded_[i], 0.0).largest);
+  }
+  for (std::size_t i = 0; i < rounded.size(); ++i) joins_before_[i] = joins.joins_cubics(i);
+  for (std::size_t i = 0; i < rounded.size(); ++i)
+    if (joins.is_cubic(i)) ideal_[i] = measure(i, unrounded_[i]);
+  for (std::size_t k = 0; k < rounded.size(); ++k) keeps_corner_[k] = corner_to_keep(ideal, closed_, k);
+}
+
+double CubicJudge::slid_distance(std::size_t i, const Cubic& c, double within) {
+  const std::vector<Vec2>& along = along_outline(i).points;
+  std::array<Vec2, slide_samples + 1> pc;
+  for (int t = 0; t <= slide_samples; ++t) pc[t] = c.point_at(double(t) / slide_samples);
+  const double there = directed_hausdorff(pc, along, within);
+  if (there > within) return there;
+  const auto nearest = [&](Vec2 p) {
+    std::size_t best = 0;
+    for (std::size_t k = 1; k < along.size(); ++k)
+      if (distance(along[k], p) < distance(along[best], p)) best = k;
+    return best;
+  };
+  const std::size_t a = nearest(c.p[0]), b = nearest(c.p[3]);
+  if (a >= b) return std::numeric_limits<double>::infinity();
+  const std::span<const Vec2> covered(along.data() + a, b - a + 1);
+  return std::max(there, directed_hausdorff(covered, pc, within));
+}
+
+const CubicJudge::Stretch& CubicJudge::along_outline(std::size_t i) {
+  Stretch& along = along_outline_[i];
+  if (!along.points.empty()) return along;
+  const std::size_t n = unrounded_.size();
+  const auto add = [&](const Cubic& c) {
+    for (int t = along.points.empty() ? 0 : 1; t <= slide_samples; ++t)
+      along.points.push_back(c.point_at(double(t) / slide_samples));
+  };
+  if (joins_before_[i]) add(unrounded_[(i + n - 1) % n]);
+  along.own_first = along.points.empty() ? 0 : along.points.size() - 1;
+  add(unrounded_[i]);
+  along.own_last = along.points.size() - 1;
+  if (joins_before_[(i + 1) % n]) add(unrounded_[(i + 1) % n]);
+  return along;
+}
+
+bool CubicJudge::band_holds(std::size_t i, const Cubic& c) {
+  const std::vector<Vec2> pc = band_samples(c);
+  const Stretch& along = along_outline(i);
+  if (along.own_first == 0 && along.own_last + 1 == along.points.size()) return band_->holds(band_pieces_[i], pc);
+  std::vector<Vec2> spliced(along.points.begin(), along.points.begin() + static_cast<std::ptrdiff_t>(along.own_first));
+  spliced.insert(spliced.end(), pc.begin(), pc.end());
+  spliced.insert(spliced.end(), along.points.begin() + static_cast<std::ptrdiff_t>(along.own_last + 1), along.points.end());
+  return band_->holds_along(band_pieces_[i], pc, spliced);
+}
+
+CubicTraits CubicJudge::measure(std::size_t i, const Cubic& c) {
+  const EndCurvature start = end_curvature(c, SegmentEnd::start), end = end_curvature(c, SegmentEnd::end);
+  double moved = moved_distance(c, unrounded_[i], allowed_[i]);
+  if (moved > allowed_[i]) moved = std::min(moved, slid_distance(i, c, allowed_[i]));
+  return {start.curvature.value_or(0.0),
+          end.curvature.value_or(0.0),
+          start.curvature_derivative.value_or(0.0),
+          end.curvature_derivative.value_or(0.0),
+          moved,
+          moved <= allowed_[i] || (band_ && band_holds(i, c)),
+          curvature_shape(c, hysteresis_),
+          inner_axis_extrema_of(c),
+          overreach_length(c),
+          distance(c.p[0], c.p[3]) < fold_chord ? cubic_turning(c) : 0.0};
+}
+
+}  // namespace gf

@@ -1,0 +1,130 @@
+#include "fair/node_change.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "fair/step_costs.hpp"
+
+namespace gf {
+
+std::vector<Vec2> node_places(Vec2 at, Vec2 unrounded, int reach) {
+  const Vec2 nearest = nearest_grid_point(unrounded);
+  std::vector<Vec2> out;
+  for (int dy = -reach; dy <= reach; ++dy)
+    for (int dx = -reach; dx <= reach; ++dx) {
+      const Vec2 p = at + Vec2{double(dx), double(dy)};
+      if (std::abs(p.x - nearest.x) <= reach && std::abs(p.y - nearest.y) <= reach) out.push_back(p);
+    }
+  return out;
+}
+
+std::vector<Vec2> directions_near(Vec2 tangent, double most, int longest) {
+  const Vec2 t = tangent / norm(tangent);
+  std::vector<Vec2> out;
+  for (int x = -longest; x <= longest; ++x)
+    for (int y = -longest; y <= longest; ++y) {
+      const Vec2 d{double(x), double(y)};
+      if (!is_primitive(d) || dot(d, t) <= 0.0) continue;
+      if (std::abs(turning_angle(t, d)) <= most) out.push_back(d);
+    }
+  return out;
+}
+
+std::vector<Vec2> node_directions(Vec2 step, const OutlineNode& target, int longest) {
+  std::vector<Vec2> directions{step};
+  if (step.x != 0.0 && step.y != 0.0)
+    for (const Vec2 d : directions_near(*target.out_handle - *target.in_handle, grid_turn, longest))
+      if (d != step && d.x != 0.0 && d.y != 0.0) directions.push_back(d);
+  return directions;
+}
+
+NodeChange::NodeChange(const std::vector<OutlineNode>& nodes, const OutlineJoins& joins, CubicJudge& judge, double flat,
+                       std::size_t i)
+    : nodes_(nodes), joins_(joins), judge_(judge), flat_(flat), i_(i), h_((i + nodes.size() - 1) % nodes.size()),
+      j_((i + 1) % nodes.size()) {
+  for (const std::size_t k : {h_, i_})
+    if (joins.is_cubic(k)) cubics_.push_back(k);
+  for (const std::size_t k : cubics_) {
+    const CubicTraits &a = judge.unrounded(k), &b = judge.traits(k, outline_cubic(nodes, k));
+    most_.push_back({judge.inflections_added(k, b), std::max(a.extrema.all, b.extrema.all),
+                     std::max(a.overreach, b.overreach), std::max(a.turning, b.turning)});
+  }
+  // The cubics beyond the neighbours stay as they are: their curvature there, once.
+  const std::size_t n = nodes.size();
+  for (const std::size_t k : {h_, i_, j_})
+    if (judge.inflects_at(k) && !(k == j_ && j_ == h_)) inflection_nodes_.push_back(k);
+  if (n >= 4) {
+    if (joins.joins_cubics(h_)) beyond_h_ = node_curvature(outline_cubic(nodes, (h_ + n - 1) % n), SegmentEnd::end);
+    if (joins.joins_cubics(j_)) beyond_j_ = node_curvature(outline_cubic(nodes, j_), SegmentEnd::start);
+  }
+}
+
+double NodeChange::jump_costs() const {
+  const std::array<double, 3> j = jumps_now();
+  return jump_cost(j[0]) + jump_cost(j[1]) + jump_cost(j[2]);
+}
+
+std::optional<double> NodeChange::cost_under(double best) const {
+  const double jumps = jump_costs();
+  if (jumps >= best) return std::nullopt;
+  const double c = jumps + bend_cost();
+  if (c >= best || !allowed()) return std::nullopt;
+  return c;
+}
+
+bool NodeChange::needs_change() const {
+  const std::array<double, 3> j = jumps_now();
+  return inflections_cost() >= wrong_way ||
+         std::any_of(j.begin(), j.end(), [](double x) { return jump_cost(x) > target_jump * target_jump; });
+}
+
+bool NodeChange::allowed() const {
+  for (std::size_t side = 0; side < cubics_.size(); ++side) {
+    const std::size_t k = cubics_[side];
+    const CubicTraits& t = judge_.traits(k, outline_cubic(nodes_, k));
+    const Most& most = most_[side];
+    if (!t.within || judge_.inflections_added(k, t) > most.inflections || t.extrema.all > most.extrema ||
+        t.overreach > most.overreach || t.turning > most.turning + fold_turn)
+      return false;
+  }
+  return true;
+}
+
+double NodeChange::inflections_cost() const {
+  const std::size_t n = nodes_.size();
+  const auto traits = [&](std::size_t k) -> const CubicTraits& { return judge_.traits(k, outline_cubic(nodes_, k)); };
+  double cost = 0.0;
+  for (const std::size_t k : cubics_) cost += judge_.inflections_added(k, traits(k)) > 0 ? wrong_way : 0.0;
+  for (const std::size_t k : inflection_nodes_) {
+    const std::size_t before = (k + n - 1) % n;
+    cost += wrong_way * judge_.inflections_at_node(before, traits(before), k, traits(k)).added;
+  }
+  return cost;
+}
+
+double NodeChange::shapes_cost() const {
+  double cost = 0.0;
+  for (const std::size_t k : cubics_)
+    cost += shape_cost(judge_.traits(k, outline_cubic(nodes_, k)).shape, judge_.unrounded(k).shape, flat_);
+  return cost;
+}
+
+std::array<double, 3> NodeChange::jumps_now() const {
+  if (nodes_.size() < 4) return {join_jump(joins_, h_, flat_), join_jump(joins_, i_, flat_), join_jump(joins_, j_, flat_)};
+  // A side that is a line (a corner's) changes nothing at its far end.
+  const auto curvature = [&](std::size_t cubic, SegmentEnd end) -> std::optional<double> {
+    if (!joins_.is_cubic(cubic)) return std::nullopt;
+    return node_curvature(outline_cubic(nodes_, cubic), end);
+  };
+  const std::optional<double> ks_h = curvature(h_, SegmentEnd::start), ke_h = curvature(h_, SegmentEnd::end);
+  const std::optional<double> ks_i = curvature(i_, SegmentEnd::start), ke_i = curvature(i_, SegmentEnd::end);
+  const auto at_end = [&](std::size_t k, std::optional<double> beyond, std::optional<double> near) {
+    if (!near) return 0.0;
+    if (beyond) return relative_jump(*beyond, *near, flat_);
+    return joins_.meets_line(k) ? relative_jump(*near, 0.0, flat_) : 0.0;
+  };
+  const double at_i = joins_.joins_cubics(i_) ? relative_jump(*ke_h, *ks_i, flat_) : 0.0;  // a corner has none
+  return {at_end(h_, beyond_h_, ks_h), at_i, at_end(j_, beyond_j_, ke_i)};
+}
+
+}  // namespace gf
