@@ -35,11 +35,17 @@ struct JoinPlace {
 };
 
 
-// Where a join may go: along its line within `slide` of the unrounded join, or, where the line
-// may turn about its far end, at grid points within `off_line` of the unrounded line (the step
-// then from the far end to the join), turning the line by at most `most_turn`. `arrives`: the
-// line arrives at the join (the bracket's first line), else it leaves it. The line keeps half
-// its unrounded length.
+// How far along its line a join may lie from the unrounded join: `slide`, and as far again as
+// rounding slid it.
+double join_reach(const BracketLine& line) { return slide + distance(line.join, line.exact_join); }
+
+// Where a join may go: along its line within `slide` of the unrounded join and of its rounded
+// place and between them (where a curve ends nearly straight, rounding may slide its join
+// farther: FreeSerif's w and TeX Gyre Pagella's m, y, V and X meet only beyond `slide`), or,
+// where the line may turn about its far end, at grid points within `off_line` of the unrounded
+// line (the step then from the far end to the join), turning the line by at most `most_turn`.
+// `arrives`: the line arrives at the join (the bracket's first line), else it leaves it. The
+// line keeps half its unrounded length.
 std::vector<JoinPlace> join_places(const BracketLine& line, bool arrives, double most_turn) {
   const Vec2 exact_dir = arrives ? line.exact_join - line.exact_far : line.exact_far - line.exact_join;
   const double exact_length = norm(exact_dir);
@@ -47,12 +53,18 @@ std::vector<JoinPlace> join_places(const BracketLine& line, bool arrives, double
   if (exact_length == 0.0) return out;
   const Vec2 e = exact_dir / exact_length;
   const auto keeps_length = [&](Vec2 p, Vec2 far) { return distance(p, far) >= 0.5 * exact_length; };
+  const double rounded_along = dot(line.join - line.exact_join, e);
+  const double least_along = std::min(0.0, rounded_along) - slide, most_along = std::max(0.0, rounded_along) + slide;
+  const auto within_reach = [&](Vec2 p) {
+    const double along = dot(p - line.exact_join, e);
+    return along >= least_along && along <= most_along;
+  };
   if (!line.may_turn) {
     const double unit = norm(line.step);
     const int most = std::min(most_slide_steps, static_cast<int>(slide / unit));
     for (int k = -most; k <= most; ++k) {
       const Vec2 p = line.join + line.step * static_cast<double>(k);
-      if (std::abs(dot(p - line.exact_join, e)) <= slide && keeps_length(p, line.far))
+      if (within_reach(p) && keeps_length(p, line.far))
         out.push_back({line.far, p, line.step, false, std::nullopt});
     }
     return out;
@@ -62,15 +74,16 @@ std::vector<JoinPlace> join_places(const BracketLine& line, bool arrives, double
   // Grid points near the unrounded line: along its major axis, the two either side of it.
   const bool along_x = std::abs(e.x) >= std::abs(e.y);
   const double major = along_x ? e.x : e.y;
-  const double span = slide * std::abs(major) + 1.0;
   const double centre = along_x ? line.exact_join.x : line.exact_join.y;
-  for (double u = std::ceil(centre - span); u <= centre + span; ++u) {
+  const double from = centre + std::min(least_along * major, most_along * major) - 1.0;
+  const double to = centre + std::max(least_along * major, most_along * major) + 1.0;
+  for (double u = std::ceil(from); u <= to; ++u) {
     const double t = (u - centre) / major;  // along the line from the exact join
     const Vec2 on = line.exact_join + e * t;
     const double minor = along_x ? on.y : on.x;
     for (const double v : {std::floor(minor), std::ceil(minor)}) {
       const Vec2 p = along_x ? Vec2{u, v} : Vec2{v, u};
-      if (std::abs(cross(e, p - line.exact_join)) > off_line || std::abs(dot(p - line.exact_join, e)) > slide) continue;
+      if (std::abs(cross(e, p - line.exact_join)) > off_line || !within_reach(p)) continue;
       for (const Vec2 far : fars) {
         const std::optional<Vec2> step = primitive_step(arrives ? p - far : far - p);
         if (!step || std::abs(turning_angle(e, *step)) > most_turn || !keeps_length(p, far)) continue;
@@ -217,7 +230,8 @@ std::vector<BracketPlacement> bracket_placements(const Bracket& bracket, std::sp
   const std::array<Vec2, 7>& x = bracket.exact;
   const auto line_stretch = [](const std::variant<BracketLine, BracketNode>& end, Vec2 join) {
     const BracketLine* line = std::get_if<BracketLine>(&end);
-    return line ? join + (line->exact_far - join) * std::min(1.0, slide / distance(line->exact_far, join)) : join;
+    return line ? join + (line->exact_far - join) * std::min(1.0, join_reach(*line) / distance(line->exact_far, join))
+                : join;
   };
   std::vector<Vec2> exact{line_stretch(bracket.first, x[0])};
   for (const Cubic& c : {Cubic{x[0], x[1], x[2], x[3]}, Cubic{x[3], x[4], x[5], x[6]}})

@@ -58,12 +58,13 @@ struct BracketPlacement {
   double spread = 0.0;  ///< the farthest of its cubics' quarter points from the unrounded bracket
 };
 
-/// Placements whose curvature is within `target` (relative, relative_jump, flat under
-/// `flat`) of 0 at both joins (of an end node's `kappa` there, if any) and of itself across the node, the node at one of `node_points`
-/// in one of `node_steps` (along the contour's direction), each join within 16 units along its
-/// line of the unrounded one (0.75 across it where the line turns; four of its steps where it
-/// only slides), turning its line by at most `most_turn` radians, each end's handle within four
-/// times its unrounded length either way; at most `most`, least spread first.
+/// Placements whose curvature is within `target` (relative_jump, flat under `flat`) of 0 at both
+/// joins (of an end node's `kappa` there, if any) and of itself across the node, the node at one
+/// of `node_points` in one of `node_steps` (along the contour's direction), each join within 16
+/// units along its line of the unrounded one and of its rounded place, or between them (0.75
+/// across it where the line turns; four of its steps where it only slides), turning its line by
+/// at most `most_turn` radians, each end's handle within four times its unrounded length either
+/// way; at most `most`, least spread first.
 std::vector<BracketPlacement> bracket_placements(const Bracket& bracket, std::span<const Vec2> node_points,
                                                  std::span<const Vec2> node_steps, double flat, double target,
                                                  double most_turn, std::size_t most);
