@@ -142,6 +142,15 @@ struct LineOnGrid {
   bool curve_leaves;   ///< at node j likewise (node j's out-handle)
 };
 
+// Whether the line from `a` along `u` and the line from `b` along `v` meet ahead of both (at
+// a + s·u = b + t·v with s, t > 0), or are one line with b ahead of a: a curve from a leaving
+// along u and arriving at b against v can then seat both its handles where they meet.
+bool tangents_meet_ahead(Vec2 a, Vec2 u, Vec2 b, Vec2 v) {
+  const double across = cross(u, v);
+  if (across == 0.0) return cross(u, b - a) == 0.0 && dot(b - a, u) > 0.0;
+  return cross(b - a, v) / across > 0.0 && cross(b - a, u) / across > 0.0;
+}
+
 // How a line placed with its ends at a and b fares.
 struct LinePlacement {
   double cost = std::numeric_limits<double>::infinity();
@@ -245,10 +254,19 @@ class LinePlacer {
     const double fold = unseated + fold_unit;
     double best = unseated + fold;
     std::vector<Vec2> candidates;
-    // A far node whose direction runs along the line, off it: no handle seats the curve, which
-    // must leave one of two parallel tangents for the other, an S (Caladea's z: a curve from
-    // its extremum down into a line 2.1° off the level that would stand level 3 units under it).
+    // A far node whose tangent does not meet the line ahead of both the join and itself: no
+    // handle seats the curve, which must bend both ways to leave one tangent for the other, an
+    // S. Parallel to the line and off it (Caladea's z: a curve from its extremum down into a
+    // line 2.1° off the level that would stand level 3 units under it); or, where the far node
+    // is a line's end too (its tangent that line's, not a direction rounding may still turn),
+    // crossing the line at the far node or behind either (Carlito's w: the line under its
+    // middle apex slid to where it passed through the end of the line from the apex, and the
+    // curve between took two inflections).
     const bool parallel_off = steps_[k] && cross(*steps_[k], d) == 0.0 && cross(d, rounded_[k].point - end) != 0.0;
+    const bool far_line = !(out ? exact_[k].in_handle : exact_[k].out_handle);
+    const bool no_seat = parallel_off || (steps_[k] && far_line &&
+                                          !tangents_meet_ahead(end, out ? d * -1.0 : d, rounded_[k].point,
+                                                               out ? *steps_[k] : *steps_[k] * -1.0));
     // A handle on the line reaching past the curve's far node along their chord folds the curve
     // back into it, whatever the far handle (Gentium Plus's M: one step of a (1, −111) leg, 2
     // units past a 91-unit curve's end, an S at its foot).
@@ -264,7 +282,7 @@ class LinePlacer {
       const Cubic c = curve(h);
       const double kappa = node_curvature(c, out ? SegmentEnd::end : SegmentEnd::start);
       const double cost = (std::abs(kappa) <= 0.05 * limits_.flat_curvature ? 0.3 * distance(h, *wanted) : unseated) +
-                          (parallel_off || overshoots || inner_axis_extrema(c) > extrema ? fold : 0.0);
+                          (no_seat || overshoots || inner_axis_extrema(c) > extrema ? fold : 0.0);
       best = std::min(best, cost);
     }
     return best;

@@ -335,6 +335,16 @@ TEST(ContourFairing, RoundingAddsNoInflection) {
   EXPECT_LE(after, before);
 }
 
+TEST(ContourFairing, ACurveBetweenTwoLinesKeepsRoomToBendOneWay) {
+  // Carlito's w, under its middle apex: a line from the apex, a curve bending 5° and the
+  // stroke's line. Rounding slid the stroke's line to a short step where it passed through the
+  // end of the line from the apex: the two lines' tangents met at the curve's end, no handle
+  // could seat the curve with κ = 0 on both, and it took an S (two inflections the source lacks).
+  const FairedGlyph f = fair_named(test::carlito, "w", FairOptions{});
+  ASSERT_TRUE(f.result.kept.empty()) << f.result.kept.front();
+  EXPECT_LE(inflections(f.result.glyph.outline, f.upm), inflections(f.source.outline, f.upm));
+}
+
 TEST(ContourFairing, AStemsCurveToACornerIsOneCubic) {
   // Inconsolata's t: its stem curves from κ = 0 to the corner under the crossbar. κ = 0 fixes
   // the corner's handle, and only the corner's handle lengths were tried, so no cubic met it:
