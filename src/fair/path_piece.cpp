@@ -12,13 +12,6 @@ namespace gf {
 std::vector<PathPiece> guide_pieces(const GuideStretch& g, bool whole_loop, bool at_curvature_extrema) {
   const RunReference& ref = *g.guide;
   const double length = g.s1 - g.s0;
-  const auto frame = [&ref, &g, length, whole_loop](double s) {
-    if (!whole_loop && s <= 0.0) return g.start;
-    if (!whole_loop && s >= length) return g.end;
-    return ref.frame_at(g.s0 + s);
-  };
-  std::vector<double> cuts{0.0};
-  std::vector<bool> at_flip{false};
   const int steps = std::max(8, static_cast<int>(std::ceil(length)));
   std::vector<double> kappa(static_cast<std::size_t>(steps));
   double largest = 0.0;
@@ -27,12 +20,35 @@ std::vector<PathPiece> guide_pieces(const GuideStretch& g, bool whole_loop, bool
     largest = std::max(largest, std::abs(kappa[static_cast<std::size_t>(k)]));
   // A turn of κ counts once it has swung back by a hundredth of the stretch's largest |κ|.
   const double swing = 0.01 * largest;
+  // Changes of sign before |κ| first passes that hundredth, or after it last does, the first of
+  // them within a twentieth of the stretch of its start (the last, of its end), are the wander
+  // of an end nearly straight, not inflections (Gentium Plus's d: its bowl's guide ends at the
+  // corner with κ·UPM −0.06 after +0.02; EB Garamond's Z, whose stroke's guide, cut at each,
+  // wrote cubics a unit long and 23 jumps): not cut there, and that end's frame flat.
+  int first_past = steps, last_past = 0;
+  for (int k = 1; k < steps; ++k)
+    if (std::abs(kappa[static_cast<std::size_t>(k)]) > swing) first_past = std::min(first_past, k), last_past = k;
+  const auto changes_sign = [&](int k) {
+    return kappa[static_cast<std::size_t>(k)] * kappa[static_cast<std::size_t>(k - 1)] < 0.0;
+  };
+  int lead_change = 0, tail_change = steps;  // the first change before first_past, the last after last_past
+  for (int k = first_past; k >= 2 && k < steps; --k)
+    if (changes_sign(k)) lead_change = k;
+  for (int k = std::max(2, last_past + 1); k < steps; ++k)
+    if (changes_sign(k)) tail_change = k;
+  const double most_wander = 0.05 * steps;
+  const bool bends = last_past >= first_past;
+  const bool lead_wanders = bends && lead_change <= most_wander, tail_wanders = bends && steps - tail_change <= most_wander;
+  if (!lead_wanders) first_past = 1;
+  if (!tail_wanders) last_past = steps;
+  std::vector<double> cuts{0.0};
+  std::vector<bool> at_flip{false};
   TurnCounter counter;
   double last_sign = 0.0, theta_at_cut = ref.theta_at(g.s0);
   for (int k = 1; k < steps; ++k) {
     const double s = length * k / steps, kk = kappa[static_cast<std::size_t>(k)], theta = ref.theta_at(g.s0 + s);
     const double sign = kk > 0.0 ? 1.0 : -1.0;
-    const bool flips = last_sign != 0.0 && sign != last_sign;
+    const bool flips = last_sign != 0.0 && sign != last_sign && k > first_past && k <= last_past;
     const bool quarter = std::abs(theta - theta_at_cut) > std::numbers::pi / 2;
     const int turns_before = counter.turns;
     counter.add(kk, swing);
@@ -42,6 +58,17 @@ std::vector<PathPiece> guide_pieces(const GuideStretch& g, bool whole_loop, bool
     last_sign = sign;
   }
   cuts.push_back(length);
+  LacPoint start = g.start, end = g.end;
+  const auto flat_if_wandered = [swing](LacPoint& p, double kappa_past) {
+    if (p.curvature * kappa_past < 0.0 && std::abs(p.curvature) <= swing) p.curvature = 0.0;
+  };
+  if (!whole_loop && lead_wanders) flat_if_wandered(start, kappa[static_cast<std::size_t>(first_past)]);
+  if (!whole_loop && tail_wanders) flat_if_wandered(end, kappa[static_cast<std::size_t>(last_past)]);
+  const auto frame = [&ref, &g, length, whole_loop, start, end](double s) {
+    if (!whole_loop && s <= 0.0) return start;
+    if (!whole_loop && s >= length) return end;
+    return ref.frame_at(g.s0 + s);
+  };
   std::vector<PathPiece> out;
   for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
     const double a = cuts[i], len = cuts[i + 1] - a;

@@ -34,7 +34,10 @@ std::vector<PathPiece> curve_pieces(const std::vector<Curve>& curves) {
 /// and, given `at_curvature_extrema`, where κ turns back by a hundredth of the stretch's largest
 /// |κ| (each piece's κ then monotone, as a log-aesthetic segment's is), its end frames in place
 /// of the guide's own at its two ends (`whole_loop`: the stretch is a whole closed guide, whose
-/// frames are its own throughout). The guide must outlive them.
+/// frames are its own throughout). A change of sign before |κ| first passes that hundredth or
+/// after it last does, within a twentieth of the stretch of its end, is a nearly straight end's
+/// wander: not cut, and that end's frame flat where its κ is the wander's. The guide must
+/// outlive them.
 std::vector<PathPiece> guide_pieces(const GuideStretch& g, bool whole_loop, bool at_curvature_extrema);
 
 /// A chain's pieces: its guide's, its spirals' or its segments'.
