@@ -37,7 +37,7 @@ std::vector<PathPiece> guide_pieces(const GuideStretch& g, bool whole_loop, bool
   for (int k = std::max(2, last_past + 1); k < steps; ++k)
     if (changes_sign(k)) tail_change = k;
   const double most_wander = 0.05 * steps;
-  const bool bends = last_past >= first_past;
+  const bool bends = !whole_loop && last_past >= first_past;  // a whole closed guide has no ends
   const bool lead_wanders = bends && lead_change <= most_wander, tail_wanders = bends && steps - tail_change <= most_wander;
   if (!lead_wanders) first_past = 1;
   if (!tail_wanders) last_past = steps;
@@ -62,8 +62,8 @@ std::vector<PathPiece> guide_pieces(const GuideStretch& g, bool whole_loop, bool
   const auto flat_if_wandered = [swing](LacPoint& p, double kappa_past) {
     if (p.curvature * kappa_past < 0.0 && std::abs(p.curvature) <= swing) p.curvature = 0.0;
   };
-  if (!whole_loop && lead_wanders) flat_if_wandered(start, kappa[static_cast<std::size_t>(first_past)]);
-  if (!whole_loop && tail_wanders) flat_if_wandered(end, kappa[static_cast<std::size_t>(last_past)]);
+  if (lead_wanders) flat_if_wandered(start, kappa[static_cast<std::size_t>(first_past)]);
+  if (tail_wanders) flat_if_wandered(end, kappa[static_cast<std::size_t>(last_past)]);
   const auto frame = [&ref, &g, length, whole_loop, start, end](double s) {
     if (!whole_loop && s <= 0.0) return start;
     if (!whole_loop && s >= length) return end;
