@@ -34,10 +34,22 @@ struct JoinPlace {
   std::optional<double> kappa;  ///< at a node: the curvature to meet there, if any
 };
 
+// The line's unit direction, from its far end to its join where it `arrives` at the join (the
+// bracket's first line), else from its join to its far end.
+Vec2 unit_direction(const BracketLine& line, bool arrives) {
+  const Vec2 d = arrives ? line.exact_join - line.exact_far : line.exact_far - line.exact_join;
+  return d / norm(d);
+}
 
-// How far along its line a join may lie from the unrounded join: `slide`, and as far again as
-// rounding slid it.
-double join_reach(const BracketLine& line) { return slide + distance(line.join, line.exact_join); }
+// How far along its line (along `e`, from the unrounded join) a join may lie: within `slide` of
+// the unrounded join and of its rounded place, and between them.
+struct AlongReach {
+  double least, most;
+};
+AlongReach along_reach(const BracketLine& line, Vec2 e) {
+  const double rounded = dot(line.join - line.exact_join, e);
+  return {std::min(0.0, rounded) - slide, std::max(0.0, rounded) + slide};
+}
 
 // Where a join may go: along its line within `slide` of the unrounded join and of its rounded
 // place and between them (where a curve ends nearly straight, rounding may slide its join
@@ -53,8 +65,7 @@ std::vector<JoinPlace> join_places(const BracketLine& line, bool arrives, double
   if (exact_length == 0.0) return out;
   const Vec2 e = exact_dir / exact_length;
   const auto keeps_length = [&](Vec2 p, Vec2 far) { return distance(p, far) >= 0.5 * exact_length; };
-  const double rounded_along = dot(line.join - line.exact_join, e);
-  const double least_along = std::min(0.0, rounded_along) - slide, most_along = std::max(0.0, rounded_along) + slide;
+  const auto [least_along, most_along] = along_reach(line, e);
   const auto within_reach = [&](Vec2 p) {
     const double along = dot(p - line.exact_join, e);
     return along >= least_along && along <= most_along;
@@ -228,15 +239,18 @@ std::vector<BracketPlacement> bracket_placements(const Bracket& bracket, std::sp
   double bound = std::numeric_limits<double>::infinity();
   // The unrounded bracket with a stretch of each line, which a slid join's cubic takes over.
   const std::array<Vec2, 7>& x = bracket.exact;
-  const auto line_stretch = [](const std::variant<BracketLine, BracketNode>& end, Vec2 join) {
+  // As far towards its far end as a join may lie (along_reach).
+  const auto line_stretch = [](const std::variant<BracketLine, BracketNode>& end, Vec2 join, bool arrives) {
     const BracketLine* line = std::get_if<BracketLine>(&end);
-    return line ? join + (line->exact_far - join) * std::min(1.0, join_reach(*line) / distance(line->exact_far, join))
-                : join;
+    if (!line) return join;
+    const AlongReach reach = along_reach(*line, unit_direction(*line, arrives));
+    const double towards_far = arrives ? -reach.least : reach.most;
+    return join + (line->exact_far - join) * std::min(1.0, towards_far / distance(line->exact_far, join));
   };
-  std::vector<Vec2> exact{line_stretch(bracket.first, x[0])};
+  std::vector<Vec2> exact{line_stretch(bracket.first, x[0], true)};
   for (const Cubic& c : {Cubic{x[0], x[1], x[2], x[3]}, Cubic{x[3], x[4], x[5], x[6]}})
     for (int t = 0; t <= exact_samples; ++t) exact.push_back(c.point_at(double(t) / exact_samples));
-  exact.push_back(line_stretch(bracket.last, x[6]));
+  exact.push_back(line_stretch(bracket.last, x[6], false));
 
   // The side with fewer cubics leads (an end node's, else the one whose line steps longer),
   // and the other side's cubics are found only where their κ at the node can match (a stem's

@@ -262,11 +262,11 @@ class LinePlacer {
     // crossing the line at the far node or behind either (Carlito's w: the line under its
     // middle apex slid to where it passed through the end of the line from the apex, and the
     // curve between took two inflections).
-    const bool parallel_off = steps_[k] && cross(*steps_[k], d) == 0.0 && cross(d, rounded_[k].point - end) != 0.0;
     const bool far_line = !(out ? exact_[k].in_handle : exact_[k].out_handle);
-    const bool no_seat = parallel_off || (steps_[k] && far_line &&
-                                          !tangents_meet_ahead(end, out ? d * -1.0 : d, rounded_[k].point,
-                                                               out ? *steps_[k] : *steps_[k] * -1.0));
+    const bool no_seat =
+        steps_[k] && (far_line ? !tangents_meet_ahead(end, out ? d * -1.0 : d, rounded_[k].point,
+                                                      out ? *steps_[k] : *steps_[k] * -1.0)
+                               : cross(*steps_[k], d) == 0.0 && cross(d, rounded_[k].point - end) != 0.0);
     // A handle on the line reaching past the curve's far node along their chord folds the curve
     // back into it, whatever the far handle (Gentium Plus's M: one step of a (1, −111) leg, 2
     // units past a 91-unit curve's end, an S at its foot).

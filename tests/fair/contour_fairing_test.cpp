@@ -324,6 +324,13 @@ int inflections(const Outline& o, double upm) {
   return count;
 }
 
+// A glyph faired (by default: text, rounded) with no more inflections than its source.
+void expect_no_inflection_added(const std::string& font, const std::string& glyph) {
+  const FairedGlyph f = fair_named(font, glyph, FairOptions{});
+  ASSERT_TRUE(f.result.kept.empty()) << glyph << ": " << f.result.kept.front();
+  EXPECT_LE(inflections(f.result.glyph.outline, f.upm), inflections(f.source.outline, f.upm)) << glyph;
+}
+
 TEST(ContourFairing, RoundingAddsNoInflection) {
   // Inter's a: rounding turned nearly straight cubics of its bowl into S curves (4 inflections
   // against the source's 2). A node is nudged while either of its cubics bends more ways than
@@ -340,9 +347,7 @@ TEST(ContourFairing, ACurveBetweenTwoLinesKeepsRoomToBendOneWay) {
   // stroke's line. Rounding slid the stroke's line to a short step where it passed through the
   // end of the line from the apex: the two lines' tangents met at the curve's end, no handle
   // could seat the curve with κ = 0 on both, and it took an S (two inflections the source lacks).
-  const FairedGlyph f = fair_named(test::carlito, "w", FairOptions{});
-  ASSERT_TRUE(f.result.kept.empty()) << f.result.kept.front();
-  EXPECT_LE(inflections(f.result.glyph.outline, f.upm), inflections(f.source.outline, f.upm));
+  expect_no_inflection_added(test::carlito, "w");
 }
 
 TEST(ContourFairing, AGuideStretchEndingNearlyStraightGainsNoInflection) {
@@ -350,9 +355,7 @@ TEST(ContourFairing, AGuideStretchEndingNearlyStraightGainsNoInflection) {
   // budget), whose κ crosses zero a little before the corner at the bowl's foot and ends at
   // κ·UPM −0.06 after +0.02. Cut there, the last piece bent the other way: an inflection the
   // source lacks. That wander is now part of the piece before it, which ends flat.
-  const FairedGlyph f = fair_named(test::gentium_plus, "d", FairOptions{});
-  ASSERT_TRUE(f.result.kept.empty()) << f.result.kept.front();
-  EXPECT_LE(inflections(f.result.glyph.outline, f.upm), inflections(f.source.outline, f.upm));
+  expect_no_inflection_added(test::gentium_plus, "d");
 }
 
 TEST(ContourFairing, AStemsCurveToACornerIsOneCubic) {
