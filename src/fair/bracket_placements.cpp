@@ -59,11 +59,10 @@ AlongReach along_reach(const BracketLine& line, Vec2 e) {
 // `arrives`: the line arrives at the join (the bracket's first line), else it leaves it. The
 // line keeps half its unrounded length.
 std::vector<JoinPlace> join_places(const BracketLine& line, bool arrives, double most_turn) {
-  const Vec2 exact_dir = arrives ? line.exact_join - line.exact_far : line.exact_far - line.exact_join;
-  const double exact_length = norm(exact_dir);
+  const double exact_length = distance(line.exact_join, line.exact_far);
   std::vector<JoinPlace> out;
   if (exact_length == 0.0) return out;
-  const Vec2 e = exact_dir / exact_length;
+  const Vec2 e = unit_direction(line, arrives);
   const auto keeps_length = [&](Vec2 p, Vec2 far) { return distance(p, far) >= 0.5 * exact_length; };
   const auto [least_along, most_along] = along_reach(line, e);
   const auto within_reach = [&](Vec2 p) {
@@ -113,6 +112,15 @@ std::vector<JoinPlace> end_places(const std::variant<BracketLine, BracketNode>& 
   return join_places(std::get<BracketLine>(end), arrives, most_turn);
 }
 
+// The whole steps of `unit` units an end's handle may take: between 1/handle_share and
+// handle_share times its unrounded length, and at least one.
+struct HandleSteps {
+  double least, most;
+};
+HandleSteps end_handle_steps(double exact_handle, double unit) {
+  return {std::max(1.0, std::ceil(exact_handle / handle_share / unit)), std::floor(handle_share * exact_handle / unit)};
+}
+
 // One cubic of a bracket from one of its ends to its node, or from the node to an end.
 struct SideCubic {
   std::size_t place;    ///< into the side's end places
@@ -146,14 +154,14 @@ void node_side_cubics(const JoinPlace& place, std::size_t k, bool first, Vec2 no
   const SegmentEnd at_node = first ? SegmentEnd::end : SegmentEnd::start;
   const double chord = distance(node, place.join);
   const Vec2 into = first ? place.step : place.step * -1.0;  // from the end node into the bracket
+  const double unit = norm(into);
+  const HandleSteps steps = end_handle_steps(exact_handle, unit);
   for (double m = 1.0; m * norm(u) < chord; ++m) {
     const Vec2 far = node + u * (first ? -m : m);
     std::vector<Vec2> nears;
     if (place.kappa) nears = handles_for_curvature(place.join, place.step, first, far, node, *place.kappa);
     else
-      for (double a = std::max(1.0, std::ceil(exact_handle / handle_share / norm(into)));
-           a * norm(into) < chord && a * norm(into) <= handle_share * exact_handle; ++a)
-        nears.push_back(place.join + into * a);
+      for (double a = steps.least; a * unit < chord && a <= steps.most; ++a) nears.push_back(place.join + into * a);
     for (const Vec2 near : nears) {
       const Cubic c = first ? Cubic{place.join, near, far, node} : Cubic{node, far, near, place.join};
       const double kappa = node_curvature(c, at_node);
@@ -177,15 +185,14 @@ void line_side_cubics(const JoinPlace& place, std::size_t k, bool first, Vec2 no
   const SegmentEnd at_join = first ? SegmentEnd::start : SegmentEnd::end;
   const SegmentEnd at_node = first ? SegmentEnd::end : SegmentEnd::start;
   const Vec2 into = first ? place.step : place.step * -1.0;  // along the line into the bracket
+  const HandleSteps steps = end_handle_steps(exact_handle, norm(into));
   for (const Vec2 far : handles_near_line(node, u, first ? -1.0 : 1.0, place.join, place.step)) {
     const auto cubic = [&](double a) {
       const Vec2 near = place.join + into * a;
       return first ? Cubic{place.join, near, far, node} : Cubic{node, far, near, place.join};
     };
-    const double unit = norm(into);
-    double lo = std::max(1.0, std::ceil(exact_handle / handle_share / unit));
-    double hi = std::min(std::ceil(dot(far - place.join, into) / dot(into, into)) - 1.0,
-                         std::floor(handle_share * exact_handle / unit));
+    double lo = steps.least;
+    double hi = std::min(std::ceil(dot(far - place.join, into) / dot(into, into)) - 1.0, steps.most);
     if (wanted) {
       const double k1 = node_curvature(cubic(1.0), at_node), per_step = node_curvature(cubic(2.0), at_node) - k1;
       if (per_step == 0.0) {

@@ -32,15 +32,15 @@ std::vector<PathPiece> guide_pieces(const GuideStretch& g, bool whole_loop, bool
     return kappa[static_cast<std::size_t>(k)] * kappa[static_cast<std::size_t>(k - 1)] < 0.0;
   };
   int lead_change = 0, tail_change = steps;  // the first change before first_past, the last after last_past
-  for (int k = first_past; k >= 2 && k < steps; --k)
+  for (int k = 2; k <= first_past && k < steps && lead_change == 0; ++k)
     if (changes_sign(k)) lead_change = k;
   for (int k = std::max(2, last_past + 1); k < steps; ++k)
     if (changes_sign(k)) tail_change = k;
   const double most_wander = 0.05 * steps;
   const bool bends = !whole_loop && last_past >= first_past;  // a whole closed guide has no ends
   const bool lead_wanders = bends && lead_change <= most_wander, tail_wanders = bends && steps - tail_change <= most_wander;
-  if (!lead_wanders) first_past = 1;
-  if (!tail_wanders) last_past = steps;
+  // Sign changes count as inflections only in (cut_from, cut_to].
+  const int cut_from = lead_wanders ? first_past : 1, cut_to = tail_wanders ? last_past : steps;
   std::vector<double> cuts{0.0};
   std::vector<bool> at_flip{false};
   TurnCounter counter;
@@ -48,7 +48,7 @@ std::vector<PathPiece> guide_pieces(const GuideStretch& g, bool whole_loop, bool
   for (int k = 1; k < steps; ++k) {
     const double s = length * k / steps, kk = kappa[static_cast<std::size_t>(k)], theta = ref.theta_at(g.s0 + s);
     const double sign = kk > 0.0 ? 1.0 : -1.0;
-    const bool flips = last_sign != 0.0 && sign != last_sign && k > first_past && k <= last_past;
+    const bool flips = last_sign != 0.0 && sign != last_sign && k > cut_from && k <= cut_to;
     const bool quarter = std::abs(theta - theta_at_cut) > std::numbers::pi / 2;
     const int turns_before = counter.turns;
     counter.add(kk, swing);
