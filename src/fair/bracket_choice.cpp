@@ -51,8 +51,11 @@ bool place_bracket(std::vector<OutlineNode>& nodes, const std::vector<OutlineNod
   const Bracket bracket{end(h, before, (before + n - 1) % n), end(j, after, (after + 1) % n),
                         {ideal[h].point, *ideal[h].out_handle, *ideal[i].in_handle, ideal[i].point,
                          *ideal[i].out_handle, *ideal[j].in_handle, ideal[j].point}};
+  // The node within two units of where the passes left it, however far that is from its
+  // unrounded place (the judge keeps its cubics within their allowance): within two of both,
+  // Carlito's M, its vertex's node slid four units, had no place with a placement.
   const std::vector<BracketPlacement> placements =
-      bracket_placements(bracket, node_places(nodes[i].point, ideal[i].point, 2), node_directions(*steps[i], ideal[i]),
+      bracket_placements(bracket, node_places(nodes[i].point, nodes[i].point, 2), node_directions(*steps[i], ideal[i]),
                          flat, target_jump, grid_turn, bracket_tries);
   if (placements.empty()) return false;
   const NodeChange change(nodes, joins, judge, flat, i);

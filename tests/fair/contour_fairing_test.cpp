@@ -738,6 +738,17 @@ TEST(ContourFairing, ABracketWhoseJoinRoundingSlidFarIsPlacedAsOnePiece) {
   EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm, std::pair{Vec2{200, -20}, Vec2{300, 120}}), 0);
 }
 
+TEST(ContourFairing, ABracketIsPlacedAboutItsNodeWhereThePassesLeftIt) {
+  // Carlito's M, its middle vertex: a short level line, two cubics round the vertex (κ·UPM −66
+  // against −50 at their node) and the left stroke's (−7, 12) line. The passes had slid the node
+  // four units from its unrounded place, so none of the places a bracket's node was sought at
+  // (within two units of both) had a placement; sought about where it stands, the bracket meets
+  // at all three joins.
+  const FairedGlyph f = fair_named(test::carlito, "M", options_for(FairProfile::text, Rounding::integers));
+  ASSERT_TRUE(f.result.kept.empty()) << f.result.kept.front();
+  EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm, std::pair{Vec2{780, 180}, Vec2{900, 260}}), 0);
+}
+
 TEST(ContourFairing, ASpanWithNoG2CubicMeetsOneEndsCurvature) {
   // Linux Libertine's g, written as floats: two short, nearly flat spans of its ear had no
   // cubic meeting both ends' curvatures, and G1 handles left a jump at each end (κ·UPM 1.24
