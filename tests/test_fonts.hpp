@@ -18,7 +18,7 @@ inline const std::string eb_garamond = fonts + "/EBGaramond/EBGaramond12-Regular
 inline const std::string noto_sans = fonts + "/NotoSans/NotoSans-Regular-subset.ttf";  // h
 inline const std::string noto_serif = fonts + "/NotoSerif/NotoSerif-Regular-subset.ttf";  // A, E, Y, Z, k, v
 inline const std::string free_serif = fonts + "/FreeSerif/FreeSerif-subset.ttf";  // w
-inline const std::string carlito = fonts + "/Carlito/Carlito-Regular-subset.ttf";  // w, M
+inline const std::string carlito = fonts + "/Carlito/Carlito-Regular-subset.ttf";  // w, M, x
 inline const std::string gentium_plus = fonts + "/GentiumPlus/GentiumPlus-Regular-subset.ttf";  // d
 inline const std::string linux_libertine = fonts + "/LinuxLibertine/LinLibertine_R-subset.otf";  // d, g, M, Z
 // dkg handwriting's T, renamed (its licence reserves the name)

@@ -749,6 +749,16 @@ TEST(ContourFairing, ABracketIsPlacedAboutItsNodeWhereThePassesLeftIt) {
   EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm, std::pair{Vec2{780, 180}, Vec2{900, 260}}), 0);
 }
 
+TEST(ContourFairing, ABracketLeavesAFarNodeThatDoesNotTurnAsItIs) {
+  // Carlito's x, its lower left foot: the stroke's line, two cubics (κ·UPM −11.4 against −12.3
+  // at their node) and the baseline. The stroke's line starts at a smooth node where the
+  // crotch's curve meets it, turning by 4e-16 radians unrounded; every placement left it at 0,
+  // "turning less than it did", and was refused.
+  const FairedGlyph f = fair_named(test::carlito, "x", options_for(FairProfile::text, Rounding::integers));
+  ASSERT_TRUE(f.result.kept.empty()) << f.result.kept.front();
+  EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm, std::pair{Vec2{150, -10}, Vec2{260, 70}}), 0);
+}
+
 TEST(ContourFairing, ASpanWithNoG2CubicMeetsOneEndsCurvature) {
   // Linux Libertine's g, written as floats: two short, nearly flat spans of its ear had no
   // cubic meeting both ends' curvatures, and G1 handles left a jump at each end (κ·UPM 1.24
