@@ -15,10 +15,6 @@ namespace {
 // The most placements of a bracket judged (nearest the unrounded bracket first): the Pagella
 // serifs that take one take it among the first few.
 constexpr std::size_t bracket_tries = 48;
-// Radians: what float arithmetic leaves of a far node that does not turn (a smooth node where
-// a curve meets the line: Carlito's x, 4e-16 unrounded, 0 on the grid, where every placement
-// had been refused for turning it less than it did).
-constexpr double turn_noise = 1e-9;
 
 }  // namespace
 
@@ -43,14 +39,8 @@ bool place_bracket(std::vector<OutlineNode>& nodes, const std::vector<OutlineNod
       const double kappa = far == before ? curvatures_at(nodes, join).first : curvatures_at(nodes, join).second;
       return BracketNode{nodes[join].point, step, kappa};
     }
-    const Vec2 d = ideal[far].point - ideal[join].point;
-    BracketLine l{nodes[far].point, std::nullopt, nodes[join].point, step, ideal[far].point, ideal[join].point,
-                  !nodes[far].smooth && d.x != 0.0 && d.y != 0.0};
-    const Vec2 nearest = nearest_grid_point(ideal[far].point), other = nodes[beyond].point;
     const bool beyond_is_line = !(far == before ? joins.is_cubic(beyond) : joins.is_cubic(far));
-    const bool stays_upright = (l.far.x == other.x && nearest.x == other.x) || (l.far.y == other.y && nearest.y == other.y);
-    if (l.may_turn && beyond_is_line && stays_upright && nearest != l.far) l.far_alternative = nearest;
-    return l;
+    return bracket_line(nodes, ideal, step, join, far, beyond_is_line, nodes[beyond].point);
   };
   const Bracket bracket{end(h, before, (before + n - 1) % n), end(j, after, (after + 1) % n),
                         {ideal[h].point, *ideal[h].out_handle, *ideal[i].in_handle, ideal[i].point,
@@ -65,8 +55,6 @@ bool place_bracket(std::vector<OutlineNode>& nodes, const std::vector<OutlineNod
   const NodeChange change(nodes, joins, judge, flat, i);
   // The far corners of lines turn no less than the kink limit, or than they did.
   const bool line_before = joins.meets_line(h), line_after = joins.meets_line(j);
-  const double least_before = std::min(kink_limit, turn_at(ideal, joins.closed, before));
-  const double least_after = std::min(kink_limit, turn_at(ideal, joins.closed, after));
   const std::array<OutlineNode, 5> kept{nodes[before], nodes[h], nodes[i], nodes[j], nodes[after]};
   double best_cost = change.cost();
   const BracketPlacement* best = nullptr;
@@ -79,8 +67,8 @@ bool place_bracket(std::vector<OutlineNode>& nodes, const std::vector<OutlineNod
   };
   for (const BracketPlacement& p : placements) {
     place(p);
-    if ((line_before && turn_at(nodes, joins.closed, before) < least_before - turn_noise) ||
-        (line_after && turn_at(nodes, joins.closed, after) < least_after - turn_noise))
+    if ((line_before && turns_less_than_it_did(nodes, ideal, joins.closed, before)) ||
+        (line_after && turns_less_than_it_did(nodes, ideal, joins.closed, after)))
       continue;
     if (const std::optional<double> c = change.cost_under(best_cost)) best_cost = *c, best = &p;
   }

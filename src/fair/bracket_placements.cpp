@@ -26,14 +26,6 @@ constexpr int exact_samples = 48;  // points per unrounded cubic the spread is m
 // (Pagella's M: 48 placements, one cubic on the serif's side, none allowed).
 constexpr std::size_t pairings_per_cubic = 3;
 
-// A join's place on its line and the line's step there, along the contour's direction; or, at
-// an end that is a node, that node, its direction and the curvature to meet there.
-struct JoinPlace {
-  Vec2 far, join, step;
-  bool at_node = false;
-  std::optional<double> kappa;  ///< at a node: the curvature to meet there, if any
-};
-
 // The line's unit direction, from its far end to its join where it `arrives` at the join (the
 // bracket's first line), else from its join to its far end.
 Vec2 unit_direction(const BracketLine& line, bool arrives) {
@@ -49,60 +41,6 @@ struct AlongReach {
 AlongReach along_reach(const BracketLine& line, Vec2 e) {
   const double rounded = dot(line.join - line.exact_join, e);
   return {std::min(0.0, rounded) - slide, std::max(0.0, rounded) + slide};
-}
-
-// Where a join may go: along its line within `slide` of the unrounded join and of its rounded
-// place and between them (where a curve ends nearly straight, rounding may slide its join
-// farther: FreeSerif's w and TeX Gyre Pagella's m, y, V and X meet only beyond `slide`), or,
-// where the line may turn about its far end, at grid points within `off_line` of the unrounded
-// line (the step then from the far end to the join), turning the line by at most `most_turn`.
-// `arrives`: the line arrives at the join (the bracket's first line), else it leaves it. The
-// line keeps half its unrounded length.
-std::vector<JoinPlace> join_places(const BracketLine& line, bool arrives, double most_turn) {
-  const double exact_length = distance(line.exact_join, line.exact_far);
-  std::vector<JoinPlace> out;
-  if (exact_length == 0.0) return out;
-  const Vec2 e = unit_direction(line, arrives);
-  const auto keeps_length = [&](Vec2 p, Vec2 far) { return distance(p, far) >= 0.5 * exact_length; };
-  const auto [least_along, most_along] = along_reach(line, e);
-  const auto within_reach = [&](Vec2 p) {
-    const double along = dot(p - line.exact_join, e);
-    return along >= least_along && along <= most_along;
-  };
-  if (!line.may_turn) {
-    const double unit = norm(line.step);
-    const int most = std::min(most_slide_steps, static_cast<int>(slide / unit));
-    for (int k = -most; k <= most; ++k) {
-      const Vec2 p = line.join + line.step * static_cast<double>(k);
-      if (within_reach(p) && keeps_length(p, line.far))
-        out.push_back({line.far, p, line.step, false, std::nullopt});
-    }
-    return out;
-  }
-  std::vector<Vec2> fars{line.far};
-  if (line.far_alternative) fars.push_back(*line.far_alternative);
-  // Grid points near the unrounded line: along its major axis, the two either side of it.
-  const bool along_x = std::abs(e.x) >= std::abs(e.y);
-  const double major = along_x ? e.x : e.y;
-  const double centre = along_x ? line.exact_join.x : line.exact_join.y;
-  const double from = centre + std::min(least_along * major, most_along * major) - 1.0;
-  const double to = centre + std::max(least_along * major, most_along * major) + 1.0;
-  for (double u = std::ceil(from); u <= to; ++u) {
-    const double t = (u - centre) / major;  // along the line from the exact join
-    const Vec2 on = line.exact_join + e * t;
-    const double minor = along_x ? on.y : on.x;
-    for (const double v : {std::floor(minor), std::ceil(minor)}) {
-      const Vec2 p = along_x ? Vec2{u, v} : Vec2{v, u};
-      if (std::abs(cross(e, p - line.exact_join)) > off_line || !within_reach(p)) continue;
-      for (const Vec2 far : fars) {
-        const std::optional<Vec2> step = primitive_step(arrives ? p - far : far - p);
-        if (!step || std::abs(turning_angle(e, *step)) > most_turn || !keeps_length(p, far)) continue;
-        if (std::none_of(out.begin(), out.end(), [&](const JoinPlace& q) { return q.join == p && q.far == far; }))
-          out.push_back({far, p, *step, false, std::nullopt});
-      }
-    }
-  }
-  return out;
 }
 
 // The places of a bracket's end: its line's (join_places) or its node.
@@ -235,6 +173,67 @@ void keep_least_spread(std::vector<BracketPlacement>& found, std::size_t most) {
 }
 
 }  // namespace
+
+BracketLine bracket_line(const std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal, Vec2 step,
+                         std::size_t join, std::size_t far, bool beyond_is_line, Vec2 beyond) {
+  const Vec2 d = ideal[far].point - ideal[join].point;
+  BracketLine l{nodes[far].point, std::nullopt, nodes[join].point, step, ideal[far].point, ideal[join].point,
+                !nodes[far].smooth && d.x != 0.0 && d.y != 0.0};
+  const Vec2 nearest = nearest_grid_point(ideal[far].point);
+  const bool stays_upright = (l.far.x == beyond.x && nearest.x == beyond.x) || (l.far.y == beyond.y && nearest.y == beyond.y);
+  if (l.may_turn && beyond_is_line && stays_upright && nearest != l.far) l.far_alternative = nearest;
+  return l;
+}
+
+// Within `slide` of the rounded place too: where a curve ends nearly straight, rounding may
+// slide its join farther (FreeSerif's w and TeX Gyre Pagella's m, y, V and X meet only there).
+std::vector<JoinPlace> join_places(const BracketLine& line, bool arrives, double most_turn) {
+  const double exact_length = distance(line.exact_join, line.exact_far);
+  std::vector<JoinPlace> out;
+  if (exact_length == 0.0) return out;
+  const Vec2 e = unit_direction(line, arrives);
+  const auto keeps_length = [&](Vec2 p, Vec2 far) { return distance(p, far) >= 0.5 * exact_length; };
+  const auto [least_along, most_along] = along_reach(line, e);
+  const auto within_reach = [&](Vec2 p) {
+    const double along = dot(p - line.exact_join, e);
+    return along >= least_along && along <= most_along;
+  };
+  if (!line.may_turn) {
+    const double unit = norm(line.step);
+    const int most = std::min(most_slide_steps, static_cast<int>(slide / unit));
+    for (int k = -most; k <= most; ++k) {
+      const Vec2 p = line.join + line.step * static_cast<double>(k);
+      if (within_reach(p) && keeps_length(p, line.far))
+        out.push_back({line.far, p, line.step, false, std::nullopt});
+    }
+    return out;
+  }
+  std::vector<Vec2> fars{line.far};
+  if (line.far_alternative) fars.push_back(*line.far_alternative);
+  // Grid points near the unrounded line: along its major axis, the two either side of it.
+  const bool along_x = std::abs(e.x) >= std::abs(e.y);
+  const double major = along_x ? e.x : e.y;
+  const double centre = along_x ? line.exact_join.x : line.exact_join.y;
+  const double from = centre + std::min(least_along * major, most_along * major) - 1.0;
+  const double to = centre + std::max(least_along * major, most_along * major) + 1.0;
+  for (double u = std::ceil(from); u <= to; ++u) {
+    const double t = (u - centre) / major;  // along the line from the exact join
+    const Vec2 on = line.exact_join + e * t;
+    const double minor = along_x ? on.y : on.x;
+    for (const double v : {std::floor(minor), std::ceil(minor)}) {
+      const Vec2 p = along_x ? Vec2{u, v} : Vec2{v, u};
+      if (std::abs(cross(e, p - line.exact_join)) > off_line || !within_reach(p)) continue;
+      for (const Vec2 far : fars) {
+        const std::optional<Vec2> step = primitive_step(arrives ? p - far : far - p);
+        if (!step || std::abs(turning_angle(e, *step)) > most_turn || !keeps_length(p, far)) continue;
+        if (std::none_of(out.begin(), out.end(), [&](const JoinPlace& q) { return q.join == p && q.far == far; }))
+          out.push_back({far, p, *step, false, std::nullopt});
+      }
+    }
+  }
+  return out;
+}
+
 
 std::vector<BracketPlacement> bracket_placements(const Bracket& bracket, std::span<const Vec2> node_points,
                                                  std::span<const Vec2> node_steps, double flat, double target,

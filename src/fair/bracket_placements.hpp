@@ -35,6 +35,29 @@ struct BracketLine {
   bool may_turn = false;
 };
 
+/// The line from node `join` (smooth, meeting a cubic) to node `far` as the passes left it
+/// (`step` its primitive step along the contour), with its unrounded self: it may turn where
+/// `far` is a corner and the unrounded line is off the axes, and `far` may go back to its nearest
+/// grid point where the line beyond it (`beyond_is_line`, ending at `beyond`) is horizontal or
+/// vertical and stays so.
+BracketLine bracket_line(const std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal, Vec2 step,
+                         std::size_t join, std::size_t far, bool beyond_is_line, Vec2 beyond);
+
+/// A join's place on its line and the line's step there, along the contour's direction; or, at
+/// an end that is a node, that node, its direction and the curvature to meet there.
+struct JoinPlace {
+  Vec2 far, join, step;
+  bool at_node = false;
+  std::optional<double> kappa;  ///< at a node: the curvature to meet there, if any
+};
+
+/// Where a join may go: along its line within 16 units of the unrounded join and of its rounded
+/// place and between them (four of its steps at most), or, where the line may turn about its far
+/// end, at grid points within 0.75 units of the unrounded line (the step then from the far end
+/// to the join), turning the line by at most `most_turn`. `arrives`: the line arrives at the
+/// join (a bracket's first line), else it leaves it. The line keeps half its unrounded length.
+std::vector<JoinPlace> join_places(const BracketLine& line, bool arrives, double most_turn);
+
 /// A node a bracket ends at instead of a line: the third node of a longer run from a line,
 /// whose κ must match `kappa`, the curvature of the cubic beyond it, or a corner (no `kappa`:
 /// its curvature binds nothing). It stays where it is, its handle on the bracket's side taking

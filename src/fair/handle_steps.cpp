@@ -6,6 +6,7 @@
 
 #include "fair/bracket_choice.hpp"
 #include "fair/cubic_judge.hpp"
+#include "fair/lone_cubic.hpp"
 #include "fair/node_change.hpp"
 #include "fair/node_seats.hpp"
 #include "fair/outline_joins.hpp"
@@ -243,6 +244,14 @@ void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<Outl
       place_bracket(nodes, ideal, steps, joins, run.front(), judge, limits.flat_curvature);
     if (!pair && to_line && jumps_at(run[run.size() - 2]))
       place_bracket(nodes, ideal, steps, joins, run[run.size() - 2], judge, limits.flat_curvature);
+  }
+  // A lone cubic between two lines, where one of its joins jumps.
+  for (const std::vector<std::size_t>& run : runs) {
+    const std::size_t last = (run.front() + 1) % n;
+    if (cycle || run.size() != 1 || !joins.meets_line(run.front()) || !joins.meets_line(last)) continue;
+    if (join_jump(joins, run.front(), limits.flat_curvature) > target_jump ||
+        join_jump(joins, last, limits.flat_curvature) > target_jump)
+      seat_lone_cubic(nodes, ideal, steps, joins, run.front(), judge, limits.flat_curvature);
   }
 }
 

@@ -1,5 +1,6 @@
 #include "fair/outline_joins.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -26,6 +27,13 @@ bool corner_to_keep(const std::vector<OutlineNode>& ideal, bool closed, std::siz
   const bool between_cubics = node.in_handle && node.out_handle;
   const double turn = turn_at(ideal, closed, k);
   return turn >= radians(kink_limit_deg + (between_cubics ? 1.0 : 0.0)) && turn < std::numbers::pi;
+}
+
+bool turns_less_than_it_did(const std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal, bool closed,
+                            std::size_t k) {
+  constexpr double turn_noise = 1e-9;  // radians
+  const double least = std::min(radians(kink_limit_deg), turn_at(ideal, closed, k));
+  return turn_at(nodes, closed, k) < least - turn_noise;
 }
 
 std::pair<double, double> curvatures_at(const std::vector<OutlineNode>& nodes, std::size_t k) {

@@ -48,6 +48,12 @@ double turn_at(const std::vector<OutlineNode>& nodes, bool closed, std::size_t k
 /// three runs as drawn, after 105 s instead of 18.
 bool corner_to_keep(const std::vector<OutlineNode>& ideal, bool closed, std::size_t k);
 
+/// Whether node k of `nodes` turns less than its unrounded self (`ideal`) did, or than the kink
+/// limit where that turned more, beyond float noise (a smooth node where a curve meets a line
+/// turns by 4e-16 radians unrounded and 0 on the grid: Carlito's x).
+bool turns_less_than_it_did(const std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal, bool closed,
+                            std::size_t k);
+
 /// The curvatures at node k of the cubic arriving there and the one leaving it.
 std::pair<double, double> curvatures_at(const std::vector<OutlineNode>& nodes, std::size_t k);
 

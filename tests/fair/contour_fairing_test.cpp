@@ -728,14 +728,19 @@ TEST(ContourFairing, TwoCubicsBetweenALineAndACornerArePlacedAsOnePiece) {
   for (const char* name : {"v", "k"}) expect_faired_g2(test::noto_serif, name);
 }
 
+// No smooth join of `glyph` inside `box` jumps, faired and rounded as text.
+void expect_no_g2_jump_rounded(const std::string& font, const std::string& glyph, std::pair<Vec2, Vec2> box) {
+  const FairedGlyph f = fair_named(font, glyph, options_for(FairProfile::text, Rounding::integers));
+  ASSERT_TRUE(f.result.kept.empty()) << glyph << ": " << f.result.kept.front();
+  EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm, box), 0) << glyph;
+}
+
 TEST(ContourFairing, ABracketWhoseJoinRoundingSlidFarIsPlacedAsOnePiece) {
   // FreeSerif's w, its left vertex: a line into two cubics round the vertex (κ·UPM −740 against
   // −667 at its node). The curve leaves the line nearly straight and rounding had slid the join
   // farther down the line than the 16 units a bracket's join was sought within; sought within
   // 16 units of where it was slid as well, the bracket meets at all three joins.
-  const FairedGlyph f = fair_named(test::free_serif, "w", options_for(FairProfile::text, Rounding::integers));
-  ASSERT_TRUE(f.result.kept.empty()) << f.result.kept.front();
-  EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm, std::pair{Vec2{200, -20}, Vec2{300, 120}}), 0);
+  expect_no_g2_jump_rounded(test::free_serif, "w", {Vec2{200, -20}, Vec2{300, 120}});
 }
 
 TEST(ContourFairing, ABracketIsPlacedAboutItsNodeWhereThePassesLeftIt) {
@@ -744,9 +749,7 @@ TEST(ContourFairing, ABracketIsPlacedAboutItsNodeWhereThePassesLeftIt) {
   // four units from its unrounded place, so none of the places a bracket's node was sought at
   // (within two units of both) had a placement; sought about where it stands, the bracket meets
   // at all three joins.
-  const FairedGlyph f = fair_named(test::carlito, "M", options_for(FairProfile::text, Rounding::integers));
-  ASSERT_TRUE(f.result.kept.empty()) << f.result.kept.front();
-  EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm, std::pair{Vec2{780, 180}, Vec2{900, 260}}), 0);
+  expect_no_g2_jump_rounded(test::carlito, "M", {Vec2{780, 180}, Vec2{900, 260}});
 }
 
 TEST(ContourFairing, ABracketLeavesAFarNodeThatDoesNotTurnAsItIs) {
@@ -754,9 +757,15 @@ TEST(ContourFairing, ABracketLeavesAFarNodeThatDoesNotTurnAsItIs) {
   // at their node) and the baseline. The stroke's line starts at a smooth node where the
   // crotch's curve meets it, turning by 4e-16 radians unrounded; every placement left it at 0,
   // "turning less than it did", and was refused.
-  const FairedGlyph f = fair_named(test::carlito, "x", options_for(FairProfile::text, Rounding::integers));
-  ASSERT_TRUE(f.result.kept.empty()) << f.result.kept.front();
-  EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm, std::pair{Vec2{150, -10}, Vec2{260, 70}}), 0);
+  expect_no_g2_jump_rounded(test::carlito, "x", {Vec2{150, -10}, Vec2{260, 70}});
+}
+
+TEST(ContourFairing, ALoneCubicBetweenTwoLinesTakesBothHandlesAtTheirCrossing) {
+  // Carlito's w, under its middle apex: the line from the apex and the stroke's line, a curve
+  // of a few degrees between them (κ·UPM −18 where it left the short line). κ = 0 at both ends
+  // needs both handles where the lines cross, and that fell off the grid; the short line turned
+  // about the apex so that the crossing is a grid point of both.
+  expect_no_g2_jump_rounded(test::carlito, "w", {Vec2{680, 600}, Vec2{740, 790}});
 }
 
 TEST(ContourFairing, ASpanWithNoG2CubicMeetsOneEndsCurvature) {

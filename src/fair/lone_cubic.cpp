@@ -1,0 +1,110 @@
+#include "fair/lone_cubic.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <utility>
+
+#include "fair/bracket_placements.hpp"
+#include "fair/step_costs.hpp"
+
+namespace gf {
+
+namespace {
+
+constexpr double crossing_reach = 3.0;  // units the crossing X may lie from the unrounded one
+
+// The crossing of the unrounded lines, ahead of the cubic's start (at node a) and behind its end
+// (node a + 1); none where they run parallel or cross elsewhere.
+std::optional<Vec2> unrounded_crossing(const std::vector<OutlineNode>& ideal, std::size_t a) {
+  const std::size_t n = ideal.size(), b = (a + 1) % n;
+  const Vec2 p = ideal[a].point, u = p - ideal[(a + n - 1) % n].point;
+  const Vec2 q = ideal[b].point, w = ideal[(b + 1) % n].point - q;
+  const double across = cross(u, w);
+  if (across == 0.0) return std::nullopt;
+  const double s = cross(q - p, w) / across, t = cross(q - p, u) / across;
+  if (s <= 0.0 || t >= 0.0) return std::nullopt;
+  return p + u * s;
+}
+
+using GridPoint = std::pair<double, double>;
+
+// For each grid point within crossing_reach of `crossing` that a join place's line reaches at
+// whole steps beyond the join (ahead of it where the line `arrives` at the join, else behind
+// it), the places that reach it.
+std::map<GridPoint, std::vector<JoinPlace>> places_by_crossing(const std::vector<JoinPlace>& places, bool arrives,
+                                                               Vec2 crossing) {
+  std::map<GridPoint, std::vector<JoinPlace>> out;
+  for (const JoinPlace& p : places) {
+    const Vec2 towards = arrives ? p.step : p.step * -1.0;  // from the join towards the crossing
+    const double k0 = dot(crossing - p.join, towards) / dot(towards, towards);
+    for (const double k : {std::floor(k0), std::ceil(k0)}) {
+      const Vec2 x = p.join + towards * k;
+      if (k < 1.0 || distance(x, crossing) > crossing_reach) continue;
+      std::vector<JoinPlace>& at = out[{x.x, x.y}];
+      if (at.empty() || at.back().join != p.join || at.back().far != p.far) at.push_back(p);
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+bool seat_lone_cubic(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal,
+                     std::vector<std::optional<Vec2>>& steps, const OutlineJoins& joins, std::size_t a, CubicJudge& judge,
+                     double flat) {
+  const std::size_t n = nodes.size(), b = (a + 1) % n, fa = (a + n - 1) % n, fb = (b + 1) % n;
+  if (n < 4 || !steps[a] || !steps[b]) return false;
+  const std::optional<Vec2> crossing = unrounded_crossing(ideal, a);
+  if (!crossing) return false;
+  const BracketLine first = bracket_line(nodes, ideal, *steps[a], a, fa, !joins.is_cubic((fa + n - 1) % n),
+                                         nodes[(fa + n - 1) % n].point);
+  const BracketLine last = bracket_line(nodes, ideal, *steps[b], b, fb, !joins.is_cubic(fb), nodes[(fb + 1) % n].point);
+  const auto firsts = places_by_crossing(join_places(first, true, grid_turn), true, *crossing);
+  const auto lasts = places_by_crossing(join_places(last, false, grid_turn), false, *crossing);
+
+  // What the cubic may not gain, as NodeChange allows: what its unrounded and present selves have.
+  const CubicTraits& unrounded = judge.unrounded(a);
+  const CubicTraits now = judge.traits(a, outline_cubic(nodes, a));
+  const int most_inflections = judge.inflections_added(a, now);
+  const int most_extrema = std::max(unrounded.extrema.all, now.extrema.all);
+  const double most_overreach = std::max(unrounded.overreach, now.overreach);
+  const double most_turning = std::max(unrounded.turning, now.turning);
+  const auto cost_of = [&](const CubicTraits& t) {
+    return jump_cost(relative_jump(t.k_start, 0.0, flat)) + jump_cost(relative_jump(t.k_end, 0.0, flat)) +
+           shape_cost(t.shape, unrounded.shape, flat);
+  };
+  double best_cost = cost_of(now);
+
+  const std::array<OutlineNode, 4> kept{nodes[fa], nodes[a], nodes[b], nodes[fb]};
+  const auto place = [&](Vec2 x, const JoinPlace& p, const JoinPlace& q) {
+    nodes[fa].point = p.far, nodes[a].point = p.join, nodes[a].out_handle = x;
+    nodes[b].point = q.join, nodes[b].in_handle = x, nodes[fb].point = q.far;
+  };
+  std::optional<std::pair<Vec2, std::pair<JoinPlace, JoinPlace>>> best;
+  for (const auto& [x_at, ps] : firsts) {
+    const auto qs = lasts.find(x_at);
+    if (qs == lasts.end()) continue;
+    const Vec2 x{x_at.first, x_at.second};
+    for (const JoinPlace& p : ps)
+      for (const JoinPlace& q : qs->second) {
+        place(x, p, q);
+        const CubicTraits& t = judge.traits(a, outline_cubic(nodes, a));
+        const double c = cost_of(t);
+        if (c >= best_cost || !t.within || judge.inflections_added(a, t) > most_inflections ||
+            t.extrema.all > most_extrema || t.overreach > most_overreach || t.turning > most_turning + fold_turn ||
+            turns_less_than_it_did(nodes, ideal, joins.closed, fa) || turns_less_than_it_did(nodes, ideal, joins.closed, fb))
+          continue;
+        best_cost = c, best = std::pair{x, std::pair{p, q}};
+      }
+  }
+  nodes[fa] = kept[0], nodes[a] = kept[1], nodes[b] = kept[2], nodes[fb] = kept[3];
+  if (!best) return false;
+  place(best->first, best->second.first, best->second.second);
+  steps[a] = best->second.first.step, steps[b] = best->second.second.step;
+  return true;
+}
+
+}  // namespace gf
