@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 #include <optional>
+#include <span>
 #include <utility>
 
 #include "fair/bracket_placements.hpp"
@@ -34,7 +35,7 @@ using GridPoint = std::pair<double, double>;
 // For each grid point within crossing_reach of `crossing` that a join place's line reaches at
 // whole steps beyond the join (ahead of it where the line `arrives` at the join, else behind
 // it), the places that reach it.
-std::map<GridPoint, std::vector<JoinPlace>> places_by_crossing(const std::vector<JoinPlace>& places, bool arrives,
+std::map<GridPoint, std::vector<JoinPlace>> places_by_crossing(std::span<const JoinPlace> places, bool arrives,
                                                                Vec2 crossing) {
   std::map<GridPoint, std::vector<JoinPlace>> out;
   for (const JoinPlace& p : places) {
@@ -53,8 +54,8 @@ std::map<GridPoint, std::vector<JoinPlace>> places_by_crossing(const std::vector
 }  // namespace
 
 bool seat_lone_cubic(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal,
-                     std::vector<std::optional<Vec2>>& steps, const OutlineJoins& joins, std::size_t a, CubicJudge& judge,
-                     double flat) {
+                     std::vector<std::optional<Vec2>>& steps, const OutlineJoins& joins, std::size_t a,
+                     CubicJudge& judge, double flat) {
   const std::size_t n = nodes.size(), b = (a + 1) % n, fa = (a + n - 1) % n, fb = (b + 1) % n;
   if (n < 4 || !steps[a] || !steps[b]) return false;
   const std::optional<Vec2> crossing = unrounded_crossing(ideal, a);
@@ -95,7 +96,8 @@ bool seat_lone_cubic(std::vector<OutlineNode>& nodes, const std::vector<OutlineN
         const double c = cost_of(t);
         if (c >= best_cost || !t.within || judge.inflections_added(a, t) > most_inflections ||
             t.extrema.all > most_extrema || t.overreach > most_overreach || t.turning > most_turning + fold_turn ||
-            turns_less_than_it_did(nodes, ideal, joins.closed, fa) || turns_less_than_it_did(nodes, ideal, joins.closed, fb))
+            turns_less_than_it_did(nodes, ideal, joins.closed, fa) ||
+            turns_less_than_it_did(nodes, ideal, joins.closed, fb))
           continue;
         best_cost = c, best = std::pair{x, std::pair{p, q}};
       }

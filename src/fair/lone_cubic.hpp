@@ -23,7 +23,7 @@ namespace gf {
 /// and its present self both lack; the far corners turning no less than the kink limit or than
 /// they did) stands where it costs less than the cubic as it is. Returns whether it moved.
 bool seat_lone_cubic(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal,
-                     std::vector<std::optional<Vec2>>& steps, const OutlineJoins& joins, std::size_t a, CubicJudge& judge,
-                     double flat);
+                     std::vector<std::optional<Vec2>>& steps, const OutlineJoins& joins, std::size_t a,
+                     CubicJudge& judge, double flat);
 
 }  // namespace gf

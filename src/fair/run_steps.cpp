@@ -21,88 +21,99 @@ std::vector<Vec2> handles_meeting_line(const OutlineNode& node, std::optional<Ve
   return {line_end.point + line_dir * whole_steps(line_end.point, h, line_dir, 1.0)};
 }
 
-// `as_is`: the one choice of the handles where they are (a cubic a choice only weighs).
-CubicChoices cubic_choices(const std::vector<OutlineNode>& nodes, std::span<const std::optional<Vec2>> steps,
-                           std::size_t i, std::size_t j, CubicJudge& judge, double flat, bool line_before,
-                           bool line_after, bool as_is = false) {
-  CubicChoices c;
-  c.start = i, c.end = j;
-  c.outs = as_is ? std::vector<Vec2>{*nodes[i].out_handle} : handle_candidates(nodes[i], steps[i], true);
-  c.ins = as_is ? std::vector<Vec2>{*nodes[j].in_handle} : handle_candidates(nodes[j], steps[j], false);
-  auto add = [](std::vector<Vec2>& to, const std::vector<Vec2>& more) {
-    for (const Vec2 h : more)
-      if (std::find(to.begin(), to.end(), h) == to.end()) to.push_back(h);
-  };
-  const Vec2 p0 = nodes[i].point, p3 = nodes[j].point;
-  const double allowed = judge.allowed(i);
-  const CubicTraits& ideal = judge.unrounded(i);
-  // κ = 0 at an end that meets a line, or at a smooth node flat before rounding (an inflection,
-  // where asked): the far handles nearest that end's tangent line join the choices
-  // (seat_flat_nodes moves the node itself for them).
-  const bool inflection = judge.inflection_handles();
-  const bool zero_start = line_before || (inflection && nodes[i].smooth && std::abs(ideal.k_start) < flat);
-  const bool zero_end = line_after || (inflection && nodes[j].smooth && std::abs(ideal.k_end) < flat);
-  if (zero_start && steps[i] && !as_is) add(c.ins, handles_meeting_line(nodes[j], steps[j], false, nodes[i], *steps[i]));
-  if (zero_end && steps[j] && !as_is) add(c.outs, handles_meeting_line(nodes[i], steps[i], true, nodes[j], *steps[j]));
-  // Whether a handle turns a corner to keep (node k's) under the kink limit.
-  const auto turned_under_limit = [&](std::size_t k, std::optional<Vec2> in, std::optional<Vec2> out) {
-    return judge.keeps_corner(k) && turn_at(nodes, judge.closed(), k, in, out) < kink_limit;
-  };
-  auto weigh = [&] {
+// Adds to `to` the handles of `more` it lacks.
+void add_handles(std::vector<Vec2>& to, const std::vector<Vec2>& more) {
+  for (const Vec2 h : more)
+    if (std::find(to.begin(), to.end(), h) == to.end()) to.push_back(h);
+}
+
+// How the candidates of cubic i (from node i to node j) weigh on their own.
+class CandidateWeights {
+ public:
+  CandidateWeights(const std::vector<OutlineNode>& nodes, CubicJudge& judge, std::size_t i, std::size_t j,
+                   bool line_before, bool line_after, double flat)
+      : nodes_(nodes), judge_(judge), i_(i), j_(j), line_before_(line_before), line_after_(line_after), flat_(flat),
+        allowed_(judge.allowed(i)), ideal_(judge.unrounded(i)) {}
+
+  /// Whether a handle turns a corner to keep (node k's) under the kink limit.
+  bool turned_under_limit(std::size_t k, std::optional<Vec2> in, std::optional<Vec2> out) const {
+    return judge_.keeps_corner(k) && turn_at(nodes_, judge_.closed(), k, in, out) < kink_limit;
+  }
+
+  /// Every state of `c` (its outs × its ins) measured and costed.
+  void weigh(CubicChoices& c) const {
     c.k_start.clear(), c.k_end.clear(), c.cost.clear(), c.traits.clear();
     for (const Vec2 out : c.outs)
       for (const Vec2 in : c.ins) {
-        const CubicTraits& t = judge.traits(i, Cubic{p0, out, in, p3});
+        const CubicTraits& t = judge_.traits(i_, Cubic{nodes_[i_].point, out, in, nodes_[j_].point});
         c.k_start.push_back(t.k_start), c.k_end.push_back(t.k_end);
         c.traits.push_back(&t);
-        if (!t.within) {
-          c.cost.push_back(infeasible);
-          continue;
-        }
-        double cost = allowed > 0.0 ? 0.01 * (t.moved / allowed) * (t.moved / allowed) : 0.0;
-        // A curve meeting a line tangentially meets it with κ = 0.
-        if (line_before) cost += judge.g2_cost(relative_jump(t.k_start, 0.0, flat));
-        if (line_after) cost += judge.g2_cost(relative_jump(t.k_end, 0.0, flat));
-        // Where the grid allows only near zero, or a corner's handle moves, the cubic must not
-        // bend the other way near its end: an inflection the unrounded cubic does not have.
-        if (judge.inflections_added(i, t) > 0) cost += wrong_way;
-        // Nor turn horizontal or vertical inside: an extremum without a node.
-        if (t.extrema.all > ideal.extrema.all) cost += wrong_way;
-        // Nor carry one that sat within half a unit of its node farther off it.
-        if (t.extrema.off_node > ideal.extrema.off_node) cost += wrong_way;
-        // Nor turn a corner at a line into a kink, or smooth: the kink pass then makes it smooth
-        // and fairs the contour again, and the grid may give that join no G2 (Lato's S: a 4.3°
-        // corner rounded straight, then κ·UPM 3.4 where its curve left the line).
-        if (turned_under_limit(i, {}, out)) cost += wrong_way;
-        if (turned_under_limit(j, in, {})) cost += wrong_way;
-        // Nor fold back on itself past its chord.
-        if (t.overreach > ideal.overreach) cost += wrong_way * (1.0 + t.overreach);
-        // Nor, short, loop or cusp within it.
-        if (t.turning > ideal.turning + fold_turn) cost += wrong_way;
-        // Nor bend wholly the other way, gain a curvature extremum or a spike.
-        cost += shape_cost(t.shape, ideal.shape, flat);
-        c.cost.push_back(cost);
+        c.cost.push_back(t.within ? cost(t, out, in) : infeasible);
       }
-  };
-  weigh();
-  // A corner to keep that every choice turns under the kink limit, or keeps only with a bend
-  // the unrounded cubic lacks: the corners' handles two units either way too (Lato's Y: a 3.3°
-  // corner whose line line_rounding moved 2.2 units for a shorter step; the nearly straight
-  // cubic from it kept 3° only as an S, unless the far corner's handle moved two units).
-  bool at_risk = !as_is, lost = false;
+  }
+
+ private:
+  // A candidate within its allowance: how far it moved, and what it gains that its unrounded
+  // self lacks.
+  double cost(const CubicTraits& t, Vec2 out, Vec2 in) const {
+    double cost = allowed_ > 0.0 ? 0.01 * (t.moved / allowed_) * (t.moved / allowed_) : 0.0;
+    // A curve meeting a line tangentially meets it with κ = 0.
+    if (line_before_) cost += judge_.g2_cost(relative_jump(t.k_start, 0.0, flat_));
+    if (line_after_) cost += judge_.g2_cost(relative_jump(t.k_end, 0.0, flat_));
+    // Where the grid allows only near zero, or a corner's handle moves, the cubic must not
+    // bend the other way near its end: an inflection the unrounded cubic does not have.
+    if (judge_.inflections_added(i_, t) > 0) cost += wrong_way;
+    // Nor turn horizontal or vertical inside: an extremum without a node.
+    if (t.extrema.all > ideal_.extrema.all) cost += wrong_way;
+    // Nor carry one that sat within half a unit of its node farther off it.
+    if (t.extrema.off_node > ideal_.extrema.off_node) cost += wrong_way;
+    // Nor turn a corner at a line into a kink, or smooth: the kink pass then makes it smooth
+    // and fairs the contour again, and the grid may give that join no G2 (Lato's S: a 4.3°
+    // corner rounded straight, then κ·UPM 3.4 where its curve left the line).
+    if (turned_under_limit(i_, {}, out)) cost += wrong_way;
+    if (turned_under_limit(j_, in, {})) cost += wrong_way;
+    // Nor fold back on itself past its chord.
+    if (t.overreach > ideal_.overreach) cost += wrong_way * (1.0 + t.overreach);
+    // Nor, short, loop or cusp within it.
+    if (t.turning > ideal_.turning + fold_turn) cost += wrong_way;
+    // Nor bend wholly the other way, gain a curvature extremum or a spike.
+    return cost + shape_cost(t.shape, ideal_.shape, flat_);
+  }
+
+  const std::vector<OutlineNode>& nodes_;
+  CubicJudge& judge_;
+  std::size_t i_, j_;
+  bool line_before_, line_after_;
+  double flat_, allowed_;
+  const CubicTraits& ideal_;
+};
+
+// A corner to keep that every choice turns under the kink limit, or keeps only with a bend
+// the unrounded cubic lacks: the corners' handles two units either way too (Lato's Y: a 3.3°
+// corner whose line line_rounding moved 2.2 units for a shorter step; the nearly straight
+// cubic from it kept 3° only as an S, unless the far corner's handle moved two units). A corner's
+// handle (no grid step) only: the others are as they were. Returns whether it added any.
+bool widen_at_risky_corners(CubicChoices& c, const std::vector<OutlineNode>& nodes,
+                            std::span<const std::optional<Vec2>> steps, const CandidateWeights& weights) {
+  bool at_risk = true, lost = false;
   for (std::size_t s = 0; s < c.states() && at_risk; ++s) {
     const Vec2 out = c.outs[s / c.ins.size()], in = c.ins[s % c.ins.size()];
     at_risk = c.cost[s] >= wrong_way;
-    lost = lost || turned_under_limit(i, {}, out) || turned_under_limit(j, in, {});
+    lost = lost || weights.turned_under_limit(c.start, {}, out) || weights.turned_under_limit(c.end, in, {});
   }
-  if (at_risk && lost) {  // a corner's handle (no grid step) only: the others are as they were
-    add(c.outs, handle_candidates(nodes[i], steps[i], true, 2));
-    add(c.ins, handle_candidates(nodes[j], steps[j], false, 2));
-    weigh();
-  }
-  // Where no choice gives an end at a smooth node within the target of its unrounded curvature,
-  // the handle lengths aimed at it (handles_for_curvature), against every place of the far
-  // handle: only there, as they multiply the choices.
+  if (!at_risk || !lost) return false;
+  add_handles(c.outs, handle_candidates(nodes[c.start], steps[c.start], true, 2));
+  add_handles(c.ins, handle_candidates(nodes[c.end], steps[c.end], false, 2));
+  return true;
+}
+
+// Where no choice gives an end at a smooth node within the target of its unrounded curvature,
+// the handle lengths aimed at it (handles_for_curvature), against every place of the far
+// handle: only there, as they multiply the choices. Returns whether it added any.
+bool aim_at_unrounded_curvatures(CubicChoices& c, const std::vector<OutlineNode>& nodes,
+                                 std::span<const std::optional<Vec2>> steps, const CubicTraits& ideal,
+                                 bool line_before, bool line_after, double flat) {
+  const std::size_t i = c.start, j = c.end;
   const bool aim_start = nodes[i].smooth && steps[i] && !line_before;
   const bool aim_end = nodes[j].smooth && steps[j] && !line_after;
   bool start_met = !aim_start, end_met = !aim_end;
@@ -111,13 +122,42 @@ CubicChoices cubic_choices(const std::vector<OutlineNode>& nodes, std::span<cons
     start_met = start_met || relative_jump(c.k_start[s], ideal.k_start, flat) <= target_jump;
     end_met = end_met || relative_jump(c.k_end[s], ideal.k_end, flat) <= target_jump;
   }
-  if ((start_met && end_met) || as_is) return c;
+  if (start_met && end_met) return false;
+  const Vec2 p0 = nodes[i].point, p3 = nodes[j].point;
   const std::size_t outs = c.outs.size(), ins = c.ins.size();
   if (!start_met)
-    for (std::size_t k = 0; k < ins; ++k) add(c.outs, handles_for_curvature(p0, *steps[i], true, c.ins[k], p3, ideal.k_start));
+    for (std::size_t k = 0; k < ins; ++k)
+      add_handles(c.outs, handles_for_curvature(p0, *steps[i], true, c.ins[k], p3, ideal.k_start));
   if (!end_met)  // against the far handles as they were, not those just aimed
-    for (std::size_t k = 0; k < outs; ++k) add(c.ins, handles_for_curvature(p3, *steps[j], false, c.outs[k], p0, ideal.k_end));
-  if (c.outs.size() != outs || c.ins.size() != ins) weigh();
+    for (std::size_t k = 0; k < outs; ++k)
+      add_handles(c.ins, handles_for_curvature(p3, *steps[j], false, c.outs[k], p0, ideal.k_end));
+  return c.outs.size() != outs || c.ins.size() != ins;
+}
+
+// `as_is`: the one choice of the handles where they are (a cubic a choice only weighs).
+CubicChoices cubic_choices(const std::vector<OutlineNode>& nodes, std::span<const std::optional<Vec2>> steps,
+                           std::size_t i, std::size_t j, CubicJudge& judge, double flat, bool line_before,
+                           bool line_after, bool as_is = false) {
+  CubicChoices c;
+  c.start = i, c.end = j;
+  c.outs = as_is ? std::vector<Vec2>{*nodes[i].out_handle} : handle_candidates(nodes[i], steps[i], true);
+  c.ins = as_is ? std::vector<Vec2>{*nodes[j].in_handle} : handle_candidates(nodes[j], steps[j], false);
+  const CubicTraits& ideal = judge.unrounded(i);
+  // κ = 0 at an end that meets a line, or at a smooth node flat before rounding (an inflection,
+  // where asked): the far handles nearest that end's tangent line join the choices
+  // (seat_flat_nodes moves the node itself for them).
+  const bool inflection = judge.inflection_handles();
+  const bool zero_start = line_before || (inflection && nodes[i].smooth && std::abs(ideal.k_start) < flat);
+  const bool zero_end = line_after || (inflection && nodes[j].smooth && std::abs(ideal.k_end) < flat);
+  if (zero_start && steps[i] && !as_is)
+    add_handles(c.ins, handles_meeting_line(nodes[j], steps[j], false, nodes[i], *steps[i]));
+  if (zero_end && steps[j] && !as_is)
+    add_handles(c.outs, handles_meeting_line(nodes[i], steps[i], true, nodes[j], *steps[j]));
+  const CandidateWeights weights(nodes, judge, i, j, line_before, line_after, flat);
+  weights.weigh(c);
+  if (as_is) return c;
+  if (widen_at_risky_corners(c, nodes, steps, weights)) weights.weigh(c);
+  if (aim_at_unrounded_curvatures(c, nodes, steps, ideal, line_before, line_after, flat)) weights.weigh(c);
   return c;
 }
 
