@@ -85,8 +85,7 @@ bool polish_jumping_run(std::vector<OutlineNode>& nodes, const std::vector<Outli
       // Turned only while its own direction leaves a jump in the window (each costs at least 1).
       if (d != kept_step && best_cost < 1.0) break;
       const OutlineNode& from = d == kept_step ? kept : ideal[i];
-      const double m_in = std::max(1.0, whole_steps(from.point, *from.in_handle, d, -1.0));
-      const double m_out = std::max(1.0, whole_steps(from.point, *from.out_handle, d, 1.0));
+      const double m_in = handle_steps_along(from, d, false), m_out = handle_steps_along(from, d, true);
       // Under G3, two units: dκ/ds at a cubic's end moves by tens of per cent a unit, and the
       // places a unit off left DejaVu Sans's median jump at 0.076 (0.049 with two, for 2.3 times
       // the time of a–z A–Z).

@@ -68,7 +68,7 @@ bool seat_lone_cubic(std::vector<OutlineNode>& nodes, const std::vector<OutlineN
 
   // What the cubic may not gain, as NodeChange allows: what its unrounded and present selves have.
   const CubicTraits& unrounded = judge.unrounded(a);
-  const CubicTraits now = judge.traits(a, outline_cubic(nodes, a));
+  const CubicTraits& now = judge.traits(a, outline_cubic(nodes, a));  // the judge's map keeps it in place
   const int most_inflections = judge.inflections_added(a, now);
   const int most_extrema = std::max(unrounded.extrema.all, now.extrema.all);
   const double most_overreach = std::max(unrounded.overreach, now.overreach);

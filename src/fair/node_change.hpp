@@ -3,6 +3,7 @@
 // its cubics gain nothing their unrounded selves lack; and where such a change may put the node.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <optional>
@@ -10,6 +11,7 @@
 
 #include "fair/cubic_judge.hpp"
 #include "fair/outline_joins.hpp"
+#include "fair/step_costs.hpp"
 
 namespace gf {
 
@@ -25,6 +27,26 @@ std::vector<Vec2> directions_near(Vec2 tangent, double most, int longest);
 /// unrounded tangent, only of at most `longest` units a side: whole steps of a longer one are too
 /// coarse to set curvature by (and each direction costs a search).
 std::vector<Vec2> node_directions(Vec2 step, const OutlineNode& target, int longest = 10);
+
+/// How many whole steps of d `from`'s out-handle (`out`) or in-handle is long, at least one: the
+/// length a node turned or moved to d keeps.
+inline double handle_steps_along(const OutlineNode& from, Vec2 d, bool out) {
+  return std::max(1.0, whole_steps(from.point, out ? *from.out_handle : *from.in_handle, d, out ? 1.0 : -1.0));
+}
+
+/// Node `node` put at p along d with its handles m_in + a and m_out + b steps long (a and b
+/// within handle_reach either way, each handle a step at least), `each` called at every pair.
+template <class Each>
+void for_each_handle_pair(OutlineNode& node, Vec2 p, Vec2 d, double m_in, double m_out, Each&& each) {
+  node.point = p;
+  for (int a = -handle_reach; a <= handle_reach; ++a)
+    for (int b = -handle_reach; b <= handle_reach; ++b) {
+      if (m_in + a < 1.0 || m_out + b < 1.0) continue;
+      node.in_handle = p - d * (m_in + a);
+      node.out_handle = p + d * (m_out + b);
+      each();
+    }
+}
 
 /// A change at node i of an outline: it changes both cubics at i (the one, where the other side
 /// is a line: a corner's), so the curvature jumps at i and at its two neighbours. It is allowed

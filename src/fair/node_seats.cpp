@@ -83,18 +83,12 @@ std::vector<std::size_t> nudge_jumping_nodes(std::vector<OutlineNode>& nodes, co
     for (const Vec2 d : directions) {
       if (d != *steps[i] && best_cost <= 3.0 * target_jump * target_jump) break;  // turned only while still jumping
       const OutlineNode& from = d == *steps[i] ? kept : target;  // a turned node's handles as long as unrounded
-      const double m_in = std::max(1.0, whole_steps(from.point, *from.in_handle, d, -1.0));
-      const double m_out = std::max(1.0, whole_steps(from.point, *from.out_handle, d, 1.0));
+      const double m_in = handle_steps_along(from, d, false), m_out = handle_steps_along(from, d, true);
       // Still on a grid point next to the nearest one, as rounding placed every node.
       for (const Vec2 p : node_places(kept.point, target.point))
-        for (int a = -handle_reach; a <= handle_reach; ++a)
-          for (int b = -handle_reach; b <= handle_reach; ++b) {
-            if (m_in + a < 1.0 || m_out + b < 1.0) continue;
-            nodes[i].point = p;
-            nodes[i].in_handle = p - d * (m_in + a);
-            nodes[i].out_handle = p + d * (m_out + b);
-            if (const std::optional<double> c = change.cost_under(best_cost)) best_cost = *c, best = nodes[i], best_step = d;
-          }
+        for_each_handle_pair(nodes[i], p, d, m_in, m_out, [&] {
+          if (const std::optional<double> c = change.cost_under(best_cost)) best_cost = *c, best = nodes[i], best_step = d;
+        });
     }
     nodes[i] = best;
     steps[i] = best_step;
@@ -131,17 +125,12 @@ std::vector<std::size_t> seat_flat_nodes(std::vector<OutlineNode>& nodes, const 
         const std::optional<Vec2> far_in = handle_on_line(kept_h, steps[h], 1.0, p, d);
         const std::optional<Vec2> far_out = handle_on_line(kept_j, steps[j], -1.0, p, d);
         if (!far_in || !far_out) continue;
-        nodes[h].out_handle = far_in, nodes[j].in_handle = far_out, nodes[i].point = p;
-        const double m_in = std::max(1.0, whole_steps(target.point, *target.in_handle, d, -1.0));
-        const double m_out = std::max(1.0, whole_steps(target.point, *target.out_handle, d, 1.0));
-        for (int a = -handle_reach; a <= handle_reach; ++a)
-          for (int b = -handle_reach; b <= handle_reach; ++b) {
-            if (m_in + a < 1.0 || m_out + b < 1.0) continue;
-            nodes[i].in_handle = p - d * (m_in + a);
-            nodes[i].out_handle = p + d * (m_out + b);
-            if (const std::optional<double> c = change.cost_under(best_cost))
-              best_cost = *c, best = {nodes[h], nodes[i], nodes[j]}, best_step = d;
-          }
+        nodes[h].out_handle = far_in, nodes[j].in_handle = far_out;
+        const double m_in = handle_steps_along(target, d, false), m_out = handle_steps_along(target, d, true);
+        for_each_handle_pair(nodes[i], p, d, m_in, m_out, [&] {
+          if (const std::optional<double> c = change.cost_under(best_cost))
+            best_cost = *c, best = {nodes[h], nodes[i], nodes[j]}, best_step = d;
+        });
       }
     nodes[h] = kept_h, nodes[i] = kept, nodes[j] = kept_j;
     if (!best) continue;
@@ -187,8 +176,7 @@ std::vector<std::size_t> seat_line_joins(std::vector<OutlineNode>& nodes, const 
         if (!m) continue;
         const Vec2 on_line = p + d * (sign * *m);
         if (sign * dot(on_line - join.point, into) >= 0.0) continue;  // on i's side of the join
-        const Vec2 other = before ? *target.out_handle : *target.in_handle;
-        const double m_other = std::max(1.0, whole_steps(target.point, other, d, -sign));
+        const double m_other = handle_steps_along(target, d, before);
         nodes[i].point = p;
         (before ? nodes[i].in_handle : nodes[i].out_handle) = on_line;
         for (int b = -handle_reach; b <= handle_reach; ++b) {
@@ -261,7 +249,6 @@ std::vector<std::size_t> seat_line_joins_at_corners(std::vector<OutlineNode>& no
     const bool before = line_join->before;
     const std::size_t at = line_join->at;
     const Vec2 join = nodes[at].point, line_far = nodes[before ? (h + n - 1) % n : (j + 1) % n].point;
-    const double least_turn = std::min(kink_limit, turn_at(ideal, joins.closed, i));
     const NodeChange change(nodes, joins, judge, flat, i);
     const OutlineNode kept = nodes[i];
     double best_cost = change.cost();
@@ -278,7 +265,7 @@ std::vector<std::size_t> seat_line_joins_at_corners(std::vector<OutlineNode>& no
         if (dot(on_line - join, line_far - join) >= 0.0) continue;  // on the cubic's side of the join
         nodes[i].point = p;
         handle = on_line;
-        if (turn_at(nodes, joins.closed, i) < least_turn) continue;
+        if (turns_less_than_it_did(nodes, ideal, joins.closed, i)) continue;
         if (const std::optional<double> c = change.cost_under(best_cost)) best_cost = *c, best = nodes[i];
       }
     nodes[i] = best ? *best : kept;
