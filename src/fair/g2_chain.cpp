@@ -8,20 +8,11 @@
 #include <boost/math/tools/toms748_solve.hpp>
 
 #include "aesthetic/segment_fit.hpp"
+#include "geom/tangent_crossing.hpp"
 
 namespace gf {
 
 namespace {
-
-// Where Q0 + t·d0 = Q1 − u·d1 with t, u > 0 (the control point in front of both ends).
-std::optional<Vec2> tangent_intersection(Vec2 q0, Vec2 d0, Vec2 q1, Vec2 d1) {
-  const double det = cross(d0, d1);
-  if (std::abs(det) < 1e-14) return std::nullopt;
-  const Vec2 r = q1 - q0;
-  const double t = cross(r, d1) / det, u = cross(d0, r) / det;
-  if (!(t > 0.0 && u > 0.0)) return std::nullopt;
-  return q0 + d0 * t;
-}
 
 constexpr double min_end_curvature_ratio = 1e-2;
 
@@ -125,8 +116,8 @@ std::optional<double> solve_junction(const LacChain& given, std::size_t j) {
 
 bool tangents_meet_in_front(const LacChain& chain, std::size_t i) {
   const std::size_t j = (i + 1) % chain.points.size();
-  return tangent_intersection(chain.points[i], direction_of(chain.tangent_angles[i]), chain.points[j],
-                              direction_of(chain.tangent_angles[j]))
+  return tangent_crossing(chain.points[i], direction_of(chain.tangent_angles[i]), chain.points[j],
+                          direction_of(chain.tangent_angles[j]))
       .has_value();
 }
 
@@ -135,7 +126,7 @@ SegmentFit build_chain_segment(const LacChain& chain, std::size_t i, std::option
   const std::size_t j = (i + 1) % n;
   const Vec2 q0 = chain.points[i], q1 = chain.points[j];
   const std::optional<Vec2> p1 =
-      tangent_intersection(q0, direction_of(chain.tangent_angles[i]), q1, direction_of(chain.tangent_angles[j]));
+      tangent_crossing(q0, direction_of(chain.tangent_angles[i]), q1, direction_of(chain.tangent_angles[j]));
   if (!p1) return {std::nullopt, "its tangents do not meet in front of both ends"};
   const bool last = i + 1 == chain.segment_count();
   if (!chain.closed && i == 0 && chain.zero_curvature_start) return fit_inflection_start(q0, *p1, q1);

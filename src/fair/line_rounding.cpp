@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "fair/cubic_change.hpp"
+#include "geom/tangent_crossing.hpp"
 #include "geom/polyline_distance.hpp"
 
 namespace gf {
@@ -142,13 +143,11 @@ struct LineOnGrid {
   bool curve_leaves;   ///< at node j likewise (node j's out-handle)
 };
 
-// Whether the line from `a` along `u` and the line from `b` along `v` meet ahead of both (at
-// a + s·u = b + t·v with s, t > 0), or are one line with b ahead of a: a curve from a leaving
-// along u and arriving at b against v can then seat both its handles where they meet.
-bool tangents_meet_ahead(Vec2 a, Vec2 u, Vec2 b, Vec2 v) {
-  const double across = cross(u, v);
-  if (across == 0.0) return cross(u, b - a) == 0.0 && dot(b - a, u) > 0.0;
-  return cross(b - a, v) / across > 0.0 && cross(b - a, u) / across > 0.0;
+// Whether a curve leaving a along u and arriving at b along v can seat both its handles where
+// its tangents meet: ahead of a and behind b (tangent_crossing), or on one line with b ahead of a.
+bool tangents_seat_handles(Vec2 a, Vec2 u, Vec2 b, Vec2 v) {
+  if (cross(u, v) == 0.0) return cross(u, b - a) == 0.0 && dot(b - a, u) > 0.0;
+  return tangent_crossing(a, u, b, v).has_value();
 }
 
 // How a line placed with its ends at a and b fares.
@@ -264,8 +263,8 @@ class LinePlacer {
     // curve between took two inflections).
     const bool far_line = !(out ? exact_[k].in_handle : exact_[k].out_handle);
     const bool no_seat =
-        steps_[k] && (far_line ? !tangents_meet_ahead(end, out ? d * -1.0 : d, rounded_[k].point,
-                                                      out ? *steps_[k] : *steps_[k] * -1.0)
+        steps_[k] && (far_line ? !tangents_seat_handles(end, out ? d * -1.0 : d, rounded_[k].point,
+                                                        out ? *steps_[k] * -1.0 : *steps_[k])
                                : cross(*steps_[k], d) == 0.0 && cross(d, rounded_[k].point - end) != 0.0);
     // A handle on the line reaching past the curve's far node along their chord folds the curve
     // back into it, whatever the far handle (Gentium Plus's M: one step of a (1, −111) leg, 2

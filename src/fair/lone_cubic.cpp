@@ -1,6 +1,5 @@
 #include "fair/lone_cubic.hpp"
 
-#include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>
@@ -9,26 +8,15 @@
 #include <utility>
 
 #include "fair/bracket_placements.hpp"
+#include "fair/node_change.hpp"
 #include "fair/step_costs.hpp"
+#include "geom/tangent_crossing.hpp"
 
 namespace gf {
 
 namespace {
 
 constexpr double crossing_reach = 3.0;  // units the crossing X may lie from the unrounded one
-
-// The crossing of the unrounded lines, ahead of the cubic's start (at node a) and behind its end
-// (node a + 1); none where they run parallel or cross elsewhere.
-std::optional<Vec2> unrounded_crossing(const std::vector<OutlineNode>& ideal, std::size_t a) {
-  const std::size_t n = ideal.size(), b = (a + 1) % n;
-  const Vec2 p = ideal[a].point, u = p - ideal[(a + n - 1) % n].point;
-  const Vec2 q = ideal[b].point, w = ideal[(b + 1) % n].point - q;
-  const double across = cross(u, w);
-  if (across == 0.0) return std::nullopt;
-  const double s = cross(q - p, w) / across, t = cross(q - p, u) / across;
-  if (s <= 0.0 || t >= 0.0) return std::nullopt;
-  return p + u * s;
-}
 
 using GridPoint = std::pair<double, double>;
 
@@ -58,7 +46,9 @@ bool seat_lone_cubic(std::vector<OutlineNode>& nodes, const std::vector<OutlineN
                      CubicJudge& judge, double flat) {
   const std::size_t n = nodes.size(), b = (a + 1) % n, fa = (a + n - 1) % n, fb = (b + 1) % n;
   if (n < 4 || !steps[a] || !steps[b]) return false;
-  const std::optional<Vec2> crossing = unrounded_crossing(ideal, a);
+  // Where the unrounded lines cross, ahead of the cubic's start and behind its end.
+  const Vec2 from = ideal[a].point, to = ideal[b].point;
+  const std::optional<Vec2> crossing = tangent_crossing(from, from - ideal[fa].point, to, ideal[fb].point - to);
   if (!crossing) return false;
   const BracketLine first = bracket_line(nodes, ideal, *steps[a], a, fa, !joins.is_cubic((fa + n - 1) % n),
                                          nodes[(fa + n - 1) % n].point);
@@ -66,13 +56,9 @@ bool seat_lone_cubic(std::vector<OutlineNode>& nodes, const std::vector<OutlineN
   const auto firsts = places_by_crossing(join_places(first, true, grid_turn), true, *crossing);
   const auto lasts = places_by_crossing(join_places(last, false, grid_turn), false, *crossing);
 
-  // What the cubic may not gain, as NodeChange allows: what its unrounded and present selves have.
   const CubicTraits& unrounded = judge.unrounded(a);
   const CubicTraits& now = judge.traits(a, outline_cubic(nodes, a));  // the judge's map keeps it in place
-  const int most_inflections = judge.inflections_added(a, now);
-  const int most_extrema = std::max(unrounded.extrema.all, now.extrema.all);
-  const double most_overreach = std::max(unrounded.overreach, now.overreach);
-  const double most_turning = std::max(unrounded.turning, now.turning);
+  const FaultCeiling ceiling = FaultCeiling::of(judge, a, now);
   const auto cost_of = [&](const CubicTraits& t) {
     return jump_cost(relative_jump(t.k_start, 0.0, flat)) + jump_cost(relative_jump(t.k_end, 0.0, flat)) +
            shape_cost(t.shape, unrounded.shape, flat);
@@ -94,9 +80,7 @@ bool seat_lone_cubic(std::vector<OutlineNode>& nodes, const std::vector<OutlineN
         place(x, p, q);
         const CubicTraits& t = judge.traits(a, outline_cubic(nodes, a));
         const double c = cost_of(t);
-        if (c >= best_cost || !t.within || judge.inflections_added(a, t) > most_inflections ||
-            t.extrema.all > most_extrema || t.overreach > most_overreach || t.turning > most_turning + fold_turn ||
-            turns_less_than_it_did(nodes, ideal, joins.closed, fa) ||
+        if (c >= best_cost || !ceiling.admits(judge, a, t) || turns_less_than_it_did(nodes, ideal, joins.closed, fa) ||
             turns_less_than_it_did(nodes, ideal, joins.closed, fb))
           continue;
         best_cost = c, best = std::pair{x, std::pair{p, q}};

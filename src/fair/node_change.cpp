@@ -38,17 +38,25 @@ std::vector<Vec2> node_directions(Vec2 step, const OutlineNode& target, int long
   return directions;
 }
 
+FaultCeiling FaultCeiling::of(CubicJudge& judge, std::size_t k, const CubicTraits& before) {
+  const CubicTraits& unrounded = judge.unrounded(k);
+  return {judge.inflections_added(k, before), std::max(unrounded.extrema.all, before.extrema.all),
+          std::max(unrounded.overreach, before.overreach), std::max(unrounded.turning, before.turning)};
+}
+
+bool FaultCeiling::admits(CubicJudge& judge, std::size_t k, const CubicTraits& t) const {
+  return t.within && judge.inflections_added(k, t) <= inflections && t.extrema.all <= extrema &&
+         t.overreach <= overreach && t.turning <= turning + fold_turn;
+}
+
 NodeChange::NodeChange(const std::vector<OutlineNode>& nodes, const OutlineJoins& joins, CubicJudge& judge, double flat,
                        std::size_t i)
     : nodes_(nodes), joins_(joins), judge_(judge), flat_(flat), i_(i), h_((i + nodes.size() - 1) % nodes.size()),
       j_((i + 1) % nodes.size()) {
   for (const std::size_t k : {h_, i_})
     if (joins.is_cubic(k)) cubics_.push_back(k);
-  for (const std::size_t k : cubics_) {
-    const CubicTraits &a = judge.unrounded(k), &b = judge.traits(k, outline_cubic(nodes, k));
-    most_.push_back({judge.inflections_added(k, b), std::max(a.extrema.all, b.extrema.all),
-                     std::max(a.overreach, b.overreach), std::max(a.turning, b.turning)});
-  }
+  for (const std::size_t k : cubics_)
+    ceilings_.push_back(FaultCeiling::of(judge, k, judge.traits(k, outline_cubic(nodes, k))));
   // The cubics beyond the neighbours stay as they are: their curvature there, once.
   const std::size_t n = nodes.size();
   for (const std::size_t k : {h_, i_, j_})
@@ -81,11 +89,7 @@ bool NodeChange::needs_change() const {
 bool NodeChange::allowed() const {
   for (std::size_t side = 0; side < cubics_.size(); ++side) {
     const std::size_t k = cubics_[side];
-    const CubicTraits& t = judge_.traits(k, outline_cubic(nodes_, k));
-    const Most& most = most_[side];
-    if (!t.within || judge_.inflections_added(k, t) > most.inflections || t.extrema.all > most.extrema ||
-        t.overreach > most.overreach || t.turning > most.turning + fold_turn)
-      return false;
+    if (!ceilings_[side].admits(judge_, k, judge_.traits(k, outline_cubic(nodes_, k)))) return false;
   }
   return true;
 }

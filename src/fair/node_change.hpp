@@ -48,6 +48,19 @@ void for_each_handle_pair(OutlineNode& node, Vec2 p, Vec2 d, double m_in, double
     }
 }
 
+/// The most of each fault cubic k may have after a change: what its unrounded self or its state
+/// before the change has, so that the change gains none that both lack.
+struct FaultCeiling {
+  int inflections, extrema;  ///< inflections: CubicJudge::inflections_added; extrema: H/V, all
+  double overreach, turning;
+
+  /// Cubic k's, `before` its traits before the change.
+  static FaultCeiling of(CubicJudge& judge, std::size_t k, const CubicTraits& before);
+  /// Whether `t`, in cubic k's place, is within its allowance and under the ceiling (its
+  /// turning by fold_turn).
+  bool admits(CubicJudge& judge, std::size_t k, const CubicTraits& t) const;
+};
+
 /// A change at node i of an outline: it changes both cubics at i (the one, where the other side
 /// is a line: a corner's), so the curvature jumps at i and at its two neighbours. It is allowed
 /// when no such cubic moves farther from its unrounded self than its allowance, nor gains an
@@ -95,12 +108,7 @@ class NodeChange {
   std::optional<double> beyond_h_, beyond_j_;
   std::vector<std::size_t> inflection_nodes_;  ///< of h, i and j, those CubicJudge::inflects_at
   std::vector<std::size_t> cubics_;  ///< the cubics at i: before it (h) and after it, where they are cubics
-  // Per cubic at i, the most of each fault its unrounded self or its state before the change has.
-  struct Most {
-    int inflections, extrema;  ///< inflections: CubicJudge::inflections_added
-    double overreach, turning;
-  };
-  std::vector<Most> most_;
+  std::vector<FaultCeiling> ceilings_;  ///< per cubic at i
 };
 
 }  // namespace gf
