@@ -614,12 +614,14 @@ ContourFairing fair_curve(const Contour& source, const Contour& curve, const Con
                           std::span<const TightTurn> turns, const FairSettings& settings) {
   ContourFairing out;
   out.contour = source;
+  double tangential_line = kink_limit_deg;
   const auto plan_with = [&](std::span<const std::size_t> smooth_nodes) {
-    ContourPlan p = plan_contour(curve, settings.corner_angle_deg, smooth_nodes, settings.profile == FairProfile::text);
+    ContourPlan p = plan_contour(curve, settings.corner_angle_deg, smooth_nodes, settings.profile == FairProfile::text,
+                                 tangential_line);
     aim_runs_at_tight_turns(p, turns);
     return p;
   };
-  const ContourPlan plan = plan_with({});
+  ContourPlan plan = plan_with({});
   if (plan.pieces.empty()) {
     out.reason = "nothing to fair (every segment degenerate)";
     return out;
@@ -636,6 +638,19 @@ ContourFairing fair_curve(const Contour& source, const Contour& curve, const Con
   std::vector<std::size_t> kinked, smooth_nodes;
   FairedRuns cache;
   out = fair_planned(curve, plan, sampled_source, settings, cache, kinked);
+  // A contour that does not fair with its curves made tangential to the lines they meet at a
+  // kink is faired with those kinks corners, as drawn, and no kink pass makes them smooth again
+  // (Comic Neue's u and i: stems' lines 0.8° off the vertical, kinked so at both ends against
+  // their curves' vertical tangents; the i's foot had no drawable G2 chain, and the u's line has
+  // grid steps of 60 units or more, so no handle on it seats a curve within the tolerance: each
+  // contour had been kept unfaired).
+  if (!out.faired) {
+    tangential_line = JoinThresholds{}.smooth_max_deg;
+    plan = plan_with({});
+    ContourFairing cornered = fair_planned(curve, plan, sampled_source, settings, cache, kinked);
+    if (cornered.faired) out = std::move(cornered);
+    kinked.clear();
+  }
   // A corner whose faired pieces meet by less than the kink limit was noise the fairing
   // straightened (or a scan's few degrees at a line): made smooth, it becomes G2 instead of
   // a kink. Kept only when the contour still fairs.

@@ -56,7 +56,7 @@ bool is_straight_segment(const Segment& s) {
 }
 
 ContourPlan plan_contour(const Contour& source, double corner_angle_deg, std::span<const std::size_t> smooth_nodes,
-                         bool corners_stay) {
+                         bool corners_stay, double tangential_line_deg) {
   const Contour contour = with_cubics(source);
   const auto made_smooth = [&](std::size_t node) {
     return std::find(smooth_nodes.begin(), smooth_nodes.end(), node) != smooth_nodes.end();
@@ -83,7 +83,7 @@ ContourPlan plan_contour(const Contour& source, double corner_angle_deg, std::sp
   const std::size_t n = pieces.size();
   if (n == 0) return plan;
   const double corner = radians(corner_angle_deg);
-  const double tangential_line = radians(kink_limit_deg);
+  const double tangential_line = radians(tangential_line_deg);
 
   // The kind of the join in front of piece i (between piece i−1 and i); nullopt when smooth
   // between two curves.

@@ -76,6 +76,18 @@ TEST(ContourPlan, AStubHandleBesideALineIsACornerTowardsTheNextControlPoint) {
   EXPECT_EQ(kept.start.kind, RunEndKind::line);
 }
 
+TEST(ContourPlan, ACurveMeetsALineTangentiallyWithinTheGivenAngle) {
+  // A curve leaving a line at 0.8° (Comic Neue's u: its stem's line against the curve's
+  // vertical tangent): a line join by default (within the kink limit), a corner where curves
+  // meet lines tangentially only within 0.05°.
+  Contour c;
+  const Vec2 a{4, 305}, b{0, 0}, d{-100, -100};
+  c.segments = {Line{a, b}, Cubic{b, Vec2{0, -40}, Vec2{-60, -100}, d}, Line{d, a}};
+  c.nodes.resize(3);
+  EXPECT_EQ(std::get<SmoothRun>(plan_contour(c, 3.0).pieces[1]).start.kind, RunEndKind::line);
+  EXPECT_EQ(std::get<SmoothRun>(plan_contour(c, 3.0, {}, false, 0.05).pieces[1]).start.kind, RunEndKind::corner);
+}
+
 TEST(ContourPlan, TwoLinesMadeSmoothAreOneLine) {
   // A quadrilateral whose bottom edge bends by 1° at (100, 0.87).
   Contour c;
