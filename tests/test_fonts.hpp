@@ -21,7 +21,7 @@ inline const std::string free_serif = fonts + "/FreeSerif/FreeSerif-subset.ttf";
 inline const std::string carlito = fonts + "/Carlito/Carlito-Regular-subset.ttf";  // w, M, x
 inline const std::string gentium_plus = fonts + "/GentiumPlus/GentiumPlus-Regular-subset.ttf";  // d
 inline const std::string comic_neue = fonts + "/ComicNeue/ComicNeue-Regular-subset.otf";  // i, u
-inline const std::string linux_libertine = fonts + "/LinuxLibertine/LinLibertine_R-subset.otf";  // d, g, M, Z
+inline const std::string linux_libertine = fonts + "/LinuxLibertine/LinLibertine_R-subset.otf";  // d, g, D, M, T, Z
 // dkg handwriting's T, renamed (its licence reserves the name)
 inline const std::string handwriting_probe = fonts + "/HandwritingProbe/GlyphfairProbeHandwriting-T.ttf";
 inline const std::string cff2_variable = fonts + "/Inter/GlyphfairProbe-CFF2.var.otf";

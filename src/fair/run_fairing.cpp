@@ -307,14 +307,21 @@ struct LineRoom {
   double start = 0.0, end = 0.0;
 };
 
+// Whether the span's start (else its end) is where its run meets a line, not an inflection
+// junction whose point the next chain shares.
+bool meets_line(const ChainSpan& span, const RunReference& ref, const SmoothRun& run, bool at_start) {
+  if (span.closed || ref.closed()) return false;
+  return at_start ? span.s.front() == 0.0 && run.start.kind == RunEndKind::line
+                  : span.s.back() == ref.length() && run.end.kind == RunEndKind::line;
+}
+
 // How far the span's κ = 0 ends may slide back into the lines they meet: half the run's share
 // of each line (a line slid down to a sliver came out kinked once rounded: dkg Bold's y and D);
-// none at an inflection, whose point the next chain shares.
+// none at an inflection.
 LineRoom line_room(const ChainSpan& span, const RunReference& ref, const SmoothRun& run) {
   LineRoom room;
-  if (span.closed || ref.closed()) return room;
-  if (span.zero_start && span.s.front() == 0.0 && run.start.kind == RunEndKind::line) room.start = 0.5 * run.start.line_share;
-  if (span.zero_end && span.s.back() == ref.length() && run.end.kind == RunEndKind::line) room.end = 0.5 * run.end.line_share;
+  if (span.zero_start && meets_line(span, ref, run, true)) room.start = 0.5 * run.start.line_share;
+  if (span.zero_end && meets_line(span, ref, run, false)) room.end = 0.5 * run.end.line_share;
   return room;
 }
 
@@ -356,10 +363,12 @@ bool leave_lines_earlier(LacChain& chain, const RunReference& ref, double budget
 }
 
 // Makes every segment exist before the solve, or says which junctions to add or drop. In
-// turn: a κ = 0 end at a line leaves the line earlier (transition_slide); a κ = 0 end the
-// source's shape does not allow (its curvature falls towards the end) becomes a free end, G1
-// there, but on a guided run, whose guide meets the line with κ = 0 where no chain does (dkg,
-// Because We Learn and Kristi a–z A–Z unrounded: g2-jumps 0.9, 0.1 and 1.8 % → 0); a corner's
+// turn: a κ = 0 end at a line leaves the line earlier (transition_slide); a κ = 0 end at a line
+// the source's shape does not allow (its curvature falls towards the end) becomes a free end,
+// G1 there, but on a guided run, whose guide meets the line with κ = 0 where no chain does (dkg,
+// Because We Learn and Kristi a–z A–Z unrounded: g2-jumps 0.9, 0.1 and 1.8 % → 0), and never at
+// an inflection junction, where the next chain still meets it with κ = 0 (Linux Libertine's T
+// and D, a jump each, κ·UPM 152 against 0 on T's serif); a corner's
 // noisy tangent is turned; the nearest drawable α; a junction that does not turn with its
 // neighbours is dropped; else the piece is cut.
 void make_drawable(LacChain& chain, const ChainSpan& span, const RunReference& ref, const SmoothRun& run,
@@ -368,12 +377,12 @@ void make_drawable(LacChain& chain, const ChainSpan& span, const RunReference& r
   const std::size_t points = span.s.size(), segments = chain.segment_count();
   for (std::size_t i = 0; i < segments; ++i) {
     if (build_chain_segment(chain, i).ok()) continue;
-    const bool zero_here = !chain.closed && ((i == 0 && chain.zero_curvature_start) ||
-                                             (i + 1 == segments && chain.zero_curvature_end));
-    if (zero_here && leave_line_earlier(chain, i, i == 0 && chain.zero_curvature_start, ref, budget, room)) continue;
-    if (zero_here && !guided) {
+    const bool at_start = i == 0 && chain.zero_curvature_start;
+    const bool zero_here = !chain.closed && (at_start || (i + 1 == segments && chain.zero_curvature_end));
+    if (zero_here && leave_line_earlier(chain, i, at_start, ref, budget, room)) continue;
+    if (zero_here && !guided && meets_line(span, ref, run, at_start)) {
       LacChain released = chain;
-      (i == 0 && chain.zero_curvature_start ? released.zero_curvature_start : released.zero_curvature_end) = false;
+      (at_start ? released.zero_curvature_start : released.zero_curvature_end) = false;
       if (build_chain_segment(released, i).ok()) {
         chain = std::move(released);
         continue;

@@ -654,6 +654,19 @@ TEST(ContourFairing, ALineKinkNoCurveCanMeetSmoothlyStaysAsDrawn) {
   }
 }
 
+TEST(ContourFairing, AnInflectionJunctionKeepsZeroCurvatureOnBothSides) {
+  // Linux Libertine's T and D, unrounded: where a chain could not start with κ = 0 at an
+  // inflection junction (T: a 3-unit piece of the serif's tight corner, κ·UPM 152 to 892), its
+  // end was released to G1 while the chain on the other side still ended with κ = 0 there, a
+  // jump. Only an end at a line is released now; at the junction the piece is made drawable as
+  // any other (its corner turned, another α, the junction dropped or the piece cut).
+  for (const char* name : {"T", "D"}) {
+    const FairedGlyph f = fair_named(test::linux_libertine, name, options_for(FairProfile::text, Rounding::none));
+    ASSERT_TRUE(f.result.kept.empty()) << name << ": " << f.result.kept.front();
+    EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm), 0) << name;
+  }
+}
+
 TEST(ContourFairing, ACornerWhoseTangentTheFairingTurnsStaysACorner) {
   // A corner's tangent that leaves its piece undrawable is turned towards the symmetric arc:
   // Lato's z (its top bar's curve meets the diagonal at 3.3°) and Linux Libertine's M (3.5°
