@@ -6,8 +6,8 @@
 #include <limits>
 
 #include "fair/cubic_change.hpp"
-#include "geom/tangent_crossing.hpp"
 #include "geom/polyline_distance.hpp"
+#include "geom/tangent_crossing.hpp"
 
 namespace gf {
 

@@ -70,7 +70,11 @@ bool seat_lone_cubic(std::vector<OutlineNode>& nodes, const std::vector<OutlineN
     nodes[fa].point = p.far, nodes[a].point = p.join, nodes[a].out_handle = x;
     nodes[b].point = q.join, nodes[b].in_handle = x, nodes[fb].point = q.far;
   };
-  std::optional<std::pair<Vec2, std::pair<JoinPlace, JoinPlace>>> best;
+  struct Seat {
+    Vec2 x;
+    JoinPlace first, last;
+  };
+  std::optional<Seat> best;
   for (const auto& [x_at, ps] : firsts) {
     const auto qs = lasts.find(x_at);
     if (qs == lasts.end()) continue;
@@ -83,13 +87,13 @@ bool seat_lone_cubic(std::vector<OutlineNode>& nodes, const std::vector<OutlineN
         if (c >= best_cost || !ceiling.admits(judge, a, t) || turns_less_than_it_did(nodes, ideal, joins.closed, fa) ||
             turns_less_than_it_did(nodes, ideal, joins.closed, fb))
           continue;
-        best_cost = c, best = std::pair{x, std::pair{p, q}};
+        best_cost = c, best = Seat{x, p, q};
       }
   }
   nodes[fa] = kept[0], nodes[a] = kept[1], nodes[b] = kept[2], nodes[fb] = kept[3];
   if (!best) return false;
-  place(best->first, best->second.first, best->second.second);
-  steps[a] = best->second.first.step, steps[b] = best->second.second.step;
+  place(best->x, best->first, best->last);
+  steps[a] = best->first.step, steps[b] = best->last.step;
   return true;
 }
 
