@@ -234,7 +234,6 @@ std::vector<JoinPlace> join_places(const BracketLine& line, bool arrives, double
   return out;
 }
 
-
 std::vector<BracketPlacement> bracket_placements(const Bracket& bracket, std::span<const Vec2> node_points,
                                                  std::span<const Vec2> node_steps, double flat, double target,
                                                  double most_turn, std::size_t most) {

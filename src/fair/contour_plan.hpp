@@ -61,9 +61,10 @@ bool is_straight_segment(const Segment& s);
 /// more than `corner_angle_deg` (and a curve meeting a line at more than `tangential_line_deg`,
 /// by default the kink limit: only a tangential line join is made G2). The joins at
 /// `smooth_nodes` (source node indices) are smooth whatever their angle: a curve meeting a line
-/// there meets it tangentially, and two lines meeting there become one. With `corners_stay`, each run's corner ends say what lies beyond
-/// them (RunEnd::beyond), so the fairing keeps them corners; without, a corner the fairing
-/// turns into a kink is noise (handwriting: fair/kinked_corners).
+/// there meets it tangentially, and two lines meeting there become one. With `corners_stay`,
+/// each run's corner ends say what lies beyond them (RunEnd::beyond), so the fairing keeps them
+/// corners; without, a corner the fairing turns into a kink is noise (handwriting:
+/// fair/kinked_corners).
 ContourPlan plan_contour(const Contour& contour, double corner_angle_deg,
                          std::span<const std::size_t> smooth_nodes = {}, bool corners_stay = false,
                          double tangential_line_deg = kink_limit_deg);
