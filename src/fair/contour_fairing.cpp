@@ -325,9 +325,9 @@ Attempt fair_with_budgets(const ContourPlan& plan, const FairSettings& settings,
       ends.end_corner = k + 1 == chains && !run.closed && run.end.kind == RunEndKind::corner;
       ends.end_axis = flat_axis[k];
       if (k > 0 || (run.closed && chains > 1)) ends.start_axis = flat_axis[(k + chains - 1) % chains];
-      ChainCubics cubics = write_chain_as_cubics(chain, budgets.cubic, settings.flat_curvature, ends,
-                                                 settings.rounding == Rounding::integers ? shortest_rounded_span
-                                                                                         : shortest_span_units);
+      const SpanCutting cutting{settings.rounding == Rounding::integers ? shortest_rounded_span : shortest_span_units,
+                                settings.profile == FairProfile::handwriting};
+      ChainCubics cubics = write_chain_as_cubics(chain, budgets.cubic, settings.flat_curvature, ends, cutting);
       a.g1_nodes += cubics.g1_fallbacks;
       const bool join_smooth = k > 0 || start_smooth || previous_ends_smooth;
       record_chain(chain, chain.closed || join_smooth, a.pieces);

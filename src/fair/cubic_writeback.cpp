@@ -31,6 +31,7 @@ constexpr double fold_margin = 0.5 * std::numbers::pi;  // a cubic may turn beyo
 constexpr double edge_margin = 0.05;  // no grid node within this share of a span's turning or length of its ends
 constexpr double snap_turn = radians(10.0);  // a corner's tangent may turn onto a nearby extremum's axis
 constexpr double snap_reach = 64.0;   // units along the chain: farther, the cubic between is long enough for the grid
+constexpr int free_cut_count = 15;   // places evenly along a span no chain of grid nodes fits
 // A corner's handle lengths tried for a span from it (or, from a flat end to a corner, the flat
 // end's), as shares of the span's chord: from just over min_handle_fraction to the whole
 // chord, evenly in their logarithm.
@@ -51,15 +52,16 @@ std::array<double, corner_handles> corner_handle_lengths(double chord) {
 // bend one way, and turn horizontal or vertical only at its ends.
 bool bends_as_a_span(const Cubic& c) { return curvature_shape(c, 0.0).sign_changes == 0 && inner_axis_extrema(c) == 0; }
 
-// Short primitive integer directions, |d|² ≤ `longest`: where a span must be cut, the cut goes
+// Primitive integer directions, |d|² ≤ `longest`: where a span must be cut, the cut goes
 // where the tangent runs along one of them, so rounding keeps the node's handles exactly
 // collinear with it in whole steps of |d|. The shortest, (1, 0), (1, 1), (2, 1) and their
 // mirrors, come first: steps of at most √5 units are fine enough for whole steps to match
 // curvature (fair/handle_steps.hpp); up to (3, 2) where none of them is near the middle.
 std::vector<Vec2> grid_directions(int longest) {
   std::vector<Vec2> out;
-  for (int p = -3; p <= 3; ++p)
-    for (int q = -3; q <= 3; ++q)
+  const int reach = static_cast<int>(std::sqrt(double(longest)));
+  for (int p = -reach; p <= reach; ++p)
+    for (int q = -reach; q <= reach; ++q)
       if (p * p + q * q <= longest && is_primitive({double(p), double(q)})) out.push_back({double(p), double(q)});
   return out;
 }
@@ -222,14 +224,14 @@ struct Fitted {
 class SpanWriter {
  public:
   /// `corners`: the ends of an open chain that are corners, whose curvature binds nothing.
-  SpanWriter(const ChainPath& path, double budget, double flat_curvature, double shortest_span, ChainEnds corners,
+  SpanWriter(const ChainPath& path, double budget, double flat_curvature, SpanCutting cutting, ChainEnds corners,
              ChainCubics& out)
-      : path_(path), budget_(budget), flat_(flat_curvature), shortest_span_(shortest_span), corners_(corners), out_(out) {}
+      : path_(path), budget_(budget), flat_(flat_curvature), cutting_(cutting), corners_(corners), out_(out) {}
 
   void fit(double a, double b, std::optional<Vec2> start_step, std::optional<Vec2> end_step, int depth,
            std::vector<Piece>& pieces) {
     Fitted f = best_cubic(a, b, start_step, end_step);
-    if (f.within(budget_) || depth >= max_depth || distance(path_.at(a).point, path_.at(b).point) < shortest_span_) {
+    if (f.within(budget_) || depth >= max_depth || distance(path_.at(a).point, path_.at(b).point) < cutting_.shortest_span) {
       if (!f.cubic) {  // no G2 cubic at all: the nearest to G2, else G1 with third-chord handles
         const LacPoint pa = path_.at(a), pb = path_.at(b);
         const double h = distance(pa.point, pb.point) / 3.0;
@@ -304,7 +306,7 @@ class SpanWriter {
       // shortest span: a handle of a unit on a line of long step slid the line's end away when
       // rounded (DejaVu Sans's ☫: a 0.8-unit handle on a line stepping 496 units, 24 units
       // off, and the contour kept unfaired).
-      if (h < shortest_span_) continue;
+      if (h < cutting_.shortest_span) continue;
       const std::optional<Cubic> c =
           g2_hermite_cubic_from_flat_end(start, end, free_start ? SegmentEnd::start : SegmentEnd::end, h);
       if (c && bends_as_a_span(*c)) out.push_back(*c);
@@ -364,6 +366,18 @@ class SpanWriter {
     return best;
   }
 
+  // The places a span may be cut at, tried in this order: where the tangent runs along one of
+  // the short grid directions (fine_), along one of those up to (3, 2) (all_), along one up to
+  // (10, 0) (long_), or at those and evenly along the span (free_cuts). The last two only with
+  // SpanCutting::fewest.
+  enum class CutPlaces { short_directions, all_directions, long_directions, anywhere };
+  static constexpr std::array cut_places{CutPlaces::short_directions, CutPlaces::all_directions,
+                                         CutPlaces::long_directions, CutPlaces::anywhere};
+
+  const std::vector<Vec2>& directions_of(CutPlaces places) const {
+    return places == CutPlaces::short_directions ? fine_ : places == CutPlaces::all_directions ? all_ : long_;
+  }
+
   struct Cut {
     double sigma;
     std::optional<Vec2> step;
@@ -385,11 +399,16 @@ class SpanWriter {
   // direction (so rounding keeps each node's handles collinear in whole steps) and, among as
   // few, the ones whose coarsest node the grid sets finest: a shortest path over the grid
   // nodes, by count and then by the coarsest node. The short directions first; the longer
-  // ones only where no chain of short ones fits. False when none fits.
+  // ones only where no chain of short ones fits (CutPlaces). False when none fits.
   bool through_grid_nodes(Cut a, Cut b, std::vector<Piece>& pieces) const {
-    for (const std::vector<Vec2>* directions : {&fine_, &all_}) {
+    for (const CutPlaces places : cut_places) {
+      if (places >= CutPlaces::long_directions && !cutting_.fewest) break;
       std::vector<Cut> nodes{a};
-      for (const Cut& c : grid_cuts(a.sigma, b.sigma, *directions)) nodes.push_back(c);
+      for (const Cut& c : grid_cuts(a.sigma, b.sigma, directions_of(places))) nodes.push_back(c);
+      if (places == CutPlaces::anywhere) {
+        for (const Cut& c : free_cuts(a.sigma, b.sigma)) nodes.push_back(c);
+        std::sort(nodes.begin() + 1, nodes.end(), [](const Cut& x, const Cut& y) { return x.sigma < y.sigma; });
+      }
       nodes.push_back(b);
       const std::size_t n = nodes.size();
       if (n == 2) continue;
@@ -409,6 +428,9 @@ class SpanWriter {
           // Far off, a longer cubic from i fares no better (where no G2 cubic exists, it may).
           if (f.deviation > far_off * budget_ && f.deviation < no_cubic) break;
           if (!f.within(budget_)) continue;
+          // A node placed anywhere has its tangent off the axes: a cubic between such nodes may
+          // cross one inside, which no node would mark (dkg's q: a stem 3° off the vertical).
+          if (places == CutPlaces::anywhere && inner_axis_extrema_of(*f.cubic).off_node > 0) continue;
           const double q = std::max(node_coarseness(*f.cubic, SegmentEnd::start, nodes[i].step),
                                     node_coarseness(*f.cubic, SegmentEnd::end, nodes[j].step));
           for (std::size_t c = 0; c + 1 < n; ++c) {
@@ -454,6 +476,16 @@ class SpanWriter {
     return out;
   }
 
+  // Evenly along a span, no closer than the shortest span: where no chain of grid nodes fits
+  // (a long span turning too little for any short grid direction), the places its fewest
+  // cubics may meet, their nodes' directions left to rounding.
+  std::vector<Cut> free_cuts(double a, double b) const {
+    const int count = std::min(free_cut_count, static_cast<int>(std::floor((b - a) / cutting_.shortest_span)) - 1);
+    std::vector<Cut> out;
+    for (int k = 1; k <= count; ++k) out.push_back({a + (b - a) * k / (count + 1), std::nullopt});
+    return out;
+  }
+
   // Where a span no chain of grid nodes fits is halved: where the tangent runs along a grid
   // direction nearest the middle of its turning, else at the chain junction nearest the
   // middle of its length, else at the middle.
@@ -476,10 +508,10 @@ class SpanWriter {
   const ChainPath& path_;
   double budget_;
   double flat_;
-  double shortest_span_;
+  SpanCutting cutting_;
   ChainEnds corners_;
   ChainCubics& out_;
-  std::vector<Vec2> fine_ = grid_directions(5), all_ = grid_directions(13);
+  std::vector<Vec2> fine_ = grid_directions(5), all_ = grid_directions(13), long_ = grid_directions(100);
 };
 
 // The cubics of the spans between consecutive required nodes, in order (a closed chain's last
@@ -501,7 +533,7 @@ std::vector<Piece> write_spans(SpanWriter& writer, std::span<const RequiredNode>
 // (its handle along the axis) and the extremum's node goes. Corner and extremum a few units
 // apart left a cubic so short that whole grid steps could only make it straight, against the
 // curvature beyond it.
-void snap_extremum_to_corner(ChainPath& path, double budget, double flat_curvature, double shortest_span,
+void snap_extremum_to_corner(ChainPath& path, double budget, double flat_curvature, SpanCutting cutting,
                              ChainEnds corners, std::vector<RequiredNode>& nodes, SegmentEnd end) {
   const std::size_t n = nodes.size();
   const bool corner = end == SegmentEnd::start ? corners.start_corner : corners.end_corner;
@@ -513,7 +545,7 @@ void snap_extremum_to_corner(ChainPath& path, double budget, double flat_curvatu
   const Vec2 axis = *nodes[e].grid_step;
   if (std::abs(turning_angle(path.at(nodes[at].sigma).tangent, axis)) > snap_turn) return;
   ChainCubics trials;  // what the trial fits count is not the chain's
-  SpanWriter writer(path, budget, flat_curvature, shortest_span, corners, trials);  // it reads the path as turned below
+  SpanWriter writer(path, budget, flat_curvature, cutting, corners, trials);  // it reads the path as turned below
   const std::array<RequiredNode, 3> kept = start ? std::array{nodes[at], nodes[e], nodes[far]}
                                                  : std::array{nodes[far], nodes[e], nodes[at]};
   const std::size_t before = write_spans(writer, kept, false, path.total()).size();
@@ -571,7 +603,7 @@ std::optional<Vec2> flat_inflection_axis(const FairedChain& before, const Faired
 }
 
 ChainCubics write_chain_as_cubics(const FairedChain& chain, double budget, double flat_curvature, ChainEnds ends,
-                                  double shortest_span) {
+                                  SpanCutting cutting) {
   ChainCubics out;
   ChainPath path(chain);
   const double total = path.total();
@@ -597,10 +629,10 @@ ChainCubics write_chain_as_cubics(const FairedChain& chain, double budget, doubl
   if (!chain.closed) {
     if (ends.start_axis) turn_end_onto_axis(path, distinct, SegmentEnd::start, *ends.start_axis);
     if (ends.end_axis) turn_end_onto_axis(path, distinct, SegmentEnd::end, *ends.end_axis);
-    snap_extremum_to_corner(path, budget, flat_curvature, shortest_span, ends, distinct, SegmentEnd::start);
-    snap_extremum_to_corner(path, budget, flat_curvature, shortest_span, ends, distinct, SegmentEnd::end);
+    snap_extremum_to_corner(path, budget, flat_curvature, cutting, ends, distinct, SegmentEnd::start);
+    snap_extremum_to_corner(path, budget, flat_curvature, cutting, ends, distinct, SegmentEnd::end);
   }
-  SpanWriter writer(path, budget, flat_curvature, shortest_span, chain.closed ? ChainEnds{} : ends, out);
+  SpanWriter writer(path, budget, flat_curvature, cutting, chain.closed ? ChainEnds{} : ends, out);
   const std::vector<Piece> pieces = write_spans(writer, distinct, chain.closed, total);
   // Nodes: the start of every cubic (and an open chain's last end); a node's grid step is the
   // end step of the cubic before it.

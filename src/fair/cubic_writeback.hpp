@@ -49,9 +49,26 @@ std::optional<Vec2> flat_inflection_axis(const FairedChain& before, const Faired
 /// round onto the same few grid points.
 inline constexpr double shortest_span_units = 4.0;
 
+/// How a span that no cubic fits within the budget, nor a chain of cubics through nodes where
+/// the tangent runs along a grid direction up to (3, 2), is cut.
+struct SpanCutting {
+  /// A span shorter than this (units) is one cubic: as shortest_span_units, for this call.
+  double shortest_span = shortest_span_units;
+  /// Into the fewest cubics through nodes where the tangent runs along a grid direction up to
+  /// (10, 0) or, where none fits, also through places evenly along it (their nodes' directions
+  /// left to rounding); else halved, and each half fitted again. The fewest serve handwriting,
+  /// whose long scanned strokes turn too little for a short grid direction and were halved
+  /// into cubics each bending its own way (a–z A–Z rounded: Breip's inflections 0.404× →
+  /// 0.387× of the source's, dkg's 0.271× → 0.242×; nodes Breip 0.598× → 0.574×, Because We
+  /// Learn 1.055× → 0.998×). On text, whose tolerance leaves rounding half a unit, the longer
+  /// cubics strayed once their nodes took grid directions (EB Garamond's a and M kept runs as
+  /// drawn after 50 and 140 s of rounding, against 0.3 and 4).
+  bool fewest = false;
+};
+
 /// `flat_curvature`: below it a node's curvature counts as zero (a line join), not as a
-/// curvature the grid must set finely. `shortest_span`: as shortest_span_units, for this call.
+/// curvature the grid must set finely.
 ChainCubics write_chain_as_cubics(const FairedChain& chain, double budget_units, double flat_curvature,
-                                  ChainEnds ends = {}, double shortest_span = shortest_span_units);
+                                  ChainEnds ends = {}, SpanCutting cutting = {});
 
 }  // namespace gf

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "aesthetic/segment_fit.hpp"
+#include "fair/cubic_change.hpp"
 #include "geom/curvature.hpp"
 #include "point_set_distance.hpp"
 
@@ -64,7 +65,7 @@ TEST(CubicWriteback, NoHalfOfASpanIsShorterThanHalfTheShortestSpan) {
     return shortest;
   };
   const ChainCubics fine = write_chain_as_cubics(chain, unreachable, flat);
-  const ChainCubics coarse = write_chain_as_cubics(chain, unreachable, flat, {}, 8.0);
+  const ChainCubics coarse = write_chain_as_cubics(chain, unreachable, flat, {}, {.shortest_span = 8.0});
   EXPECT_LT(coarse.nodes.size(), fine.nodes.size());
   EXPECT_LT(shortest_cubic(fine), 4.0);
   EXPECT_GE(shortest_cubic(coarse), 4.0 - 1e-6);
@@ -128,6 +129,40 @@ TEST(CubicWriteback, ACurveFromALineToACornerIsOneCubic) {
   for (int k = 0; k <= 400; ++k) cubic.push_back(c.point_at(k / 400.0));
   EXPECT_LE(test::polyline_hausdorff(cubic, path), budget + 0.01);
   for (int k = 1; k <= 64; ++k) EXPECT_GE(curvature(derivatives_at(c, k / 64.0)).value_or(0.0), 0.0) << k / 64.0;  // turning left throughout
+}
+
+// A long stroke leaning 7.2° right of the vertical and turning right by 3° over 600 units:
+// none of the short grid directions runs along it. Where the budget asks for several cubics
+// (1e-4 units here: the stroke's sagitta is 2 units), halving takes 8, the fewest cubics
+// through places where the tangent runs along a longer grid direction or evenly along it
+// (handwriting: SpanCutting::fewest) 6, each within the budget of the chain (and the 0.6e-4
+// its table of points, 2.3 units apart, lies inside the curve), bending one way and turning
+// horizontal or vertical at no place inside.
+TEST(CubicWriteback, ANearlyStraightStrokeTakesTheFewestCubics) {
+  const double lean = radians(7.2), turn = radians(3.0);
+  const Vec2 p0{0, 0}, p1 = p0 + Vec2{std::sin(lean), std::cos(lean)} * 300.0;
+  const Vec2 p2 = p1 + Vec2{std::sin(lean + turn), std::cos(lean + turn)} * 300.0;
+  const SegmentFit fit = fit_three_point(p0, p1, p2, 1.0);
+  ASSERT_TRUE(fit.ok());
+  FairedChain chain;
+  chain.segments.push_back(*fit.segment);
+  const double budget = 1e-4, flat = 5e-4;
+  const ChainCubics halved = write_chain_as_cubics(chain, budget, flat, {}, {.shortest_span = 8.0});
+  const ChainCubics fewest = write_chain_as_cubics(chain, budget, flat, {}, {.shortest_span = 8.0, .fewest = true});
+  EXPECT_EQ(halved.nodes.size(), 9u);
+  EXPECT_EQ(fewest.nodes.size(), 7u);
+
+  std::vector<Vec2> path;
+  for (const LacPoint& p : chain.segments.front().sample(4000)) path.push_back(p.point);
+  for (std::size_t i = 0; i + 1 < fewest.nodes.size(); ++i) {
+    const Cubic c = outline_cubic(fewest.nodes, i);
+    std::vector<Vec2> written;
+    for (int k = 0; k <= 400; ++k) written.push_back(c.point_at(k / 400.0));
+    EXPECT_LE(test::directed_to_polyline(written, path), budget + 0.6e-4) << "cubic " << i;
+    EXPECT_EQ(inner_axis_extrema_of(c).all, 0) << "cubic " << i;
+    for (int k = 0; k <= 64; ++k)
+      EXPECT_LE(curvature(derivatives_at(c, k / 64.0)).value_or(0.0), 0.0) << "cubic " << i << " at " << k / 64.0;
+  }
 }
 
 }  // namespace
