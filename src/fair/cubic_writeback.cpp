@@ -31,7 +31,7 @@ constexpr double fold_margin = 0.5 * std::numbers::pi;  // a cubic may turn beyo
 constexpr double edge_margin = 0.05;  // no grid node within this share of a span's turning or length of its ends
 constexpr double snap_turn = radians(10.0);  // a corner's tangent may turn onto a nearby extremum's axis
 constexpr double snap_reach = 64.0;   // units along the chain: farther, the cubic between is long enough for the grid
-constexpr int free_cut_count = 15;   // places evenly along a span no chain of grid nodes fits
+constexpr int even_cut_count = 15;   // places evenly along a span no chain of grid nodes fits
 // A corner's handle lengths tried for a span from it (or, from a flat end to a corner, the flat
 // end's), as shares of the span's chord: from just over min_handle_fraction to the whole
 // chord, evenly in their logarithm.
@@ -368,11 +368,11 @@ class SpanWriter {
 
   // The places a span may be cut at, tried in this order: where the tangent runs along one of
   // the short grid directions (fine_), along one of those up to (3, 2) (all_), along one up to
-  // (10, 0) (long_), or at those and evenly along the span (free_cuts). The last two only with
-  // SpanCutting::fewest.
-  enum class CutPlaces { short_directions, all_directions, long_directions, anywhere };
+  // (10, 0) (long_), or, with SpanCutting::evenly, at those and evenly along the span
+  // (even_cuts).
+  enum class CutPlaces { short_directions, all_directions, long_directions, evenly };
   static constexpr std::array cut_places{CutPlaces::short_directions, CutPlaces::all_directions,
-                                         CutPlaces::long_directions, CutPlaces::anywhere};
+                                         CutPlaces::long_directions, CutPlaces::evenly};
 
   const std::vector<Vec2>& directions_of(CutPlaces places) const {
     return places == CutPlaces::short_directions ? fine_ : places == CutPlaces::all_directions ? all_ : long_;
@@ -402,11 +402,11 @@ class SpanWriter {
   // ones only where no chain of short ones fits (CutPlaces). False when none fits.
   bool through_grid_nodes(Cut a, Cut b, std::vector<Piece>& pieces) const {
     for (const CutPlaces places : cut_places) {
-      if (places >= CutPlaces::long_directions && !cutting_.fewest) break;
+      if (places == CutPlaces::evenly && !cutting_.evenly) break;
       std::vector<Cut> nodes{a};
       for (const Cut& c : grid_cuts(a.sigma, b.sigma, directions_of(places))) nodes.push_back(c);
-      if (places == CutPlaces::anywhere) {
-        for (const Cut& c : free_cuts(a.sigma, b.sigma)) nodes.push_back(c);
+      if (places == CutPlaces::evenly) {
+        for (const Cut& c : even_cuts(a.sigma, b.sigma)) nodes.push_back(c);
         std::sort(nodes.begin() + 1, nodes.end(), [](const Cut& x, const Cut& y) { return x.sigma < y.sigma; });
       }
       nodes.push_back(b);
@@ -430,7 +430,7 @@ class SpanWriter {
           if (!f.within(budget_)) continue;
           // A node placed anywhere has its tangent off the axes: a cubic between such nodes may
           // cross one inside, which no node would mark (dkg's q: a stem 3° off the vertical).
-          if (places == CutPlaces::anywhere && inner_axis_extrema_of(*f.cubic).off_node > 0) continue;
+          if (places == CutPlaces::evenly && inner_axis_extrema_of(*f.cubic).off_node > 0) continue;
           const double q = std::max(node_coarseness(*f.cubic, SegmentEnd::start, nodes[i].step),
                                     node_coarseness(*f.cubic, SegmentEnd::end, nodes[j].step));
           for (std::size_t c = 0; c + 1 < n; ++c) {
@@ -477,10 +477,10 @@ class SpanWriter {
   }
 
   // Evenly along a span, no closer than the shortest span: where no chain of grid nodes fits
-  // (a long span turning too little for any short grid direction), the places its fewest
-  // cubics may meet, their nodes' directions left to rounding.
-  std::vector<Cut> free_cuts(double a, double b) const {
-    const int count = std::min(free_cut_count, static_cast<int>(std::floor((b - a) / cutting_.shortest_span)) - 1);
+  // (a long span turning too little for any grid direction), the places its fewest cubics may
+  // meet, their nodes' directions left to rounding.
+  std::vector<Cut> even_cuts(double a, double b) const {
+    const int count = std::min(even_cut_count, static_cast<int>(std::floor((b - a) / cutting_.shortest_span)) - 1);
     std::vector<Cut> out;
     for (int k = 1; k <= count; ++k) out.push_back({a + (b - a) * k / (count + 1), std::nullopt});
     return out;

@@ -4,8 +4,8 @@
 // ends (geom/g2_hermite.hpp), so curvature matches on both sides of every node (at a corner,
 // whose curvature binds nothing, only the other end's is met). A span whose
 // best cubic strays too far becomes the fewest cubics whose inner nodes sit where the tangent
-// runs along a short grid direction (a shortest path over those places), and among as few the
-// ones whose coarsest node rounding can set finest, span ends included.
+// runs along a grid direction, the shortest first (a shortest path over those places), and
+// among as few the ones whose coarsest node rounding can set finest, span ends included.
 #pragma once
 
 #include <optional>
@@ -50,20 +50,19 @@ std::optional<Vec2> flat_inflection_axis(const FairedChain& before, const Faired
 inline constexpr double shortest_span_units = 4.0;
 
 /// How a span that no cubic fits within the budget, nor a chain of cubics through nodes where
-/// the tangent runs along a grid direction up to (3, 2), is cut.
+/// the tangent runs along a grid direction up to (10, 0), is cut.
 struct SpanCutting {
   /// A span shorter than this (units) is one cubic: as shortest_span_units, for this call.
   double shortest_span = shortest_span_units;
-  /// Into the fewest cubics through nodes where the tangent runs along a grid direction up to
-  /// (10, 0) or, where none fits, also through places evenly along it (their nodes' directions
-  /// left to rounding); else halved, and each half fitted again. The fewest serve handwriting,
-  /// whose long scanned strokes turn too little for a short grid direction and were halved
-  /// into cubics each bending its own way (a–z A–Z rounded: Breip's inflections 0.404× →
-  /// 0.387× of the source's, dkg's 0.271× → 0.242×; nodes Breip 0.598× → 0.574×, Because We
+  /// Into the fewest cubics through those nodes and places evenly along it, their nodes'
+  /// directions left to rounding; else halved, and each half fitted again. The places serve
+  /// handwriting, whose long scanned strokes turn too little for any grid direction and were
+  /// halved into cubics each bending its own way (a–z A–Z rounded: Breip's inflections 0.404×
+  /// → 0.387× of the source's, dkg's 0.271× → 0.242×; nodes Breip 0.598× → 0.574×, Because We
   /// Learn 1.055× → 0.998×). On text, whose tolerance leaves rounding half a unit, the longer
   /// cubics strayed once their nodes took grid directions (EB Garamond's a and M kept runs as
   /// drawn after 50 and 140 s of rounding, against 0.3 and 4).
-  bool fewest = false;
+  bool evenly = false;
 };
 
 /// `flat_curvature`: below it a node's curvature counts as zero (a line join), not as a

@@ -1,9 +1,11 @@
 // The cubic writeback of a faired chain: an extremum a few units from a corner; the shortest
-// span it halves.
+// span it halves; a corner's free curvature; a nearly straight stroke cut where it runs along
+// a longer grid direction, or evenly along it.
 #include "fair/cubic_writeback.hpp"
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 
 #include "aesthetic/segment_fit.hpp"
@@ -131,38 +133,69 @@ TEST(CubicWriteback, ACurveFromALineToACornerIsOneCubic) {
   for (int k = 1; k <= 64; ++k) EXPECT_GE(curvature(derivatives_at(c, k / 64.0)).value_or(0.0), 0.0) << k / 64.0;  // turning left throughout
 }
 
-// A long stroke leaning 7.2° right of the vertical and turning right by 3° over 600 units:
-// none of the short grid directions runs along it. Where the budget asks for several cubics
-// (1e-4 units here: the stroke's sagitta is 2 units), halving takes 8, the fewest cubics
-// through places where the tangent runs along a longer grid direction or evenly along it
-// (handwriting: SpanCutting::fewest) 6, each within the budget of the chain (and the 0.6e-4
-// its table of points, 2.3 units apart, lies inside the curve), bending one way and turning
-// horizontal or vertical at no place inside.
-TEST(CubicWriteback, ANearlyStraightStrokeTakesTheFewestCubics) {
-  const double lean = radians(7.2), turn = radians(3.0);
+// A long stroke leaning 7.2° right of the vertical and turning right by `turn_deg` over 600
+// units: none of the grid directions up to (3, 2) runs along it.
+FairedChain nearly_straight_stroke(double turn_deg) {
+  const double lean = radians(7.2), turn = radians(turn_deg);
   const Vec2 p0{0, 0}, p1 = p0 + Vec2{std::sin(lean), std::cos(lean)} * 300.0;
   const Vec2 p2 = p1 + Vec2{std::sin(lean + turn), std::cos(lean + turn)} * 300.0;
   const SegmentFit fit = fit_three_point(p0, p1, p2, 1.0);
-  ASSERT_TRUE(fit.ok());
   FairedChain chain;
-  chain.segments.push_back(*fit.segment);
-  const double budget = 1e-4, flat = 5e-4;
-  const ChainCubics halved = write_chain_as_cubics(chain, budget, flat, {}, {.shortest_span = 8.0});
-  const ChainCubics fewest = write_chain_as_cubics(chain, budget, flat, {}, {.shortest_span = 8.0, .fewest = true});
-  EXPECT_EQ(halved.nodes.size(), 9u);
-  EXPECT_EQ(fewest.nodes.size(), 7u);
+  if (fit.ok()) chain.segments.push_back(*fit.segment);
+  return chain;
+}
 
+// Each cubic within `budget` (plus `slack`, what the writeback's table of points, 2.3 units
+// apart, lies inside the curve) of the chain, bending one way (right) and turning horizontal
+// or vertical at no place inside.
+void expect_faithful_cubics(const FairedChain& chain, const ChainCubics& written, double budget, double slack) {
   std::vector<Vec2> path;
   for (const LacPoint& p : chain.segments.front().sample(4000)) path.push_back(p.point);
-  for (std::size_t i = 0; i + 1 < fewest.nodes.size(); ++i) {
-    const Cubic c = outline_cubic(fewest.nodes, i);
-    std::vector<Vec2> written;
-    for (int k = 0; k <= 400; ++k) written.push_back(c.point_at(k / 400.0));
-    EXPECT_LE(test::directed_to_polyline(written, path), budget + 0.6e-4) << "cubic " << i;
+  for (std::size_t i = 0; i + 1 < written.nodes.size(); ++i) {
+    const Cubic c = outline_cubic(written.nodes, i);
+    std::vector<Vec2> points;
+    for (int k = 0; k <= 400; ++k) points.push_back(c.point_at(k / 400.0));
+    EXPECT_LE(test::directed_to_polyline(points, path), budget + slack) << "cubic " << i;
     EXPECT_EQ(inner_axis_extrema_of(c).all, 0) << "cubic " << i;
     for (int k = 0; k <= 64; ++k)
       EXPECT_LE(curvature(derivatives_at(c, k / 64.0)).value_or(0.0), 0.0) << "cubic " << i << " at " << k / 64.0;
   }
+}
+
+// Turning by 3°, from 7.2° to 10.2° right of the vertical, the stroke passes (1, 7) and (1, 6).
+// Within a budget of 5e-4 units (the stroke's sagitta is 2 units) it takes three cubics, its
+// two inner nodes where the tangent runs along those two exactly, their handles along them;
+// halving had cut it at its middle, on no grid direction.
+TEST(CubicWriteback, ANearlyStraightStrokeIsCutWhereItRunsAlongLongerGridDirections) {
+  const FairedChain chain = nearly_straight_stroke(3.0);
+  ASSERT_EQ(chain.segments.size(), 1u);
+  const double budget = 5e-4, flat = 5e-4;
+  const ChainCubics written = write_chain_as_cubics(chain, budget, flat, {}, {.shortest_span = 8.0});
+  ASSERT_EQ(written.nodes.size(), 4u);
+  const std::array<Vec2, 2> steps{Vec2{1, 7}, Vec2{1, 6}};
+  for (std::size_t k = 1; k <= 2; ++k) {
+    const OutlineNode& node = written.nodes[k];
+    ASSERT_TRUE(node.grid_step && node.in_handle && node.out_handle) << k;
+    EXPECT_EQ(*node.grid_step, steps[k - 1]);
+    const Vec2 u = *node.grid_step / norm(*node.grid_step);
+    EXPECT_NEAR(cross(u, *node.out_handle - node.point), 0.0, 1e-9) << k;
+    EXPECT_NEAR(cross(u, node.point - *node.in_handle), 0.0, 1e-9) << k;
+  }
+  expect_faithful_cubics(chain, written, budget, 0.6e-4);
+}
+
+// Turning by 0.4°, from 7.2° to 7.6°, the stroke passes no grid direction up to (10, 0) either:
+// halving takes 8 cubics within a budget of 1e-5; the fewest through places evenly along it
+// (handwriting: SpanCutting::evenly) 6, each within the budget.
+TEST(CubicWriteback, AStrokeNoGridDirectionCutsTakesTheFewestCubicsThroughEvenPlaces) {
+  const FairedChain chain = nearly_straight_stroke(0.4);
+  ASSERT_EQ(chain.segments.size(), 1u);
+  const double budget = 1e-5, flat = 5e-4;
+  const ChainCubics halved = write_chain_as_cubics(chain, budget, flat, {}, {.shortest_span = 8.0});
+  const ChainCubics evenly = write_chain_as_cubics(chain, budget, flat, {}, {.shortest_span = 8.0, .evenly = true});
+  EXPECT_EQ(halved.nodes.size(), 9u);
+  EXPECT_EQ(evenly.nodes.size(), 7u);
+  expect_faithful_cubics(chain, evenly, budget, 1e-5);
 }
 
 }  // namespace
