@@ -163,9 +163,9 @@ void expect_faithful_cubics(const FairedChain& chain, const ChainCubics& written
 }
 
 // Turning by 3°, from 7.2° to 10.2° right of the vertical, the stroke passes (1, 7) and (1, 6).
-// Within a budget of 5e-4 units (the stroke's sagitta is 2 units) it takes three cubics, its
-// two inner nodes where the tangent runs along those two exactly, their handles along them;
-// halving had cut it at its middle, on no grid direction.
+// Within a budget of 5e-4 units (the stroke bows 4 units off its chord) it takes three cubics,
+// its two inner nodes where the tangent runs along those two exactly, their handles along
+// them; halving had cut it at its middle, on no grid direction.
 TEST(CubicWriteback, ANearlyStraightStrokeIsCutWhereItRunsAlongLongerGridDirections) {
   const FairedChain chain = nearly_straight_stroke(3.0);
   ASSERT_EQ(chain.segments.size(), 1u);
