@@ -24,9 +24,8 @@ double turn_at(const std::vector<OutlineNode>& nodes, bool closed, std::size_t k
 bool corner_to_keep(const std::vector<OutlineNode>& ideal, bool closed, std::size_t k) {
   const OutlineNode& node = ideal[k];
   if (node.smooth || (!node.in_handle && !node.out_handle)) return false;
-  const bool between_cubics = node.in_handle && node.out_handle;
   const double turn = turn_at(ideal, closed, k);
-  return turn >= radians(kink_limit_deg + (between_cubics ? 1.0 : 0.0)) && turn < std::numbers::pi;
+  return turn >= radians(kink_limit_deg) && turn < std::numbers::pi;
 }
 
 bool turns_less_than_it_did(const std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal, bool closed,

@@ -209,7 +209,8 @@ Vec2 end_tangent_of(double s, const RunReference& ref, const SmoothRun& run, dou
 // the source turns, if less) when its tangent is turned: turned further, the kink pass would
 // make it smooth, and the corner the source drew would be lost (Carlito's X: a terminal's
 // curve met its diagonal at 6.6°, and the symmetric arc at 2.4°). A degree and a half past the
-// limit, since rounding keeps a corner between cubics only from a degree past it (handle_steps).
+// limit: room for rounding, which turns a handle by up to a degree (set while rounding kept a
+// corner between cubics only from a degree past the limit, handle_steps).
 constexpr double corner_floor_deg = kink_limit_deg + 1.5;
 
 // The angle a corner's tangent (now `current`) may be turned to on the way to `wanted`: all
