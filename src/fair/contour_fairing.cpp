@@ -244,6 +244,8 @@ std::vector<OutlineNode> drawn_nodes(const SmoothRun& run, double most_move, Fai
 Attempt fair_with_budgets(const ContourPlan& plan, const FairSettings& settings, Budgets budgets, FairedRuns& cache,
                           bool after_run_failure, RunBasis basis, bool as_drawn = false) {
   Attempt a;
+  const SpanCutting cutting{settings.rounding == Rounding::integers ? shortest_rounded_span : shortest_span_units,
+                            settings.profile == FairProfile::handwriting};
   const std::size_t count = plan.pieces.size();
   std::vector<std::optional<FairedRun>> runs(count);
   for (std::size_t i = 0; i < count; ++i) {
@@ -325,8 +327,6 @@ Attempt fair_with_budgets(const ContourPlan& plan, const FairSettings& settings,
       ends.end_corner = k + 1 == chains && !run.closed && run.end.kind == RunEndKind::corner;
       ends.end_axis = flat_axis[k];
       if (k > 0 || (run.closed && chains > 1)) ends.start_axis = flat_axis[(k + chains - 1) % chains];
-      const SpanCutting cutting{settings.rounding == Rounding::integers ? shortest_rounded_span : shortest_span_units,
-                                settings.profile == FairProfile::handwriting};
       ChainCubics cubics = write_chain_as_cubics(chain, budgets.cubic, settings.flat_curvature, ends, cutting);
       a.g1_nodes += cubics.g1_fallbacks;
       const bool join_smooth = k > 0 || start_smooth || previous_ends_smooth;

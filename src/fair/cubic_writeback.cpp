@@ -242,7 +242,7 @@ class SpanWriter {
       pieces.push_back({*f.cubic, end_step});
       return;
     }
-    if (through_grid_nodes({a, start_step}, {b, end_step}, pieces)) return;
+    if (through_cut_places({a, start_step}, {b, end_step}, pieces)) return;
     // No chain of grid nodes fits: halve the span and try again on each half.
     const Cut cut = fallback_cut(a, b);
     fit(a, cut.sigma, start_step, cut.step, depth + 1, pieces);
@@ -369,7 +369,8 @@ class SpanWriter {
   // The places a span may be cut at, tried in this order: where the tangent runs along one of
   // the short grid directions (fine_), along one of those up to (3, 2) (all_), along one up to
   // (10, 0) (long_), or, with SpanCutting::evenly, at those and evenly along the span
-  // (even_cuts).
+  // (even_cuts). Each pass measures its pairs of places afresh, those of the passes before it
+  // too: a span comes this far only where the shorter directions found no chain.
   enum class CutPlaces { short_directions, all_directions, long_directions, evenly };
   static constexpr std::array cut_places{CutPlaces::short_directions, CutPlaces::all_directions,
                                          CutPlaces::long_directions, CutPlaces::evenly};
@@ -400,15 +401,18 @@ class SpanWriter {
   // few, the ones whose coarsest node the grid sets finest: a shortest path over the grid
   // nodes, by count and then by the coarsest node. The short directions first; the longer
   // ones only where no chain of short ones fits (CutPlaces). False when none fits.
-  bool through_grid_nodes(Cut a, Cut b, std::vector<Piece>& pieces) const {
+  bool through_cut_places(Cut a, Cut b, std::vector<Piece>& pieces) const {
+    std::vector<Cut> cuts;  // the last pass's grid cuts, which the even places join
     for (const CutPlaces places : cut_places) {
       if (places == CutPlaces::evenly && !cutting_.evenly) break;
-      std::vector<Cut> nodes{a};
-      for (const Cut& c : grid_cuts(a.sigma, b.sigma, directions_of(places))) nodes.push_back(c);
       if (places == CutPlaces::evenly) {
-        for (const Cut& c : even_cuts(a.sigma, b.sigma)) nodes.push_back(c);
-        std::sort(nodes.begin() + 1, nodes.end(), [](const Cut& x, const Cut& y) { return x.sigma < y.sigma; });
+        for (const Cut& c : even_cuts(a.sigma, b.sigma)) cuts.push_back(c);
+        std::sort(cuts.begin(), cuts.end(), [](const Cut& x, const Cut& y) { return x.sigma < y.sigma; });
+      } else {
+        cuts = grid_cuts(a.sigma, b.sigma, directions_of(places));
       }
+      std::vector<Cut> nodes{a};
+      nodes.insert(nodes.end(), cuts.begin(), cuts.end());
       nodes.push_back(b);
       const std::size_t n = nodes.size();
       if (n == 2) continue;
