@@ -14,12 +14,12 @@ inline const std::string inconsolata = fonts + "/Inconsolata/Inconsolata-subset.
 inline const std::string cantarell = fonts + "/Cantarell/Cantarell-Regular-subset.otf";  // S
 inline const std::string lato = fonts + "/Lato/Lato-Regular-subset.ttf";  // c, g, j, s, t, z, K, M, S, Y
 inline const std::string kristi = fonts + "/Kristi/Kristi-subset.ttf";  // N
-inline const std::string eb_garamond = fonts + "/EBGaramond/EBGaramond12-Regular-subset.otf";  // d
+inline const std::string eb_garamond = fonts + "/EBGaramond/EBGaramond12-Regular-subset.otf";  // d W
 inline const std::string noto_sans = fonts + "/NotoSans/NotoSans-Regular-subset.ttf";  // h
 inline const std::string noto_serif = fonts + "/NotoSerif/NotoSerif-Regular-subset.ttf";  // A, E, Y, Z, k, v
 inline const std::string free_serif = fonts + "/FreeSerif/FreeSerif-subset.ttf";  // w
 inline const std::string carlito = fonts + "/Carlito/Carlito-Regular-subset.ttf";  // w, M, x
-inline const std::string gentium_plus = fonts + "/GentiumPlus/GentiumPlus-Regular-subset.ttf";  // d
+inline const std::string gentium_plus = fonts + "/GentiumPlus/GentiumPlus-Regular-subset.ttf";  // d X
 inline const std::string comic_neue = fonts + "/ComicNeue/ComicNeue-Regular-subset.otf";  // i, u
 inline const std::string linux_libertine = fonts + "/LinuxLibertine/LinLibertine_R-subset.otf";  // d, g, D, M, T, Z
 // dkg handwriting's T, renamed (its licence reserves the name)

@@ -236,8 +236,9 @@ class LinePlacer {
   // (node k's out-handle when the curve arrives, its in-handle when it leaves) at the whole
   // step nearest the line (a corner's: the grid point of the line nearest it, where the handle
   // steps seat it; Delphine's l, whose curve so seated turned back to its vertical corner), or
-  // where rounding put it. Its cost: how far that handle moves (three tenths), or `unseated`
-  // when even there the curvature at the join stays visible; and that and four more where every
+  // where rounding put it; an H/V extremum's also from a unit across its axis (a unit more).
+  // Its cost: how far that handle moves (three tenths), or `unseated` when even there the
+  // curvature at the join stays visible; and that and four more where every
   // such handle gives the curve an H/V extremum its exact self lacks, so that a missing
   // extremum weighs more than a jump (a short curve bent back on itself by a handle of the
   // line's long step: Because We Build's M, a 2-unit curve from the bowl's foot to a (14, 1)
@@ -246,13 +247,10 @@ class LinePlacer {
     const std::optional<Vec2> wanted = out ? exact_[k].out_handle : exact_[k].in_handle;
     const std::optional<Vec2> placed = out ? rounded_[k].out_handle : rounded_[k].in_handle;
     if (!wanted || !placed || (!steps_[k] && exact_[k].smooth)) return 0.0;
-    const auto curve = [&](Vec2 h) {
-      return out ? Cubic{rounded_[k].point, h, near, end} : Cubic{end, near, h, rounded_[k].point};
-    };
+    const auto curve = [&](Vec2 far, Vec2 h) { return out ? Cubic{far, h, near, end} : Cubic{end, near, h, far}; };
     const int extrema = exact_extrema_[out ? k : previous(k)];
     const double fold = unseated + fold_unit;
     double best = unseated + fold;
-    std::vector<Vec2> candidates;
     // A far node whose tangent does not meet the line ahead of both the join and itself: no
     // handle seats the curve, which must bend both ways to leave one tangent for the other, an
     // S. Parallel to the line and off it (Caladea's z: a curve from its extremum down into a
@@ -262,28 +260,44 @@ class LinePlacer {
     // middle apex slid to where it passed through the end of the line from the apex, and the
     // curve between took two inflections).
     const bool far_line = !(out ? exact_[k].in_handle : exact_[k].out_handle);
-    const bool no_seat =
-        steps_[k] && (far_line ? !tangents_seat_handles(end, out ? d * -1.0 : d, rounded_[k].point,
-                                                        out ? *steps_[k] * -1.0 : *steps_[k])
-                               : cross(*steps_[k], d) == 0.0 && cross(d, rounded_[k].point - end) != 0.0);
+    const auto no_seat = [&](Vec2 far) {
+      if (!steps_[k]) return false;
+      const Vec2 step = out ? *steps_[k] * -1.0 : *steps_[k];
+      return far_line ? !tangents_seat_handles(end, out ? d * -1.0 : d, far, step)
+                      : cross(*steps_[k], d) == 0.0 && cross(d, far - end) != 0.0;
+    };
     // A handle on the line reaching past the curve's far node along their chord folds the curve
     // back into it, whatever the far handle (Gentium Plus's M: one step of a (1, −111) leg, 2
     // units past a 91-unit curve's end, an S at its foot).
-    const Vec2 chord = rounded_[k].point - end;
-    const bool overshoots = dot(near - end, chord) > dot(chord, chord);
-    if (steps_[k]) {
-      candidates = handles_near_line(rounded_[k].point, *steps_[k], out ? 1.0 : -1.0, end, d);
-    } else if (const double m = whole_steps(end, *wanted, d, 1.0); m != 0.0) {
-      candidates.push_back(end + d * m);  // not the join itself: no curve leaves from there
-    }
-    candidates.push_back(*placed);
-    for (const Vec2 h : candidates) {
-      const Cubic c = curve(h);
+    const auto overshoots = [&](Vec2 far) { return dot(near - end, far - end) > dot(far - end, far - end); };
+    const auto weigh = [&](Vec2 far, Vec2 h) {
+      const Cubic c = curve(far, h);
       const double kappa = node_curvature(c, out ? SegmentEnd::end : SegmentEnd::start);
-      const double cost = (std::abs(kappa) <= 0.05 * limits_.flat_curvature ? 0.3 * distance(h, *wanted) : unseated) +
-                          (no_seat || overshoots || inner_axis_extrema(c) > extrema ? fold : 0.0);
+      const double seated = 0.3 * distance(h, *wanted) + distance(far, rounded_[k].point);
+      const double cost = (std::abs(kappa) <= 0.05 * limits_.flat_curvature ? seated : unseated) +
+                          (no_seat(far) || overshoots(far) || inner_axis_extrema(c) > extrema ? fold : 0.0);
       best = std::min(best, cost);
+    };
+    const Vec2 far = rounded_[k].point;
+    if (steps_[k]) {
+      for (const Vec2 h : handles_near_line(far, *steps_[k], out ? 1.0 : -1.0, end, d)) weigh(far, h);
+      // An H/V extremum joining two cubics may also sit a unit across its axis, as the passes
+      // after the lines seat it (node_seats' seat_line_joins), where both its cubics have half
+      // a unit of allowance left (past that, only the band around the source may admit the
+      // move). Its handle crosses a line of step (5, 8) at a whole step only every fifth unit
+      // across: Gentium Plus's X, whose line was placed where its extremum had to move 2.4
+      // units, and left κ·UPM 10.6 at the join. a–z A–Z rounded: g2-jumps EB Garamond 97 → 83,
+      // Gentium Plus 9 → 7, Pagella 27 → 26, FreeSerif 6 → 7 (8 without the room: its w's
+      // extremum could not follow; with a whole unit asked, EB Garamond kept 96).
+      const Vec2 across{std::abs(steps_[k]->y), std::abs(steps_[k]->x)};
+      const bool room = std::min(limits_.allowance_at(k), limits_.allowance_at(previous(k))) >= 0.5;
+      if (!far_line && room && (across.x == 0.0 || across.y == 0.0))
+        for (const Vec2 moved : {far - across, far + across})
+          for (const Vec2 h : handles_near_line(moved, *steps_[k], out ? 1.0 : -1.0, end, d)) weigh(moved, h);
+    } else if (const double m = whole_steps(end, *wanted, d, 1.0); m != 0.0) {
+      weigh(far, end + d * m);  // not the join itself: no curve leaves from there
     }
+    weigh(far, *placed);
     return best;
   }
 

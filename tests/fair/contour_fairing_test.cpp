@@ -691,6 +691,27 @@ TEST(ContourFairing, ACornerAtALineStaysACornerWhereRoundingMovedItsLine) {
   EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm), 0);
 }
 
+TEST(ContourFairing, ALineIsPlacedWhereTheExtremumItsCurveReachesCanSeatIt) {
+  // Gentium Plus's X, rounded: the upper right arm's diagonal line (step (5, 8) on the grid)
+  // meets a curve whose vertical extremum lies 13 units across. The extremum's handle meets the
+  // line at a whole step only every fifth unit across; where the line was placed, 2.4 units
+  // from the extremum at best, too far for the tolerance, and the curve left the line with
+  // κ·UPM 10.6. Placed a unit over, the extremum a unit across seats it (line_rounding).
+  FairedGlyph f;
+  expect_faired(test::gentium_plus, "X", FairProfile::text, &f);
+  EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm, std::pair{Vec2{800.0, 1100.0}, Vec2{900.0, 1200.0}}), 0);
+  EXPECT_EQ(corners_lost(f.source.outline, f.result.glyph.outline, f.upm), 0);
+}
+
+TEST(ContourFairing, AFlatNodesSeatLeavesTheCornerBesideItACorner) {
+  // EB Garamond's W, rounded: a flat node's far handles are seated on its tangent line, and
+  // the corner beside it (3.5° at the left leg's top) had its handle seated there too, turning
+  // it by 0.6°: the kink pass made it smooth. A seat that turns a corner so is not taken.
+  FairedGlyph f;
+  expect_faired(test::eb_garamond, "W", FairProfile::text, &f);
+  EXPECT_EQ(corners_lost(f.source.outline, f.result.glyph.outline, f.upm), 0);
+}
+
 TEST(ContourFairing, ACurveSlidesDownItsDiagonalLineUntilItLeavesItFlat) {
   // Lato's M: the right leg's line, step (16, 29), into a curve to the cap whose far handle,
   // whole steps of (2, 1), lies a quarter of a unit off the line at best: κ·UPM 0.073 at the
