@@ -29,9 +29,10 @@ std::vector<std::size_t> nudge_jumping_nodes(std::vector<OutlineNode>& nodes, co
 /// on the grid only where both far handles lie exactly on its tangent line, and each is a
 /// whole number of its own node's steps from that node: the tangent line must cross both their
 /// handle lines at whole steps. Where the node still jumps, the grid points next to it and the
-/// primitive directions within `grid_turn` of its tangent are tried for one whose line does; the far
-/// handles go there and the node's own handles, whose lengths set its neighbours' curvature, a
-/// step or three either way. Returns the nodes it moved (its direction changed in `steps`).
+/// primitive directions within `grid_turn` of its tangent (sides up to 32) are tried for one
+/// whose line does; the far handles go there and the node's own handles, whose lengths set its
+/// neighbours' curvature, a step or three either way; not where a kept corner beside it would
+/// turn under the kink limit. Returns the nodes it moved (its direction changed in `steps`).
 std::vector<std::size_t> seat_flat_nodes(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal,
                                          std::vector<std::optional<Vec2>>& steps, const OutlineJoins& joins,
                                          std::span<const std::size_t> candidates, CubicJudge& judge, double flat);
