@@ -44,14 +44,6 @@ std::optional<Vec2> handle_on_line(const OutlineNode& node, std::optional<Vec2> 
   return h;
 }
 
-// Whether node k is a corner rounding must keep (corner_to_keep) that now turns under the kink
-// limit: the kink pass would make it smooth (EB Garamond's W, a 3.5° corner at its left leg,
-// its handle seated on a flat neighbour's tangent line at 0.6°).
-bool turns_a_corner_away(const std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal, bool closed,
-                         std::size_t k) {
-  return corner_to_keep(ideal, closed, k) && turns_less_than_it_did(nodes, ideal, closed, k);
-}
-
 // Whether node i (joining cubics h and i) is to be flat on the grid: it was before rounding (an
 // inflection), or rounding left one side of it flat (that cubic's far handle on the node's
 // tangent line) and the other not. A curvature of κ·UPM 5 (UPM 1000) at a 5-unit handle wants
@@ -142,9 +134,9 @@ std::vector<std::size_t> seat_flat_nodes(std::vector<OutlineNode>& nodes, const 
         const std::optional<Vec2> far_out = handle_on_line(kept_j, steps[j], -1.0, p, d);
         if (!far_in || !far_out) continue;
         nodes[h].out_handle = far_in, nodes[j].in_handle = far_out;
-        // A corner's handle turned onto the line: not under the kink limit (corner_to_keep).
-        if (turns_a_corner_away(nodes, ideal, joins.closed, h) || turns_a_corner_away(nodes, ideal, joins.closed, j))
-          continue;
+        // A corner's handle turned onto the line: not under the kink limit, or the kink pass
+        // makes it smooth (EB Garamond's W: a 3.5° corner at its left leg turned to 0.6°).
+        if (judge.turned_under_limit(nodes, h) || judge.turned_under_limit(nodes, j)) continue;
         const double m_in = handle_steps_along(target, d, false), m_out = handle_steps_along(target, d, true);
         for_each_handle_pair(nodes[i], p, d, m_in, m_out, [&] {
           if (const std::optional<double> c = change.cost_under(best_cost))

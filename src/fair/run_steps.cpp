@@ -37,7 +37,7 @@ class CandidateWeights {
 
   /// Whether a handle turns a corner to keep (node k's) under the kink limit.
   bool turned_under_limit(std::size_t k, std::optional<Vec2> in, std::optional<Vec2> out) const {
-    return judge_.keeps_corner(k) && turn_at(nodes_, judge_.closed(), k, in, out) < kink_limit;
+    return judge_.turned_under_limit(nodes_, k, in, out);
   }
 
   /// Every state of `c` (its outs × its ins) measured and costed.
