@@ -43,11 +43,8 @@ class CubicJudge {
              const OutlineJoins& joins, const HandleStepLimits& limits);
 
   bool closed() const { return closed_; }
-  /// Whether node k is a corner that rounding must leave turning by the kink limit
-  /// (corner_to_keep).
-  bool keeps_corner(std::size_t k) const { return keeps_corner_[k]; }
-  /// Whether node k of `nodes` is such a corner and turns under the limit, its handles `in`
-  /// and `out` where given (turn_at).
+  /// Whether node k of `nodes` is a corner that rounding must leave turning by the kink limit
+  /// (corner_to_keep) and turns under it, its handles `in` and `out` where given (turn_at).
   bool turned_under_limit(const std::vector<OutlineNode>& nodes, std::size_t k, std::optional<Vec2> in = {},
                           std::optional<Vec2> out = {}) const {
     return keeps_corner_[k] && turn_at(nodes, closed_, k, in, out) < kink_limit;

@@ -290,8 +290,8 @@ class LinePlacer {
       // Gentium Plus 9 → 7, Pagella 27 → 26, FreeSerif 6 → 7 (8 without the room: its w's
       // extremum could not follow; with a whole unit asked, EB Garamond kept 96).
       const Vec2 across{std::abs(steps_[k]->y), std::abs(steps_[k]->x)};
-      const bool room = std::min(limits_.allowance_at(k), limits_.allowance_at(previous(k))) >= 0.5;
-      if (!far_line && room && (across.x == 0.0 || across.y == 0.0))
+      const bool extremum = !far_line && (across.x == 0.0 || across.y == 0.0);
+      if (extremum && std::min(limits_.allowance_at(k), limits_.allowance_at(previous(k))) >= 0.5)
         for (const Vec2 moved : {far - across, far + across})
           for (const Vec2 h : handles_near_line(moved, *steps_[k], out ? 1.0 : -1.0, end, d)) weigh(moved, h);
     } else if (const double m = whole_steps(end, *wanted, d, 1.0); m != 0.0) {
