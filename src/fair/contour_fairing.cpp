@@ -555,20 +555,27 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
 // A text contour that cannot be faired on its own outlines is faired again with the runs that
 // failed there on their smoothing guides, and then on their own outlines with the jumps of
 // stalled chains (RunBasis); why the first try failed is what is reported when none fairs.
-ContourFairing fair_planned(const Contour& source, const ContourPlan& plan, const SampledContour& sampled_source,
-                            const FairSettings& settings, FairedRuns& cache, std::vector<std::size_t>& kinked) {
-  ContourFairing own = fair_within_budgets(source, plan, sampled_source, settings, cache, RunBasis::own, kinked);
+// Where `opened` is given (the plan with its kinks against lines opened,
+// PlanOptions::open_against_lines: those kinks may be what left no G2 chain), on each basis on
+// that plan first.
+ContourFairing fair_planned(const Contour& source, const ContourPlan& plan, const ContourPlan* opened,
+                            const SampledContour& sampled_source, const FairSettings& settings, FairedRuns& cache,
+                            std::vector<std::size_t>& kinked) {
+  const auto on = [&](const ContourPlan& p, RunBasis basis, bool as_drawn = false) {
+    return fair_within_budgets(source, p, sampled_source, settings, cache, basis, kinked, as_drawn);
+  };
+  ContourFairing own = on(plan, RunBasis::own);
   if (own.faired) return own;
   const bool text = settings.profile == FairProfile::text;
+  if (opened)
+    for (const RunBasis basis : {RunBasis::own, RunBasis::guide, RunBasis::own_with_jumps})
+      if (ContourFairing again = on(*opened, basis); again.faired) return again;
   if (text)
-    for (const RunBasis next : {RunBasis::guide, RunBasis::own_with_jumps}) {
-      ContourFairing again = fair_within_budgets(source, plan, sampled_source, settings, cache, next, kinked);
-      if (again.faired) return again;
-    }
+    for (const RunBasis next : {RunBasis::guide, RunBasis::own_with_jumps})
+      if (ContourFairing again = on(plan, next); again.faired) return again;
   // Last, the runs that fail on the last basis kept as drawn, the rest faired (EB Garamond's t
   // and K: one cap's or serif's run of a dozen kept the whole contour unfaired).
-  ContourFairing partly = fair_within_budgets(source, plan, sampled_source, settings, cache,
-                                              text ? RunBasis::own_with_jumps : RunBasis::own, kinked, true);
+  ContourFairing partly = on(plan, text ? RunBasis::own_with_jumps : RunBasis::own, true);
   return partly.faired ? partly : own;
 }
 
@@ -614,14 +621,13 @@ ContourFairing fair_curve(const Contour& source, const Contour& curve, const Con
                           std::span<const TightTurn> turns, const FairSettings& settings) {
   ContourFairing out;
   out.contour = source;
-  double tangential_line = kink_limit_deg;
+  PlanOptions options{settings.corner_angle_deg, settings.profile == FairProfile::text};
   const auto plan_with = [&](std::span<const std::size_t> smooth_nodes) {
-    ContourPlan p = plan_contour(curve, settings.corner_angle_deg, smooth_nodes, settings.profile == FairProfile::text,
-                                 tangential_line);
+    ContourPlan p = plan_contour(curve, smooth_nodes, options);
     aim_runs_at_tight_turns(p, turns);
     return p;
   };
-  ContourPlan plan = plan_with({});
+  const ContourPlan plan = plan_with({});
   if (plan.pieces.empty()) {
     out.reason = "nothing to fair (every segment degenerate)";
     return out;
@@ -637,7 +643,20 @@ ContourFairing fair_curve(const Contour& source, const Contour& curve, const Con
   const SampledContour sampled_source(reference);
   std::vector<std::size_t> kinked, smooth_nodes;
   FairedRuns cache;
-  out = fair_planned(curve, plan, sampled_source, settings, cache, kinked);
+  // The contour faired on `p`, planned with `smooth` made smooth, and, where it has kinks
+  // against lines to open (text), on the same plan with those opened after its own outlines fail.
+  const auto fair_plans = [&](const ContourPlan& p, std::span<const std::size_t> smooth,
+                              std::vector<std::size_t>& kinks) {
+    std::optional<ContourPlan> opened;
+    if (options.corners_stay) {
+      options.open_against_lines = true;
+      opened = plan_with(smooth);
+      options.open_against_lines = false;
+      if (opened->opened_corners == 0) opened.reset();
+    }
+    return fair_planned(curve, p, opened ? &*opened : nullptr, sampled_source, settings, cache, kinks);
+  };
+  out = fair_plans(plan, {}, kinked);
   // A contour that does not fair with its curves made tangential to the lines they meet at a
   // kink is faired with those kinks corners, as drawn, and no kink pass makes them smooth again
   // (Comic Neue's u and i: stems' lines 0.8° off the vertical, kinked so at both ends against
@@ -645,22 +664,26 @@ ContourFairing fair_curve(const Contour& source, const Contour& curve, const Con
   // grid steps of 60 units or more, so no handle on it seats a curve within the tolerance: each
   // contour had been kept unfaired).
   if (!out.faired) {
-    tangential_line = JoinThresholds{}.smooth_max_deg;
-    plan = plan_with({});
-    ContourFairing cornered = fair_planned(curve, plan, sampled_source, settings, cache, kinked);
+    options.tangential_line_deg = JoinThresholds{}.smooth_max_deg;
+    ContourFairing cornered = fair_plans(plan_with({}), {}, kinked);
     if (cornered.faired) out = std::move(cornered);
     kinked.clear();
   }
   // A corner whose faired pieces meet by less than the kink limit was noise the fairing
   // straightened (or a scan's few degrees at a line): made smooth, it becomes G2 instead of
-  // a kink. Kept only when the contour still fairs.
+  // a kink. Kept only when the contour still fairs; once every corner still kinked was made
+  // smooth before, the next pass would plan the same.
+  const auto made_smooth = [&](std::size_t node) {
+    return std::find(smooth_nodes.begin(), smooth_nodes.end(), node) != smooth_nodes.end();
+  };
   for (int pass = 0; pass < kink_passes && out.faired && !kinked.empty(); ++pass) {
     smooth_nodes.insert(smooth_nodes.end(), kinked.begin(), kinked.end());
     std::vector<std::size_t> still;
-    ContourFairing again = fair_planned(curve, plan_with(smooth_nodes), sampled_source, settings, cache, still);
+    ContourFairing again = fair_plans(plan_with(smooth_nodes), smooth_nodes, still);
     if (!again.faired || again.runs_as_drawn.size() > out.runs_as_drawn.size()) break;
     out = std::move(again);
     kinked = std::move(still);
+    if (std::all_of(kinked.begin(), kinked.end(), made_smooth)) break;
   }
   if (!out.faired) out.contour = source;  // as it was, not split at its turns
   return out;

@@ -35,6 +35,40 @@ Vec2 drawn_tangent(const Segment& s, SegmentEnd end) {
   return c ? *end_tangent(without_stub(*c, end), end) : *end_tangent(s, end);
 }
 
+// A curve meeting a line at a kink that turns against the curve's own bend, by more than the
+// curve's whole cubic turns, can meet the line tangentially only through an inflection the
+// source does not draw: TeX Gyre Pagella's E, whose base (κ·UPM −0.1, its last cubic turning
+// 1.5°) meets its serif's line 2.5° the other way, had no G2 chain within the budget, and its
+// smoothing guide rang into a wave of nodes. A curve that turns more takes the kink within its
+// own turning (EB Garamond's W enters its notch at 2° against a hairpin), and under 2° the
+// inflection stays within the rounding (Noto Sans's v, 1.4° against a nearly straight side,
+// came out a 6.7° corner over a hook of κ·UPM −30 once rounded). So does it where the curve's
+// handle at the join is too short for whole grid steps to hold the corner's direction within
+// 1.5° (DejaVu Sans's ✌, a 7-unit handle, came out a 11.8° corner from the source's 2.7°).
+constexpr double against_line_kink_deg = 2.0;
+constexpr double against_line_least_handle = 1.0 / radians(1.5);  // a grid step across turns it by 1.5°
+
+// The curve's tangent at its join with a line, turned the way the join turns until the join
+// turns by the corner floor, where the join is a kink against the curve as above. `turn`: the
+// join's signed turn from `a` to `b` (tangents `ta`, `tb`).
+std::optional<Vec2> opened_against_line(const Piece& a, const Piece& b, Vec2 ta, Vec2 tb, double turn) {
+  const double floor = radians(corner_floor_deg);
+  if (a.straight == b.straight || std::abs(turn) < radians(against_line_kink_deg) || std::abs(turn) >= floor)
+    return std::nullopt;
+  const Piece& curve = a.straight ? b : a;
+  const Cubic& c = std::get<Cubic>(curve.segment);
+  const Vec2 node = a.straight ? c.p[0] : c.p[3], handle = a.straight ? c.p[1] : c.p[2];
+  if (distance(node, handle) < against_line_least_handle) return std::nullopt;
+  const std::optional<double> k =
+      end_curvature(curve.segment, a.straight ? SegmentEnd::start : SegmentEnd::end).curvature;
+  if (!k || *k * turn >= 0.0) return std::nullopt;
+  const double own = turning_angle(drawn_tangent(curve.segment, SegmentEnd::start),
+                                   drawn_tangent(curve.segment, SegmentEnd::end));
+  if (std::abs(own) > std::abs(turn)) return std::nullopt;
+  const double opened = std::copysign(floor, turn);
+  return a.straight ? direction_of(angle_of(ta) + opened) : direction_of(angle_of(tb) - opened);
+}
+
 }  // namespace
 
 bool is_straight(const Cubic& c) {
@@ -55,8 +89,7 @@ bool is_straight_segment(const Segment& s) {
   return is_line(s) || (c && is_straight(*c));
 }
 
-ContourPlan plan_contour(const Contour& source, double corner_angle_deg, std::span<const std::size_t> smooth_nodes,
-                         bool corners_stay, double tangential_line_deg) {
+ContourPlan plan_contour(const Contour& source, std::span<const std::size_t> smooth_nodes, const PlanOptions& options) {
   const Contour contour = with_cubics(source);
   const auto made_smooth = [&](std::size_t node) {
     return std::find(smooth_nodes.begin(), smooth_nodes.end(), node) != smooth_nodes.end();
@@ -82,9 +115,13 @@ ContourPlan plan_contour(const Contour& source, double corner_angle_deg, std::sp
   plan.closed = contour.closed;
   const std::size_t n = pieces.size();
   if (n == 0) return plan;
-  const double corner = radians(corner_angle_deg);
-  const double tangential_line = radians(tangential_line_deg);
+  const double corner = radians(options.corner_angle_deg);
+  const double tangential_line = radians(options.tangential_line_deg);
+  const bool corners_stay = options.corners_stay;
 
+  // The curve's tangent at the join in front of piece i where that join is a corner opened
+  // against its line (opened_against_line).
+  std::vector<std::optional<Vec2>> opened(n);
   // The kind of the join in front of piece i (between piece i−1 and i); nullopt when smooth
   // between two curves.
   auto break_before = [&](std::size_t i) -> std::optional<RunEndKind> {
@@ -98,9 +135,11 @@ ContourPlan plan_contour(const Contour& source, double corner_angle_deg, std::sp
     // A curve meets a line tangentially only within the kink limit: bending a curve that leaves
     // a line at 10° into the line's direction would put a bump where the designer drew none.
     const bool line_join = a.straight || b.straight;
+    if (options.open_against_lines && !made_smooth(b.source_node) && !flag)
+      opened[i] = opened_against_line(a, b, ta, tb, turning_angle(ta, tb));
     const bool is_corner = made_smooth(b.source_node) ? false
                            : flag                     ? !*flag
-                                                      : angle > (line_join ? std::min(corner, tangential_line) : corner);
+                                                      : opened[i] || angle > (line_join ? std::min(corner, tangential_line) : corner);
     if (is_corner) return RunEndKind::corner;
     if (line_join) return RunEndKind::line;
     return std::nullopt;
@@ -113,6 +152,8 @@ ContourPlan plan_contour(const Contour& source, double corner_angle_deg, std::sp
   };
   std::vector<std::optional<RunEndKind>> breaks(n);
   for (std::size_t i = 0; i < n; ++i) breaks[i] = break_before(i);
+  plan.opened_corners = static_cast<std::size_t>(
+      std::count_if(opened.begin(), opened.end(), [](const auto& t) { return t.has_value(); }));
   const std::size_t first = static_cast<std::size_t>(
       std::find_if(breaks.begin(), breaks.end(), [](const auto& b) { return b.has_value(); }) - breaks.begin());
   if (first == n) {  // one closed run
@@ -139,7 +180,8 @@ ContourPlan plan_contour(const Contour& source, double corner_angle_deg, std::sp
       run.start.kind = *before;
       run.start.tangent = *before == RunEndKind::line && prev.straight && (contour.closed || i > 0)
                               ? *end_tangent(prev.segment, SegmentEnd::end)
-                              : drawn_tangent(p.segment, SegmentEnd::start);
+                              : opened[i].value_or(drawn_tangent(p.segment, SegmentEnd::start));
+      run.start.opened = opened[i].has_value();
       if (*before == RunEndKind::line && prev.straight) run.start.line_share = line_share(prev, breaks[(i + n - 1) % n]);
       if (corners_stay && *before == RunEndKind::corner && (contour.closed || i > 0)) {
         run.start.beyond = drawn_tangent(prev.segment, SegmentEnd::end);
@@ -156,8 +198,10 @@ ContourPlan plan_contour(const Contour& source, double corner_angle_deg, std::sp
     if (ends) {
       const RunEndKind kind = !contour.closed && i + 1 == n ? RunEndKind::corner : *breaks[next];
       run.end.kind = kind;
-      run.end.tangent = kind == RunEndKind::line && pieces[next].straight ? *end_tangent(pieces[next].segment, SegmentEnd::start)
-                                                                       : drawn_tangent(p.segment, SegmentEnd::end);
+      run.end.tangent = kind == RunEndKind::line && pieces[next].straight
+                            ? *end_tangent(pieces[next].segment, SegmentEnd::start)
+                            : opened[next].value_or(drawn_tangent(p.segment, SegmentEnd::end));
+      run.end.opened = opened[next].has_value();
       if (kind == RunEndKind::corner) run.cubics.back() = without_stub(run.cubics.back(), SegmentEnd::end);
       if (corners_stay && kind == RunEndKind::corner && (contour.closed || i + 1 < n)) {
         run.end.beyond = drawn_tangent(pieces[next].segment, SegmentEnd::start);

@@ -29,6 +29,9 @@ struct RunEnd {
   /// direction the fairing keeps, rather than a curve, whose tangent it may turn too.
   Vec2 beyond{};
   bool beyond_line = false;
+  /// Kind corner: a kink against the line beyond, opened to the corner floor
+  /// (PlanOptions::open_against_lines); the fairing keeps its tangent.
+  bool opened = false;
   bool operator==(const RunEnd&) const = default;
 };
 
@@ -46,27 +49,45 @@ struct ContourPlan {
   std::vector<std::variant<Line, SmoothRun>> pieces;  ///< in order, each starting where the last ended
   bool closed = true;
   std::vector<std::size_t> start_nodes;  ///< the source node each piece starts at
+  std::size_t opened_corners = 0;  ///< line joins kept corners and opened (PlanOptions::open_against_lines)
 };
 
 /// The kink limit of geom/join.hpp: a join turning by less than this (and more than 0.05°) is
 /// a kink, meant smooth; a corner must turn by at least this much.
 inline constexpr double kink_limit_deg = JoinThresholds{}.kink_max_deg;
 
+/// A corner the fairing keeps turns by at least this much (or by what the source turns, if
+/// less, and more than the kink limit): half a degree past the limit, room for rounding
+/// (handle_steps keeps every corner from the limit since stop 73; a degree and a half while it
+/// kept one between cubics only from a degree past it: EB Garamond a–z A–Z 100 g2-jumps then,
+/// 97 now).
+inline constexpr double corner_floor_deg = kink_limit_deg + 0.5;
+
 /// A cubic whose control points lie on its chord, in order, is a line.
 bool is_straight(const Cubic& c);
 /// A line, or a cubic that is_straight.
 bool is_straight_segment(const Segment& s);
 
+struct PlanOptions {
+  double corner_angle_deg;
+  /// Each run's corner ends say what lies beyond them (RunEnd::beyond), so the fairing keeps
+  /// them corners; without, a corner the fairing turns into a kink is noise (handwriting:
+  /// fair/kinked_corners).
+  bool corners_stay = false;
+  /// A curve meeting a line at more than this is a corner (by default the kink limit: only a
+  /// tangential line join is made G2).
+  double tangential_line_deg = kink_limit_deg;
+  /// A kink of 2° or more where a curve meets a line, turning against the curve's bend by more
+  /// than the curve's cubic turns, stays a corner, the curve's tangent turned so the corner
+  /// turns by the corner floor (smooth, the curve could meet the line only through an
+  /// inflection the source does not draw).
+  bool open_against_lines = false;
+};
+
 /// Corners: joins whose smooth flag says so where the source has flags, else joins turning by
-/// more than `corner_angle_deg` (and a curve meeting a line at more than `tangential_line_deg`,
-/// by default the kink limit: only a tangential line join is made G2). The joins at
+/// more than the corner angle (and line joins as PlanOptions says). The joins at
 /// `smooth_nodes` (source node indices) are smooth whatever their angle: a curve meeting a line
-/// there meets it tangentially, and two lines meeting there become one. With `corners_stay`,
-/// each run's corner ends say what lies beyond them (RunEnd::beyond), so the fairing keeps them
-/// corners; without, a corner the fairing turns into a kink is noise (handwriting:
-/// fair/kinked_corners).
-ContourPlan plan_contour(const Contour& contour, double corner_angle_deg,
-                         std::span<const std::size_t> smooth_nodes = {}, bool corners_stay = false,
-                         double tangential_line_deg = kink_limit_deg);
+/// there meets it tangentially, and two lines meeting there become one.
+ContourPlan plan_contour(const Contour& contour, std::span<const std::size_t> smooth_nodes, const PlanOptions& options);
 
 }  // namespace gf

@@ -208,16 +208,15 @@ Vec2 end_tangent_of(double s, const RunReference& ref, const SmoothRun& run, dou
 // A corner the source turns by the kink limit or more keeps turning by this much (or by what
 // the source turns, if less) when its tangent is turned: turned further, the kink pass would
 // make it smooth, and the corner the source drew would be lost (Carlito's X: a terminal's
-// curve met its diagonal at 6.6°, and the symmetric arc at 2.4°). Half a degree past the
-// limit, room for rounding (handle_steps keeps every corner from the limit since stop 73; a
-// degree and a half while it kept one between cubics only from a degree past it: EB Garamond
-// a–z A–Z 100 g2-jumps then, 97 now).
-constexpr double corner_floor_deg = kink_limit_deg + 0.5;
+// curve met its diagonal at 6.6°, and the symmetric arc at 2.4°). corner_floor_deg leaves
+// room for rounding.
 
 // The angle a corner's tangent (now `current`) may be turned to on the way to `wanted`: all
 // the way, or as far as the corner still turns by the floor against the piece beyond it, the
-// way the source turns; nullopt where the floor leaves no turn at all.
+// way the source turns; nullopt where the floor leaves no turn at all, and at a corner opened
+// to the floor (RunEnd::opened), whose tangent was set to turn so.
 std::optional<double> kept_corner_angle(const RunEnd& end, bool at_start, double current, double wanted) {
+  if (end.opened) return std::nullopt;
   if (end.beyond == Vec2{}) return wanted;
   const double beyond = angle_of(end.beyond);
   // Signed turn at the corner along the contour: from the piece beyond to the run at its start,

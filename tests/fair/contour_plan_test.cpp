@@ -20,14 +20,14 @@ Contour line_then_curves(double degrees) {
 
 TEST(ContourPlan, ALineJoinBeyondTheKinkLimitIsACornerUnlessMadeSmooth) {
   const Contour c = line_then_curves(10.0);
-  const ContourPlan plain = plan_contour(c, 30.0);
+  const ContourPlan plain = plan_contour(c, {}, {30.0});
   ASSERT_EQ(plain.pieces.size(), 3u);  // line, run, line
   EXPECT_EQ(plain.start_nodes, (std::vector<std::size_t>{0, 1, 3}));
   const SmoothRun& run = std::get<SmoothRun>(plain.pieces[1]);
   EXPECT_EQ(run.start.kind, RunEndKind::corner);  // 10° from the line: kept
 
   const std::vector<std::size_t> smooth{1};
-  const ContourPlan made = plan_contour(c, 30.0, smooth);
+  const ContourPlan made = plan_contour(c, smooth, {30.0});
   const SmoothRun& joined = std::get<SmoothRun>(made.pieces[1]);
   EXPECT_EQ(joined.start.kind, RunEndKind::line);  // now it leaves the line tangentially
   EXPECT_NEAR(joined.start.tangent.x, 1.0, 1e-12);  // in the line's direction
@@ -38,7 +38,7 @@ TEST(ContourPlan, CornersThatStaySayWhatLiesBeyondThem) {
   // line_then_curves(10°): the run leaves the first line at a corner of 10° and meets the
   // closing line at (100, 200) at another; each of its ends says the line's direction beyond.
   const Contour c = line_then_curves(10.0);
-  const ContourPlan plan = plan_contour(c, 30.0, {}, true);
+  const ContourPlan plan = plan_contour(c, {}, {30.0, true});
   const SmoothRun& run = std::get<SmoothRun>(plan.pieces[1]);
   ASSERT_EQ(run.start.kind, RunEndKind::corner);
   EXPECT_EQ(run.start.beyond, (Vec2{1, 0}));  // the line it leaves
@@ -49,7 +49,7 @@ TEST(ContourPlan, CornersThatStaySayWhatLiesBeyondThem) {
   EXPECT_NEAR(run.end.beyond.y, home.y, 1e-12);
   EXPECT_TRUE(run.end.beyond_line);
   // Where corners need not stay (handwriting), nothing is said.
-  const SmoothRun& free = std::get<SmoothRun>(plan_contour(c, 30.0).pieces[1]);
+  const SmoothRun& free = std::get<SmoothRun>(plan_contour(c, {}, {30.0}).pieces[1]);
   EXPECT_EQ(free.start.beyond, Vec2{});
   EXPECT_EQ(free.end.beyond, Vec2{});
 }
@@ -61,7 +61,7 @@ TEST(ContourPlan, AStubHandleBesideALineIsACornerTowardsTheNextControlPoint) {
   const Vec2 a{373.7, 456.5}, b{373.7, 390.1}, next{341.9, 468.7}, d{240.5, 468.7};
   c.segments = {Line{a, b}, Cubic{b, b + Vec2{0, -0.4}, next, d}, Line{d, a}};
   c.nodes.resize(3);
-  const ContourPlan plan = plan_contour(c, 3.0);
+  const ContourPlan plan = plan_contour(c, {}, {3.0});
   ASSERT_EQ(plan.pieces.size(), 3u);
   const SmoothRun& run = std::get<SmoothRun>(plan.pieces[1]);
   EXPECT_EQ(run.start.kind, RunEndKind::corner);
@@ -72,7 +72,7 @@ TEST(ContourPlan, AStubHandleBesideALineIsACornerTowardsTheNextControlPoint) {
 
   // A handle of 2 % of the chord is the designer's tangent: a line join, as drawn.
   std::get<Cubic>(c.segments[1]).p[1] = b + Vec2{0, -0.02 * norm(d - b)};
-  const SmoothRun& kept = std::get<SmoothRun>(plan_contour(c, 3.0).pieces[1]);
+  const SmoothRun& kept = std::get<SmoothRun>(plan_contour(c, {}, {3.0}).pieces[1]);
   EXPECT_EQ(kept.start.kind, RunEndKind::line);
 }
 
@@ -84,8 +84,8 @@ TEST(ContourPlan, ACurveMeetsALineTangentiallyWithinTheGivenAngle) {
   const Vec2 a{4, 305}, b{0, 0}, d{-100, -100};
   c.segments = {Line{a, b}, Cubic{b, Vec2{0, -40}, Vec2{-60, -100}, d}, Line{d, a}};
   c.nodes.resize(3);
-  EXPECT_EQ(std::get<SmoothRun>(plan_contour(c, 3.0).pieces[1]).start.kind, RunEndKind::line);
-  EXPECT_EQ(std::get<SmoothRun>(plan_contour(c, 3.0, {}, false, 0.05).pieces[1]).start.kind, RunEndKind::corner);
+  EXPECT_EQ(std::get<SmoothRun>(plan_contour(c, {}, {3.0}).pieces[1]).start.kind, RunEndKind::line);
+  EXPECT_EQ(std::get<SmoothRun>(plan_contour(c, {}, {3.0, false, 0.05}).pieces[1]).start.kind, RunEndKind::corner);
 }
 
 TEST(ContourPlan, TwoLinesMadeSmoothAreOneLine) {
@@ -94,16 +94,16 @@ TEST(ContourPlan, TwoLinesMadeSmoothAreOneLine) {
   const Vec2 a{0, 0}, b{100, 1.745}, d{200, 0}, e{100, 150};
   c.segments = {Line{a, b}, Line{b, d}, Line{d, e}, Line{e, a}};
   c.nodes.resize(4);
-  EXPECT_EQ(plan_contour(c, 30.0).pieces.size(), 4u);  // two lines meeting are always a corner
+  EXPECT_EQ(plan_contour(c, {}, {30.0}).pieces.size(), 4u);  // two lines meeting are always a corner
   const std::vector<std::size_t> smooth{1};
-  const ContourPlan made = plan_contour(c, 30.0, smooth);
+  const ContourPlan made = plan_contour(c, smooth, {30.0});
   ASSERT_EQ(made.pieces.size(), 3u);
   const Line& merged = std::get<Line>(made.pieces[0]);
   EXPECT_EQ(merged.start(), a);
   EXPECT_EQ(merged.end(), d);
   // At the seam of a closed contour too.
   const std::vector<std::size_t> seam{0};
-  const ContourPlan wrapped = plan_contour(c, 30.0, seam);
+  const ContourPlan wrapped = plan_contour(c, seam, {30.0});
   ASSERT_EQ(wrapped.pieces.size(), 3u);
   EXPECT_EQ(std::get<Line>(wrapped.pieces[0]).start(), e);
   EXPECT_EQ(std::get<Line>(wrapped.pieces[0]).end(), b);

@@ -18,7 +18,7 @@ namespace {
 // The runs of a closed contour that leave a line at both ends, in order.
 std::vector<SmoothRun> runs_between_lines(const Contour& c) {
   std::vector<SmoothRun> runs;
-  for (const auto& piece : plan_contour(c, 3.0).pieces)
+  for (const auto& piece : plan_contour(c, {}, {3.0}).pieces)
     if (const auto* run = std::get_if<SmoothRun>(&piece); run && run->starts_at_line() && run->ends_at_line())
       runs.push_back(*run);
   return runs;

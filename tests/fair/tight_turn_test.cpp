@@ -94,7 +94,7 @@ TEST(TightTurn, ACornerIsNotATightTurn) {
 TEST(TightTurn, TheRunsEitherSideLeaveAlongTheTurn) {
   const TightTurns found = find_tight_turns(reversal(3.0, 120.0 * deg), limits);
   ASSERT_EQ(found.turns.size(), 1u);
-  ContourPlan plan = plan_contour(found.contour, 30.0);
+  ContourPlan plan = plan_contour(found.contour, {}, {30.0});
   aim_runs_at_tight_turns(plan, found.turns);
   const TightTurn& t = found.turns.front();
   int aimed = 0;
