@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <span>
@@ -555,10 +556,11 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
 // A text contour that cannot be faired on its own outlines is faired again with the runs that
 // failed there on their smoothing guides, and then on their own outlines with the jumps of
 // stalled chains (RunBasis); why the first try failed is what is reported when none fairs.
-// Where `opened` is given (the plan with its kinks against lines opened,
+// Where `opened` gives one (the plan with its kinks against lines opened,
 // PlanOptions::open_against_lines: those kinks may be what left no G2 chain), on each basis on
-// that plan first.
-ContourFairing fair_planned(const Contour& source, const ContourPlan& plan, const ContourPlan* opened,
+// that plan first; it is asked only then.
+ContourFairing fair_planned(const Contour& source, const ContourPlan& plan,
+                            const std::function<std::optional<ContourPlan>()>& opened,
                             const SampledContour& sampled_source, const FairSettings& settings, FairedRuns& cache,
                             std::vector<std::size_t>& kinked) {
   const auto on = [&](const ContourPlan& p, RunBasis basis, bool as_drawn = false) {
@@ -567,9 +569,9 @@ ContourFairing fair_planned(const Contour& source, const ContourPlan& plan, cons
   ContourFairing own = on(plan, RunBasis::own);
   if (own.faired) return own;
   const bool text = settings.profile == FairProfile::text;
-  if (opened)
+  if (const std::optional<ContourPlan> other = opened())
     for (const RunBasis basis : {RunBasis::own, RunBasis::guide, RunBasis::own_with_jumps})
-      if (ContourFairing again = on(*opened, basis); again.faired) return again;
+      if (ContourFairing again = on(*other, basis); again.faired) return again;
   if (text)
     for (const RunBasis next : {RunBasis::guide, RunBasis::own_with_jumps})
       if (ContourFairing again = on(plan, next); again.faired) return again;
@@ -647,14 +649,15 @@ ContourFairing fair_curve(const Contour& source, const Contour& curve, const Con
   // against lines to open (text), on the same plan with those opened after its own outlines fail.
   const auto fair_plans = [&](const ContourPlan& p, std::span<const std::size_t> smooth,
                               std::vector<std::size_t>& kinks) {
-    std::optional<ContourPlan> opened;
-    if (options.corners_stay) {
+    const auto opened = [&]() -> std::optional<ContourPlan> {
+      if (!options.corners_stay) return std::nullopt;
       options.open_against_lines = true;
-      opened = plan_with(smooth);
+      ContourPlan o = plan_with(smooth);
       options.open_against_lines = false;
-      if (opened->opened_corners == 0) opened.reset();
-    }
-    return fair_planned(curve, p, opened ? &*opened : nullptr, sampled_source, settings, cache, kinks);
+      if (o.opened_corners == 0) return std::nullopt;
+      return o;
+    };
+    return fair_planned(curve, p, opened, sampled_source, settings, cache, kinks);
   };
   out = fair_plans(plan, {}, kinked);
   // A contour that does not fair with its curves made tangential to the lines they meet at a
