@@ -624,8 +624,11 @@ ContourFairing fair_curve(const Contour& source, const Contour& curve, const Con
   ContourFairing out;
   out.contour = source;
   PlanOptions options{settings.corner_angle_deg, settings.profile == FairProfile::text};
-  const auto plan_with = [&](std::span<const std::size_t> smooth_nodes) {
-    ContourPlan p = plan_contour(curve, smooth_nodes, options);
+  // `open`: with PlanOptions::open_against_lines.
+  const auto plan_with = [&](std::span<const std::size_t> smooth_nodes, bool open = false) {
+    PlanOptions o = options;
+    o.open_against_lines = open;
+    ContourPlan p = plan_contour(curve, smooth_nodes, o);
     aim_runs_at_tight_turns(p, turns);
     return p;
   };
@@ -651,9 +654,7 @@ ContourFairing fair_curve(const Contour& source, const Contour& curve, const Con
                               std::vector<std::size_t>& kinks) {
     const auto opened = [&]() -> std::optional<ContourPlan> {
       if (!options.corners_stay) return std::nullopt;
-      options.open_against_lines = true;
-      ContourPlan o = plan_with(smooth);
-      options.open_against_lines = false;
+      ContourPlan o = plan_with(smooth, true);
       if (o.opened_corners == 0) return std::nullopt;
       return o;
     };

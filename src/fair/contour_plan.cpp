@@ -49,10 +49,10 @@ constexpr double against_line_kink_deg = 2.0;
 constexpr double against_line_least_handle = 1.0 / radians(1.5);  // a grid step across turns it by 1.5°
 
 // The curve's tangent at its join with a line, turned the way the join turns until the join
-// turns by the corner floor, where the join is a kink against the curve as above. `turn`: the
-// join's signed turn from `a` to `b` (tangents `ta`, `tb`).
-std::optional<Vec2> opened_against_line(const Piece& a, const Piece& b, Vec2 ta, Vec2 tb, double turn) {
-  const double floor = radians(corner_floor_deg);
+// turns by the corner floor, where the join is a kink against the curve as above. `ta`, `tb`:
+// the tangents of `a` and `b` at the join.
+std::optional<Vec2> opened_against_line(const Piece& a, const Piece& b, Vec2 ta, Vec2 tb) {
+  const double floor = radians(corner_floor_deg), turn = turning_angle(ta, tb);
   if (a.straight == b.straight || std::abs(turn) < radians(against_line_kink_deg) || std::abs(turn) >= floor)
     return std::nullopt;
   const Piece& curve = a.straight ? b : a;
@@ -136,7 +136,7 @@ ContourPlan plan_contour(const Contour& source, std::span<const std::size_t> smo
     // a line at 10° into the line's direction would put a bump where the designer drew none.
     const bool line_join = a.straight || b.straight;
     if (options.open_against_lines && !made_smooth(b.source_node) && !flag)
-      opened[i] = opened_against_line(a, b, ta, tb, turning_angle(ta, tb));
+      opened[i] = opened_against_line(a, b, ta, tb);
     const bool is_corner = made_smooth(b.source_node) ? false
                            : flag                     ? !*flag
                                                       : opened[i] || angle > (line_join ? std::min(corner, tangential_line) : corner);
