@@ -83,10 +83,8 @@ TEST(AgainstLineKinks, KinksTheCurveTakesWithinItsOwnTurningStayLineJoins) {
 
 TEST(AgainstLineKinks, TheBaseIsFairedAsOneArcIntoACornerNotAWaveIntoTheLine) {
   const Contour source = e_base();
-  FairOptions fo;
-  fo.profile = FairProfile::text;
-  fo.rounding = Rounding::integers;
-  const FairSettings settings = resolve_settings(fo, 1000.0);
+  // Text, and rounded: the source is drawn on the grid.
+  const FairSettings settings = resolve_settings(FairOptions{}, 1000.0);
   const ContourFairing faired = fair_contour(source, settings);
   ASSERT_TRUE(faired.faired) << faired.reason;
   EXPECT_LE(faired.deviation, settings.tolerance_units);
