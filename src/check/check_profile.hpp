@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "check/finding.hpp"
+#include "geom/join.hpp"
 
 namespace gf {
 
@@ -17,7 +18,7 @@ struct CheckProfile {
   // kink: a join meant smooth but broken (lac-math-independent; the definition)
   double kink_min_deg = 0.05, kink_max_deg = 3.0;
   // g2-jump at smooth joins: relative jump above 5% where max|κ|·UPM ≥ 0.5, else |Δκ|·UPM > 0.05
-  double g2_relative = 0.05, g2_absolute_em = 0.05, g2_large_curvature_em = 0.5;
+  CurvatureJumpRule g2;
   // missing-extremum: farther than 1% of the segment's length from its ends, no node within 0.5 units
   double extremum_end_fraction = 0.01, extremum_node_distance_em = 0.0005;
   // short-segment (fontbakery outline_short_segments): below 3 units or 0.6% of the contour

@@ -229,23 +229,19 @@ struct GlyphChecker {
       const std::optional<double> ki = j.curvature_in, ko = j.curvature_out;
       const double upm_ = upm();
       report.fairness.total_variation += std::abs(capped(ki) - capped(ko)) * upm_;
-      if (!ki || !ko) {
+      const std::optional<CurvatureJump> jump = curvature_jump(j, upm_, profile.g2);
+      if (!jump) {
         Finding& f = add("g2-jump", ci, node, j.point);
         f.unit = "ratio";
         f.message = "curvature is unbounded on one side (a retracted handle)";
         continue;
       }
-      const double jump = std::abs(*ki - *ko), larger = std::max(std::abs(*ki), std::abs(*ko));
-      if (larger * upm_ >= profile.g2_large_curvature_em) {
-        if (jump / larger <= profile.g2_relative) continue;
-        Finding& f = add("g2-jump", ci, node, j.point);
-        f.value = jump / larger, f.threshold = profile.g2_relative, f.unit = "ratio";
-        f.message = format("curvature jumps by %.0f%% of the larger side (%.3g/em)", 100 * jump / larger, larger * upm_);
-      } else if (jump * upm_ > profile.g2_absolute_em) {
-        Finding& f = add("g2-jump", ci, node, j.point);
-        f.value = jump * upm_, f.threshold = profile.g2_absolute_em, f.unit = "1/em";
-        f.message = format("curvature jumps by %.3g/em", jump * upm_);
-      }
+      if (!jump->exceeds()) continue;
+      Finding& f = add("g2-jump", ci, node, j.point);
+      f.value = jump->value, f.threshold = jump->limit, f.unit = jump->relative ? "ratio" : "1/em";
+      f.message = jump->relative ? format("curvature jumps by %.0f%% of the larger side (%.3g/em)", 100 * jump->value,
+                                          std::max(std::abs(*ki), std::abs(*ko)) * upm_)
+                                 : format("curvature jumps by %.3g/em", jump->value);
     }
   }
 

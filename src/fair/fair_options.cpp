@@ -13,6 +13,7 @@ FairSettings resolve_settings(const FairOptions& options, double units_per_em) {
   const bool hand = options.profile == FairProfile::handwriting;
   s.tolerance_units = options.tolerance_units.value_or((hand ? 0.012 : 0.00125) * units_per_em);
   s.corner_angle_deg = options.corner_angle_deg.value_or(hand ? 30.0 : 3.0);
+  s.units_per_em = units_per_em;
   s.flat_curvature = 0.5 / units_per_em;
   s.chain_share = hand ? 0.7 : 0.4;
   s.feature_window_units = hand ? 0.03 * units_per_em : 0.004 * units_per_em;

@@ -51,7 +51,12 @@ struct FairSettings {
   /// |κ| (1/unit) of half a unit per em: flatter curves are compared by the difference of
   /// their curvatures, not the ratio (the check's g2-jump rule).
   double flat_curvature = 5e-4;
-  /// The share of the tolerance (after rounding's half unit) the log-aesthetic chain may use;
+  /// The em the settings were resolved for (the check's rules are per em).
+  double units_per_em = 1000.0;
+  /// Of the tolerance, what the fairing leaves rounding to the grid (units; none without
+  /// rounding): half a unit, what rounding moves a point, and room for the handle steps.
+  double rounding_reserve_units = 0.5;
+  /// The share of the tolerance (after rounding's reserve) the log-aesthetic chain may use;
   /// the cubics get the rest. Text 0.4; handwriting 0.7, where the chain follows a smoothed
   /// guide and the cubics follow the chain closely.
   double chain_share = 0.4;

@@ -1,5 +1,6 @@
 #include "geom/join.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "geom/curvature.hpp"
@@ -45,6 +46,14 @@ std::vector<Join> joins_of(const Contour& c, const JoinThresholds& thresholds) {
     joins.push_back(join_between(in, c.segments[i], i, c.nodes[i], thresholds));
   }
   return joins;
+}
+
+std::optional<CurvatureJump> curvature_jump(const Join& j, double units_per_em, const CurvatureJumpRule& rule) {
+  if (!j.curvature_in || !j.curvature_out) return std::nullopt;
+  const double jump = std::abs(*j.curvature_in - *j.curvature_out);
+  const double larger = std::max(std::abs(*j.curvature_in), std::abs(*j.curvature_out));
+  if (larger * units_per_em >= rule.large_em) return CurvatureJump{jump / larger, true, rule.relative};
+  return CurvatureJump{jump * units_per_em, false, rule.absolute_em};
 }
 
 const char* to_string(JoinKind kind) {

@@ -32,6 +32,24 @@ struct Join {
   std::optional<double> curvature_derivative_in, curvature_derivative_out;
 };
 
+/// The rule a jump of curvature at a smooth join is judged by (the fairing issue's check):
+/// relative to the larger side where that side's |κ|·UPM is at least `large_em`, else by
+/// |Δκ|·UPM, a curve that flat having no curvature to compare by ratio.
+struct CurvatureJumpRule {
+  double relative = 0.05, absolute_em = 0.05, large_em = 0.5;
+};
+
+/// How far κ jumps at a join, as a CurvatureJumpRule measures it.
+struct CurvatureJump {
+  double value = 0.0;    ///< relative to the larger side, or |Δκ|·UPM
+  bool relative = true;  ///< which of the two
+  double limit = 0.0;    ///< what the rule allows
+  bool exceeds() const { return value > limit; }
+};
+
+/// None where a side of `j` has no curvature (a retracted handle: unbounded).
+std::optional<CurvatureJump> curvature_jump(const Join& j, double units_per_em, const CurvatureJumpRule& rule = {});
+
 /// The joins of a contour: every node of a closed one, the interior nodes of an open one.
 std::vector<Join> joins_of(const Contour& c, const JoinThresholds& thresholds = {});
 

@@ -703,6 +703,18 @@ TEST(ContourFairing, ALineIsPlacedWhereTheExtremumItsCurveReachesCanSeatIt) {
   EXPECT_EQ(corners_lost(f.source.outline, f.result.glyph.outline, f.upm), 0);
 }
 
+TEST(ContourFairing, AContourThatKeepsAJumpIsFairedAgainWithMoreRoomForRounding) {
+  // Gentium Plus's X, rounded: faired leaving rounding half a unit of its 2.56-unit tolerance,
+  // the curve at the lower left arm's foot left its (5, 8) line with κ·UPM 17.9. Faired again
+  // leaving rounding 0.75 units (fair_contour's second try), the glyph has no jump, and no
+  // kink or lost corner in its place.
+  FairedGlyph f;
+  expect_faired(test::gentium_plus, "X", FairProfile::text, &f);
+  EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm), 0);
+  EXPECT_EQ(kinks(f.result.glyph.outline), 0);
+  EXPECT_EQ(corners_lost(f.source.outline, f.result.glyph.outline, f.upm), 0);
+}
+
 TEST(ContourFairing, AFlatNodeSeatsAlongALongDirectionAndLeavesTheCornerBesideIt) {
   // EB Garamond's W, rounded. Its cap serifs' tops are cupped by a unit or two: an inflection
   // between two level extrema keeps κ = 0 on both sides only along a direction a degree or

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 
 namespace gf {
 namespace {
@@ -61,6 +62,44 @@ TEST(Join, OpenContourHasNoJoinAtItsEnds) {
 TEST(Join, ZeroLengthSegmentMakesADegenerateJoin) {
   const auto joins = joins_of(closed({Line{{{0, 0}, {1, 0}}}, Line{{{1, 0}, {1, 0}}}, Line{{{1, 0}, {0, 0}}}}));
   EXPECT_EQ(joins[1].kind, JoinKind::degenerate);
+}
+
+// The check's rule: a curvature jump relative to the larger side where that side's |κ|·UPM is at
+// least 0.5, else by |Δκ|·UPM (a curve that flat has no curvature to compare by ratio).
+Join join_with(std::optional<double> in, std::optional<double> out) {
+  Join j;
+  j.kind = JoinKind::smooth;
+  j.curvature_in = in, j.curvature_out = out;
+  return j;
+}
+
+TEST(Join, ACurvatureJumpIsRelativeWhereEitherSideBendsVisibly) {
+  // κ·UPM 10 against 10.4 on a 1000-unit em: 4 % of the larger side, within the 5 %.
+  const std::optional<CurvatureJump> jump = curvature_jump(join_with(0.01, 0.0104), 1000.0);
+  ASSERT_TRUE(jump);
+  EXPECT_TRUE(jump->relative);
+  EXPECT_NEAR(jump->value, 0.0004 / 0.0104, 1e-12);
+  EXPECT_EQ(jump->limit, 0.05);
+  EXPECT_FALSE(jump->exceeds());
+  // κ·UPM 0.6 against 0: all of it.
+  EXPECT_TRUE(curvature_jump(join_with(0.0006, 0.0), 1000.0)->exceeds());
+}
+
+TEST(Join, ACurvatureJumpIsAbsoluteWhereBothSidesAreNearlyFlat) {
+  // κ·UPM 0.2 against 0.26 (both under 0.5): 0.06 per em, over the 0.05; a ratio would say 23 %.
+  const std::optional<CurvatureJump> jump = curvature_jump(join_with(0.0002, 0.00026), 1000.0);
+  ASSERT_TRUE(jump);
+  EXPECT_FALSE(jump->relative);
+  EXPECT_NEAR(jump->value, 0.06, 1e-12);
+  EXPECT_TRUE(jump->exceeds());
+  // κ·UPM 0.04 against 0, a curve leaving a line: under the 0.05.
+  EXPECT_FALSE(curvature_jump(join_with(0.0, 0.00004), 1000.0)->exceeds());
+  // The same curvatures on a 2048-unit em: 0.082 per em, over it.
+  EXPECT_TRUE(curvature_jump(join_with(0.0, 0.00004), 2048.0)->exceeds());
+}
+
+TEST(Join, NoCurvatureJumpIsMeasuredWhereASideHasNoCurvature) {
+  EXPECT_FALSE(curvature_jump(join_with(std::nullopt, 0.001), 1000.0));
 }
 
 }  // namespace

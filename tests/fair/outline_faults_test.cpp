@@ -1,0 +1,82 @@
+// The faults of a faired contour as the fairing issue's check counts them (fair/outline_faults),
+// on contours whose faults are known by construction, and how two versions compare.
+#include "fair/outline_faults.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+namespace gf {
+namespace {
+
+constexpr double upm = 1000.0;
+
+Contour closed(std::vector<Segment> segments) {
+  Contour c;
+  c.nodes.assign(segments.size(), NodeFlags{});
+  c.segments = std::move(segments);
+  return c;
+}
+
+const Contour square = closed({Line{{{0, 0}, {100, 0}}}, Line{{{100, 0}, {100, 100}}}, Line{{{100, 100}, {0, 100}}},
+                               Line{{{0, 100}, {0, 0}}}});
+
+TEST(OutlineFaults, ASquareHasNone) {
+  const OutlineFaults f = outline_faults(square, square, upm);
+  EXPECT_EQ(f.jumps, 0);
+  EXPECT_EQ(f.kinks, 0);
+  EXPECT_EQ(f.inflections, 0);
+  EXPECT_EQ(f.corners_lost, 0);
+}
+
+TEST(OutlineFaults, ACurveLeavingALineBentHasAJump) {
+  // The cubic leaves the baseline tangentially with κ = (2/3)·(30·10)/30³ = 1/135 (κ·UPM 7.4)
+  // against the line's 0; its far end is a corner, as are the lines' other ends.
+  const Contour c = closed({Line{{{0, 0}, {100, 0}}}, Cubic{{{100, 0}, {130, 0}, {150, 10}, {160, 30}}},
+                            Line{{{160, 30}, {0, 100}}}, Line{{{0, 100}, {0, 0}}}});
+  const OutlineFaults f = outline_faults(c, c, upm);
+  EXPECT_EQ(f.jumps, 1);
+  EXPECT_EQ(f.kinks, 0);
+  EXPECT_EQ(f.inflections, 0);
+  EXPECT_EQ(f.corners_lost, 0);
+}
+
+TEST(OutlineFaults, ATangentBrokenByADegreeIsAKink) {
+  const double rise = 100.0 * std::tan(std::numbers::pi / 180.0);
+  const Contour c = closed({Line{{{0, 0}, {100, 0}}}, Line{{{100, 0}, {200, rise}}}, Line{{{200, rise}, {200, 100}}},
+                            Line{{{200, 100}, {0, 0}}}});
+  const OutlineFaults f = outline_faults(c, c, upm);
+  EXPECT_EQ(f.kinks, 1);
+  EXPECT_EQ(f.jumps, 0);
+}
+
+TEST(OutlineFaults, AnSCurveHasAnInflectionAndARoundedCornerIsLost) {
+  // The square's corner at (100, 100) rounded off by a cubic from (100, 80) to (80, 100), the
+  // lines' tangents kept (two curvature jumps: the cubic bends at both ends), and the base
+  // drawn as an S from (0, 0) to (100, 0).
+  const Contour c = closed({Cubic{{{0, 0}, {50, 20}, {50, -20}, {100, 0}}}, Line{{{100, 0}, {100, 80}}},
+                            Cubic{{{100, 80}, {100, 91}, {91, 100}, {80, 100}}}, Line{{{80, 100}, {0, 100}}},
+                            Line{{{0, 100}, {0, 0}}}});
+  const OutlineFaults f = outline_faults(c, square, upm);
+  EXPECT_EQ(f.corners_lost, 1);  // (100, 100); (0, 0) and (100, 0) stay corners, turning by 90° less the S's 22°
+  EXPECT_EQ(f.inflections, 1);
+  EXPECT_EQ(f.jumps, 2);
+  EXPECT_EQ(f.kinks, 0);
+}
+
+TEST(OutlineFaults, FewerJumpsAreBetterOnlyWithNoMoreOfTheRest) {
+  const OutlineFaults two_jumps{2, 0, 1, 0};
+  EXPECT_TRUE(fewer_faults({1, 0, 1, 0}, two_jumps));
+  EXPECT_FALSE(fewer_faults(two_jumps, two_jumps));
+  EXPECT_FALSE(fewer_faults({0, 1, 1, 0}, two_jumps));  // a jump traded for a kink
+  EXPECT_FALSE(fewer_faults({0, 0, 2, 0}, two_jumps));  // for an inflection
+  EXPECT_FALSE(fewer_faults({0, 0, 1, 1}, two_jumps));  // for a corner rounded off
+  EXPECT_TRUE(fewer_faults({1, 0, 1, 0}, {1, 1, 1, 0}));  // a kink mended
+  EXPECT_FALSE(fewer_faults({2, 0, 1, 0}, {1, 1, 1, 0}));  // a kink traded for a jump: as many
+  EXPECT_TRUE(fewer_faults({0, 0, 0, 0}, two_jumps));
+}
+
+}  // namespace
+}  // namespace gf
