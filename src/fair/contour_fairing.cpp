@@ -720,9 +720,9 @@ double contour_distance(const Contour& a, const Contour& b) {
 
 namespace {
 
+// `settings.rounding` resolved on the contour.
 ContourFairing fair_contour_once(const Contour& source, const FairSettings& requested, Tries& tries) {
   FairSettings settings = requested;
-  settings.rounding = resolve_rounding(requested.rounding, {&source, 1});
   ContourFairing out;
   out.contour = source;
   // Each side of a contour may move by the tolerance; past half its thickness the two sides
@@ -781,29 +781,32 @@ ContourFairing fair_contour_once(const Contour& source, const FairSettings& requ
 }
 
 // On text, the rounded outline of a contour that keeps a curvature jump or a kink the check
-// counts is faired again leaving rounding 0.75 units of the tolerance instead of half a unit,
-// and the version with fewer faults (fewer_faults) kept: which joins the grid can make G2
-// depends on where the fairing puts the nodes and how much room it leaves them. Only a contour
-// its first fairing took at most two tries (fair_within_budgets) to fair, and the second stops
-// there: of whole DejaVu Sans's contours that took more (another basis, a kink pass), none came
-// out better, and they took most of the time. A third fairing leaving rounding a whole unit
-// mended more (whole DejaVu Sans g2-jumps 90 → 76) for as much time again (docs/fairing.md,
-// stop 76). Not on handwriting, whose bar is a share of its joins, which it meets.
-constexpr double roomier_rounding_reserve = 0.75;
+// counts is faired again leaving rounding a quarter unit more of the tolerance (0.75 units
+// instead of half a unit), and the version with fewer faults (fewer_faults) kept: which joins
+// the grid can make G2 depends on where the fairing puts the nodes and how much room it leaves
+// them. Only a contour its first fairing took at most two tries (fair_within_budgets) to fair,
+// and the second stops there: of whole DejaVu Sans's contours that took more (another basis, a
+// kink pass), none came out better, and they took most of the time. A third fairing leaving
+// rounding a whole unit mended more (whole DejaVu Sans g2-jumps 90 → 76) for as much time
+// again (docs/fairing.md, stop 76). Not on handwriting, whose bar is a share of its joins,
+// which it meets.
+constexpr double more_rounding_reserve = 0.25;
 constexpr int most_tries_faired_again = 2;
 
 }  // namespace
 
-ContourFairing fair_contour(const Contour& source, const FairSettings& settings) {
+ContourFairing fair_contour(const Contour& source, const FairSettings& requested) {
+  FairSettings settings = requested;
+  settings.rounding = resolve_rounding(requested.rounding, {&source, 1});
   Tries first;
   ContourFairing out = fair_contour_once(source, settings, first);
   if (!out.faired || first.made > most_tries_faired_again || settings.profile != FairProfile::text ||
-      resolve_rounding(settings.rounding, {&source, 1}) != Rounding::integers)
+      settings.rounding != Rounding::integers)
     return out;
   const OutlineFaults faults = outline_faults(out.contour, source, settings.units_per_em);
   if (faults.jumps + faults.kinks == 0) return out;
   FairSettings roomier = settings;
-  roomier.rounding_reserve_units = std::max(settings.rounding_reserve_units, roomier_rounding_reserve);
+  roomier.rounding_reserve_units += more_rounding_reserve;
   Tries again_tries{0, first.made};
   ContourFairing again = fair_contour_once(source, roomier, again_tries);
   if (again.faired && fewer_faults(outline_faults(again.contour, source, settings.units_per_em), faults))
