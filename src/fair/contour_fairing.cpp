@@ -669,7 +669,7 @@ ContourFairing fair_curve(const Contour& source, const Contour& curve, const Con
     const auto opened = [&]() -> std::optional<ContourPlan> {
       if (!options.corners_stay) return std::nullopt;
       ContourPlan o = plan_with(smooth, true);
-      if (o.opened_corners == 0) return std::nullopt;
+      if (opened_corners(o) == 0) return std::nullopt;
       return o;
     };
     return fair_planned(curve, p, opened, sampled_source, settings, cache, tries, kinks);

@@ -152,8 +152,6 @@ ContourPlan plan_contour(const Contour& source, std::span<const std::size_t> smo
   };
   std::vector<std::optional<RunEndKind>> breaks(n);
   for (std::size_t i = 0; i < n; ++i) breaks[i] = break_before(i);
-  plan.opened_corners = static_cast<std::size_t>(
-      std::count_if(opened.begin(), opened.end(), [](const auto& t) { return t.has_value(); }));
   const std::size_t first = static_cast<std::size_t>(
       std::find_if(breaks.begin(), breaks.end(), [](const auto& b) { return b.has_value(); }) - breaks.begin());
   if (first == n) {  // one closed run
@@ -211,6 +209,13 @@ ContourPlan plan_contour(const Contour& source, std::span<const std::size_t> smo
     }
   }
   return plan;
+}
+
+std::size_t opened_corners(const ContourPlan& plan) {
+  std::size_t count = 0;
+  for (const auto& piece : plan.pieces)
+    if (const SmoothRun* run = std::get_if<SmoothRun>(&piece)) count += run->start.opened + run->end.opened;
+  return count;
 }
 
 }  // namespace gf

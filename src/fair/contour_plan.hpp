@@ -49,7 +49,6 @@ struct ContourPlan {
   std::vector<std::variant<Line, SmoothRun>> pieces;  ///< in order, each starting where the last ended
   bool closed = true;
   std::vector<std::size_t> start_nodes;  ///< the source node each piece starts at
-  std::size_t opened_corners = 0;  ///< line joins kept corners and opened (PlanOptions::open_against_lines)
 };
 
 /// The kink limit of geom/join.hpp: a join turning by less than this (and more than 0.05°) is
@@ -89,5 +88,8 @@ struct PlanOptions {
 /// `smooth_nodes` (source node indices) are smooth whatever their angle: a curve meeting a line
 /// there meets it tangentially, and two lines meeting there become one.
 ContourPlan plan_contour(const Contour& contour, std::span<const std::size_t> smooth_nodes, const PlanOptions& options);
+
+/// How many of the plan's line joins are corners opened against their lines (RunEnd::opened).
+std::size_t opened_corners(const ContourPlan& plan);
 
 }  // namespace gf

@@ -43,13 +43,13 @@ TEST(AgainstLineKinks, AKinkAgainstAFlatCurveIsPlannedAsACornerOpenedToTheFloor)
   const Contour c = e_base();
   ASSERT_NEAR(turn_before(c, 3), 2.52, 0.01);  // the source's kink, against the base's clockwise bend
   const ContourPlan smooth = plan_contour(c, {}, {3.0, true});
-  EXPECT_EQ(smooth.opened_corners, 0u);
+  EXPECT_EQ(opened_corners(smooth), 0u);
   EXPECT_EQ(std::get<SmoothRun>(smooth.pieces[1]).end.kind, RunEndKind::line);
 
   PlanOptions options{3.0, true};
   options.open_against_lines = true;
   const ContourPlan opened = plan_contour(c, {}, options);
-  EXPECT_EQ(opened.opened_corners, 1u);
+  EXPECT_EQ(opened_corners(opened), 1u);
   const RunEnd& end = std::get<SmoothRun>(opened.pieces[1]).end;
   EXPECT_EQ(end.kind, RunEndKind::corner);
   EXPECT_TRUE(end.opened);
@@ -58,7 +58,7 @@ TEST(AgainstLineKinks, AKinkAgainstAFlatCurveIsPlannedAsACornerOpenedToTheFloor)
 
   // Made smooth (the kink pass), no corner is opened there.
   const std::vector<std::size_t> made{3};
-  EXPECT_EQ(plan_contour(c, made, options).opened_corners, 0u);
+  EXPECT_EQ(opened_corners(plan_contour(c, made, options)), 0u);
 }
 
 TEST(AgainstLineKinks, KinksTheCurveTakesWithinItsOwnTurningStayLineJoins) {
@@ -70,15 +70,15 @@ TEST(AgainstLineKinks, KinksTheCurveTakesWithinItsOwnTurningStayLineJoins) {
   turning.segments[3] = Line{{389, -16}, {556, -26}};
   turning.segments[4] = Line{{556, -26}, {556, 60}};
   ASSERT_NEAR(turn_before(turning, 3), 2.5, 0.1);
-  EXPECT_EQ(plan_contour(turning, {}, options).opened_corners, 0u);
+  EXPECT_EQ(opened_corners(plan_contour(turning, {}, options)), 0u);
   // A kink the curve's way (the line turns on clockwise): no inflection needed.
   Contour along = e_base();
   along.segments[3] = Line{{389, -3}, {556, -15}};
-  EXPECT_EQ(plan_contour(along, {}, options).opened_corners, 0u);
+  EXPECT_EQ(opened_corners(plan_contour(along, {}, options)), 0u);
   // Under 2°: smoothed.
   Contour small = e_base();
   small.segments[3] = Line{{389, -3}, {556, -2}};
-  EXPECT_EQ(plan_contour(small, {}, options).opened_corners, 0u);
+  EXPECT_EQ(opened_corners(plan_contour(small, {}, options)), 0u);
 }
 
 TEST(AgainstLineKinks, TheBaseIsFairedAsOneArcIntoACornerNotAWaveIntoTheLine) {
