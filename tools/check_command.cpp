@@ -19,7 +19,7 @@ namespace gf {
 
 namespace {
 
-constexpr std::size_t chunk_size = 512;  // glyphs in memory at a time
+constexpr std::size_t glyphs_in_flight = 512;  // glyphs in memory at a time
 
 }  // namespace
 
@@ -63,7 +63,7 @@ int CheckCommand::run() const {
                           font.units_per_em});
     CheckTotals totals;
     stream_glyphs<GlyphReport>(
-        source, chunk_size, progress, source.path().filename().string(),
+        source, glyphs_in_flight, progress, source.path().filename().string(),
         [&](const Glyph& g) { return check_glyph(g, font, profile); },
         [&](Glyph&, const GlyphReport& r) {
           writer->glyph(r);

@@ -25,7 +25,7 @@ namespace gf {
 
 namespace {
 
-constexpr std::size_t chunk_size = 256;  // glyphs in memory at a time
+constexpr std::size_t glyphs_in_flight = 256;  // glyphs in memory at a time
 
 }  // namespace
 
@@ -89,7 +89,7 @@ int FairCommand::run() const {
   G3JoinCount g3_joins;
   FairedContours faired_contours;  // composites repeat their components' contours
   stream_glyphs<GlyphFairing>(
-      source, chunk_size, progress, name, [&](const Glyph& g) { return fair_glyph(g, settings, faired_contours); },
+      source, glyphs_in_flight, progress, name, [&](const Glyph& g) { return fair_glyph(g, settings, faired_contours); },
       [&](Glyph& original, GlyphFairing& r) {
         const auto tell = [&](const char* level, const std::vector<std::string>& whys, const char* outcome) {
           for (const std::string& why : whys) {

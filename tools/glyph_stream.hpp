@@ -1,14 +1,14 @@
 // Whole fonts through a command: glyphs are read in order (FreeType faces are not
-// thread-safe), worked on in parallel a chunk at a time, and handed on in order, so memory
-// stays flat however large the font.
+// thread-safe), worked on in parallel, and handed on in order, at most a set number in memory
+// at a time, so memory stays flat however large the font.
 #pragma once
 
 #include <algorithm>
+#include <memory>
 #include <optional>
-#include <vector>
 
 #include <tbb/global_control.h>
-#include <tbb/parallel_for.h>
+#include <tbb/parallel_pipeline.h>
 
 #include "io/source.hpp"
 #include "progress.hpp"
@@ -22,22 +22,44 @@ inline std::optional<tbb::global_control> limit_parallelism(int jobs) {
   return limit;
 }
 
-/// `work(const Glyph&) -> Result` in parallel, then `take(Glyph&, Result&)` in the source's order.
+/// `work(const Glyph&) -> Result` in parallel, then `take(Glyph&, Result&)` in the source's
+/// order, with at most `in_flight` glyphs read and not yet taken. A pipeline rather than
+/// chunks with a barrier after each: glyph times run long-tailed (whole DejaVu Sans: median
+/// 6 ms, one glyph 4.6 s), and at each barrier one thread idled while the other finished.
 template <typename Result, typename Work, typename Take>
-void stream_glyphs(const GlyphSource& source, std::size_t chunk_size, const Progress& progress, const std::string& label,
+void stream_glyphs(const GlyphSource& source, std::size_t in_flight, const Progress& progress, const std::string& label,
                    Work&& work, Take&& take) {
-  std::vector<Glyph> glyphs;
-  std::vector<Result> results;
-  for (std::size_t first = 0; first < source.size(); first += chunk_size) {
-    const std::size_t last = std::min(source.size(), first + chunk_size);
-    glyphs.clear();
-    for (std::size_t i = first; i < last; ++i)
-      if (auto g = source.load(i)) glyphs.push_back(std::move(*g));
-    results.assign(glyphs.size(), Result{});
-    tbb::parallel_for(std::size_t{0}, glyphs.size(), [&](std::size_t k) { results[k] = work(glyphs[k]); });
-    for (std::size_t k = 0; k < glyphs.size(); ++k) take(glyphs[k], results[k]);
-    progress.show(label, last, source.size());
-  }
+  struct Item {
+    std::size_t index = 0;
+    std::optional<Glyph> glyph;  // none where the source has no glyph to load
+    Result result{};
+  };
+  using Carried = std::shared_ptr<Item>;  // pipeline tokens must be copyable
+  const std::size_t every = std::max<std::size_t>(1, in_flight / 4);  // glyphs between progress updates
+  std::size_t next = 0;
+  tbb::parallel_pipeline(
+      in_flight,
+      tbb::make_filter<void, Carried>(tbb::filter_mode::serial_in_order,
+                                      [&](tbb::flow_control& control) -> Carried {
+                                        if (next == source.size()) {
+                                          control.stop();
+                                          return nullptr;
+                                        }
+                                        auto item = std::make_shared<Item>();
+                                        item->index = next;
+                                        item->glyph = source.load(next++);
+                                        return item;
+                                      }) &
+          tbb::make_filter<Carried, Carried>(tbb::filter_mode::parallel,
+                                             [&](Carried item) {
+                                               if (item->glyph) item->result = work(*item->glyph);
+                                               return item;
+                                             }) &
+          tbb::make_filter<Carried, void>(tbb::filter_mode::serial_in_order, [&](Carried item) {
+            if (item->glyph) take(*item->glyph, item->result);
+            const std::size_t done = item->index + 1;
+            if (done % every == 0 || done == source.size()) progress.show(label, done, source.size());
+          }));
   progress.clear();
 }
 
