@@ -1,6 +1,7 @@
 #include "fair/contour_fairing.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <deque>
 #include <functional>
@@ -440,10 +441,13 @@ void fillet_leaning_lines(std::vector<OutlineNode>& nodes, bool closed, const Sa
 }
 
 // How many times a contour has been faired on one plan and basis (fair_within_budgets), and
-// how many times it may be: a second fairing of it (fair_contour) stops where the first did.
+// how many times it may be: a fairing again (fair_contour) stops where the first did, and
+// gives a plan up where its rounding strays instead of rounding again on halved allowances
+// (EB Garamond's K, at 0.9 of the tolerance: fourteen more roundings of half a second each).
 struct Tries {
   int made = 0;
   int most = std::numeric_limits<int>::max();
+  bool again = false;
 };
 
 // The contour faired on one plan: the budgets halved once when the first try strays, the
@@ -527,7 +531,7 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
       for (const ToleranceBand* within : bands) {
         limits = first;
         limits.band = within;
-        const int last_retry = within ? 1 : 4 * rounding_retries + 1;
+        const int last_retry = within || tries.again ? 1 : 4 * rounding_retries + 1;
         std::vector<std::size_t> strayed;  // the cubics about where the last rounding strayed
         for (int retry = 0;; ++retry) {
           limits.any_grid_neighbour = retry % 2 == 0;
@@ -781,16 +785,22 @@ ContourFairing fair_contour_once(const Contour& source, const FairSettings& requ
 }
 
 // On text, the rounded outline of a contour that keeps a curvature jump or a kink the check
-// counts is faired again leaving rounding a quarter unit more of the tolerance (0.75 units
-// instead of half a unit), and the version with fewer faults (fewer_faults) kept: which joins
-// the grid can make G2 depends on where the fairing puts the nodes and how much room it leaves
-// them. Only a contour its first fairing took at most two tries (fair_within_budgets) to fair,
-// and the second stops there: of whole DejaVu Sans's contours that took more (another basis, a
-// kink pass), none came out better, and they took most of the time. A third fairing leaving
-// rounding a whole unit mended more (whole DejaVu Sans g2-jumps 90 → 76) for as much time
-// again (docs/fairing.md, stop 76). Not on handwriting, whose bar is a share of its joins,
-// which it meets.
-constexpr double more_rounding_reserve = 0.25;
+// counts is faired again, and the version with the fewest faults (fewer_faults) kept: which
+// joins the grid can make G2 depends on where the fairing puts the nodes and how much of the
+// tolerance it leaves rounding. Again leaving rounding a quarter unit more (0.75 units instead
+// of half a unit), then half a unit more, then at 0.9 of the tolerance, each only while faults
+// are left. a–z A–Z, the ten text fonts still jumping: g2-jumps 161 with the first alone, 137
+// with the first again, 115 with the second, 112 with the third (Carlito 1 → 0); 0.8 of the
+// tolerance after that, 110 for a third more time on EB Garamond (docs/fairing.md, stops 76
+// and 77). Only a contour its first fairing took at most two tries (fair_within_budgets) to
+// fair, and each fairing again stops there: of whole DejaVu Sans's contours that took more
+// (another basis, a kink pass), none came out better, and they took most of the time. Not on
+// handwriting, whose bar is a share of its joins, which it meets.
+struct Refairing {
+  double more_reserve_units = 0.0;  ///< added to FairSettings::rounding_reserve_units
+  double tolerance_scale = 1.0;     ///< of FairSettings::tolerance_units
+};
+constexpr std::array<Refairing, 3> refairings{{{0.25, 1.0}, {0.5, 1.0}, {0.0, 0.9}}};
 constexpr int most_tries_faired_again = 2;
 
 }  // namespace
@@ -803,14 +813,18 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& requested
   if (!out.faired || first.made > most_tries_faired_again || settings.profile != FairProfile::text ||
       settings.rounding != Rounding::integers)
     return out;
-  const OutlineFaults faults = outline_faults(out.contour, source, settings.units_per_em);
-  if (faults.jumps + faults.kinks == 0) return out;
-  FairSettings roomier = settings;
-  roomier.rounding_reserve_units += more_rounding_reserve;
-  Tries again_tries{0, first.made};
-  ContourFairing again = fair_contour_once(source, roomier, again_tries);
-  if (again.faired && fewer_faults(outline_faults(again.contour, source, settings.units_per_em), faults))
-    out = std::move(again);
+  OutlineFaults faults = outline_faults(out.contour, source, settings.units_per_em);
+  for (const Refairing& r : refairings) {
+    if (faults.jumps + faults.kinks == 0) break;
+    FairSettings again_settings = settings;
+    again_settings.rounding_reserve_units += r.more_reserve_units;
+    again_settings.tolerance_units *= r.tolerance_scale;
+    Tries again_tries{0, first.made, true};
+    ContourFairing again = fair_contour_once(source, again_settings, again_tries);
+    if (!again.faired) continue;
+    const OutlineFaults again_faults = outline_faults(again.contour, source, settings.units_per_em);
+    if (fewer_faults(again_faults, faults)) out = std::move(again), faults = again_faults;
+  }
   return out;
 }
 

@@ -715,6 +715,18 @@ TEST(ContourFairing, AContourThatKeepsAJumpIsFairedAgainWithMoreRoomForRounding)
   EXPECT_EQ(corners_lost(f.source.outline, f.result.glyph.outline, f.upm), 0);
 }
 
+TEST(ContourFairing, AContourThatStillJumpsWithMoreRoomForRoundingIsFairedAgainWithinLess) {
+  // Carlito's V, rounded: its apex's inner curve keeps κ·UPM −83.0 against −73.5 at a node
+  // faired leaving rounding half a unit of its 2.56-unit tolerance, and again leaving it 0.75
+  // and a whole unit. Faired again at 0.9 of the tolerance (fair_contour's last try), the
+  // glyph has no jump, and no kink or lost corner in its place.
+  FairedGlyph f;
+  expect_faired(test::carlito, "V", FairProfile::text, &f);
+  EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm), 0);
+  EXPECT_EQ(kinks(f.result.glyph.outline), 0);
+  EXPECT_EQ(corners_lost(f.source.outline, f.result.glyph.outline, f.upm), 0);
+}
+
 TEST(ContourFairing, AFlatNodeSeatsAlongALongDirectionAndLeavesTheCornerBesideIt) {
   // EB Garamond's W, rounded. Its cap serifs' tops are cupped by a unit or two: an inflection
   // between two level extrema keeps κ = 0 on both sides only along a direction a degree or
