@@ -790,8 +790,8 @@ ContourFairing fair_contour_once(const Contour& source, const FairSettings& requ
 // tolerance it leaves rounding. Again leaving rounding a quarter unit more (0.75 units instead
 // of half a unit), then half a unit more, then at 0.9 of the tolerance, each only while faults
 // are left. a–z A–Z, the ten text fonts still jumping: g2-jumps 161 with the first alone, 137
-// with the first again, 115 with the second, 112 with the third (Carlito 1 → 0); 0.8 of the
-// tolerance after that, 110 for a third more time on EB Garamond (docs/fairing.md, stops 76
+// with the first again, 115 with the second, 111 with the third (Carlito 1 → 0); 0.8 of the
+// tolerance after that, 109 for a third more time on EB Garamond (docs/fairing.md, stops 76
 // and 77). Only a contour its first fairing took at most two tries (fair_within_budgets) to
 // fair, and each fairing again stops there: of whole DejaVu Sans's contours that took more
 // (another basis, a kink pass), none came out better, and they took most of the time. Not on
