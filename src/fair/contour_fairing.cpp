@@ -788,11 +788,11 @@ ContourFairing fair_contour_once(const Contour& source, const FairSettings& requ
 // counts is faired again, and the version with the fewest faults (fewer_faults) kept: which
 // joins the grid can make G2 depends on where the fairing puts the nodes and how much of the
 // tolerance it leaves rounding. Again leaving rounding a quarter unit more (0.75 units instead
-// of half a unit), then half a unit more, then at 0.9 of the tolerance, each only while faults
-// are left. a–z A–Z, the ten text fonts still jumping: g2-jumps 161 with the first alone, 137
-// with the first again, 115 with the second, 111 with the third (Carlito 1 → 0); 0.8 of the
-// tolerance after that, 109 for a third more time on EB Garamond (docs/fairing.md, stops 76
-// and 77). Only a contour its first fairing took at most two tries (fair_within_budgets) to
+// of half a unit), then half a unit more, then at 0.9 of the tolerance leaving it half a unit,
+// then a whole unit, each only while faults are left. a–z A–Z, the ten text fonts still
+// jumping: g2-jumps 161 with the first alone, 137 with the first again, 115 with the second,
+// 111 with the third (Carlito 1 → 0), 102 with the fourth; 0.8 of the tolerance after the
+// third, 109 for a third more time on EB Garamond (docs/fairing.md, stops 76 and 77). Only a contour its first fairing took at most two tries (fair_within_budgets) to
 // fair, and each fairing again stops there: of whole DejaVu Sans's contours that took more
 // (another basis, a kink pass), none came out better, and they took most of the time. Not on
 // handwriting, whose bar is a share of its joins, which it meets.
@@ -800,7 +800,7 @@ struct Refairing {
   double more_reserve_units = 0.0;  ///< added to FairSettings::rounding_reserve_units
   double tolerance_scale = 1.0;     ///< of FairSettings::tolerance_units
 };
-constexpr std::array<Refairing, 3> refairings{{{0.25, 1.0}, {0.5, 1.0}, {0.0, 0.9}}};
+constexpr std::array<Refairing, 4> refairings{{{0.25, 1.0}, {0.5, 1.0}, {0.0, 0.9}, {0.5, 0.9}}};
 constexpr int most_tries_faired_again = 2;
 
 }  // namespace
