@@ -792,10 +792,11 @@ ContourFairing fair_contour_once(const Contour& source, const FairSettings& requ
 // then a whole unit, each only while faults are left. a–z A–Z, the ten text fonts still
 // jumping: g2-jumps 161 with the first alone, 137 with the first again, 115 with the second,
 // 111 with the third (Carlito 1 → 0), 102 with the fourth; 0.8 of the tolerance after the
-// third, 109 for a third more time on EB Garamond (docs/fairing.md, stops 76 and 77). Only a contour its first fairing took at most two tries (fair_within_budgets) to
-// fair, and each fairing again stops there: of whole DejaVu Sans's contours that took more
-// (another basis, a kink pass), none came out better, and they took most of the time. Not on
-// handwriting, whose bar is a share of its joins, which it meets.
+// third, 109 for a third more time on EB Garamond (docs/fairing.md, stops 76 and 77). Only a
+// contour its first fairing took at most two tries (fair_within_budgets) to fair, and each
+// fairing again stops there: of whole DejaVu Sans's contours that took more (another basis, a
+// kink pass), none came out better, and they took most of the time. Not on handwriting, whose
+// bar is a share of its joins, which it meets.
 struct Refairing {
   double more_reserve_units = 0.0;  ///< added to FairSettings::rounding_reserve_units
   double tolerance_scale = 1.0;     ///< of FairSettings::tolerance_units
@@ -813,16 +814,17 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& requested
   if (!out.faired || first.made > most_tries_faired_again || settings.profile != FairProfile::text ||
       settings.rounding != Rounding::integers)
     return out;
-  OutlineFaults faults = outline_faults(out.contour, source, settings.units_per_em);
+  const FaultCounter counter(source, settings.units_per_em);
+  OutlineFaults faults = counter.count(out.contour);
   for (const Refairing& r : refairings) {
-    if (faults.jumps + faults.kinks == 0) break;
+    if (faults.at_smooth_joins() == 0) break;
     FairSettings again_settings = settings;
     again_settings.rounding_reserve_units += r.more_reserve_units;
     again_settings.tolerance_units *= r.tolerance_scale;
     Tries again_tries{0, first.made, true};
     ContourFairing again = fair_contour_once(source, again_settings, again_tries);
     if (!again.faired) continue;
-    const OutlineFaults again_faults = outline_faults(again.contour, source, settings.units_per_em);
+    const OutlineFaults again_faults = counter.count(again.contour);
     if (fewer_faults(again_faults, faults)) out = std::move(again), faults = again_faults;
   }
   return out;
