@@ -330,7 +330,7 @@ Attempt fair_with_budgets(const ContourPlan& plan, const FairSettings& settings,
       ends.end_corner = k + 1 == chains && !run.closed && run.end.kind == RunEndKind::corner;
       ends.end_axis = flat_axis[k];
       if (k > 0 || (run.closed && chains > 1)) ends.start_axis = flat_axis[(k + chains - 1) % chains];
-      ChainCubics cubics = write_chain_as_cubics(chain, budgets.cubic, settings.flat_curvature, ends, cutting);
+      ChainCubics cubics = write_chain_as_cubics(chain, budgets.cubic, settings.flat_curvature(), ends, cutting);
       a.g1_nodes += cubics.g1_fallbacks;
       const bool join_smooth = k > 0 || start_smooth || previous_ends_smooth;
       record_chain(chain, chain.closed || join_smooth, a.pieces);
@@ -420,7 +420,7 @@ G3CubicReport carry_g3_into_cubics(std::vector<OutlineNode>& nodes, bool closed,
   std::size_t cubics = 0;
   for (const OutlineNode& node : nodes) cubics += node.out_handle.has_value();
   const int budget = g3_node_budget(cubics, nodes.size(), source_nodes, g3_node_share, most_nodes_share);
-  return make_cubics_g3(nodes, closed, allowance, {settings.flat_curvature, budget});
+  return make_cubics_g3(nodes, closed, allowance, {settings.flat_curvature(), budget});
 }
 
 // On the grid, curves meeting lines that lean a little off an axis join them through a fillet
@@ -447,7 +447,9 @@ void fillet_leaning_lines(std::vector<OutlineNode>& nodes, bool closed, const Sa
 struct Tries {
   int made = 0;
   int most = std::numeric_limits<int>::max();
-  bool again = false;
+  /// Whether a rounding that strays is rounded again on halved allowances (false: the plan is
+  /// given up after the rounding with its lines' ends kept within their allowance).
+  bool halving_allowances = true;
 };
 
 // The contour faired on one plan: the budgets halved once when the first try strays, the
@@ -499,7 +501,7 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
       const bool hand = settings.profile == FairProfile::handwriting;
       const bool g3 = settings.continuity == Continuity::g3;
       HandleStepLimits limits;
-      limits.flat_curvature = settings.flat_curvature;
+      limits.flat_curvature = settings.flat_curvature();
       limits.allowance = 0.95 * (settings.tolerance_units - d);
       limits.polish_rounds = hand ? handwriting_polish_rounds : g3 ? text_g3_polish_rounds : text_polish_rounds;
       limits.polish_only_at_jumps = g3 && !hand;
@@ -531,7 +533,7 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
       for (const ToleranceBand* within : bands) {
         limits = first;
         limits.band = within;
-        const int last_retry = within || tries.again ? 1 : 4 * rounding_retries + 1;
+        const int last_retry = within || !tries.halving_allowances ? 1 : 4 * rounding_retries + 1;
         std::vector<std::size_t> strayed;  // the cubics about where the last rounding strayed
         for (int retry = 0;; ++retry) {
           limits.any_grid_neighbour = retry % 2 == 0;
@@ -821,7 +823,7 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& requested
     FairSettings again_settings = settings;
     again_settings.rounding_reserve_units += r.more_reserve_units;
     again_settings.tolerance_units *= r.tolerance_scale;
-    Tries again_tries{0, first.made, true};
+    Tries again_tries{0, first.made, false};
     ContourFairing again = fair_contour_once(source, again_settings, again_tries);
     if (!again.faired) continue;
     const OutlineFaults again_faults = counter.count(again.contour);

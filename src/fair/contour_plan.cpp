@@ -119,30 +119,31 @@ ContourPlan plan_contour(const Contour& source, std::span<const std::size_t> smo
   const double tangential_line = radians(options.tangential_line_deg);
   const bool corners_stay = options.corners_stay;
 
-  // The curve's tangent at the join in front of piece i where that join is a corner opened
-  // against its line (opened_against_line).
-  std::vector<std::optional<Vec2>> opened(n);
-  // The kind of the join in front of piece i (between piece i−1 and i); nullopt when smooth
-  // between two curves.
-  auto break_before = [&](std::size_t i) -> std::optional<RunEndKind> {
-    if (!contour.closed && i == 0) return RunEndKind::corner;
+  // The join in front of piece i (between piece i−1 and i): its kind, nullopt when smooth
+  // between two curves, and the curve's tangent there where it is a corner opened against its
+  // line (opened_against_line).
+  struct JoinPlan {
+    std::optional<RunEndKind> kind;
+    std::optional<Vec2> opened;
+  };
+  auto join_before = [&](std::size_t i) -> JoinPlan {
+    if (!contour.closed && i == 0) return {RunEndKind::corner, std::nullopt};
     const Piece& a = pieces[(i + n - 1) % n];
     const Piece& b = pieces[i];
-    if (a.straight && b.straight) return RunEndKind::corner;
+    if (a.straight && b.straight) return {RunEndKind::corner, std::nullopt};
     const Vec2 ta = drawn_tangent(a.segment, SegmentEnd::end), tb = drawn_tangent(b.segment, SegmentEnd::start);
     const std::optional<bool> flag = contour.nodes[b.source_node].smooth;
     const double angle = std::abs(turning_angle(ta, tb));
     // A curve meets a line tangentially only within the kink limit: bending a curve that leaves
     // a line at 10° into the line's direction would put a bump where the designer drew none.
     const bool line_join = a.straight || b.straight;
-    if (options.open_against_lines && !made_smooth(b.source_node) && !flag)
-      opened[i] = opened_against_line(a, b, ta, tb);
+    std::optional<Vec2> opened;
+    if (options.open_against_lines && !made_smooth(b.source_node) && !flag) opened = opened_against_line(a, b, ta, tb);
     const bool is_corner = made_smooth(b.source_node) ? false
                            : flag                     ? !*flag
-                                                      : opened[i] || angle > (line_join ? std::min(corner, tangential_line) : corner);
-    if (is_corner) return RunEndKind::corner;
-    if (line_join) return RunEndKind::line;
-    return std::nullopt;
+                                                      : opened || angle > (line_join ? std::min(corner, tangential_line) : corner);
+    if (is_corner) return {RunEndKind::corner, opened};
+    return {line_join ? std::optional{RunEndKind::line} : std::nullopt, opened};
   };
 
   // The share of a line a run meeting it may take, by the kind of the line's far join.
@@ -151,7 +152,12 @@ ContourPlan plan_contour(const Contour& source, std::span<const std::size_t> smo
     return far_join == RunEndKind::line ? 0.5 * length : length;
   };
   std::vector<std::optional<RunEndKind>> breaks(n);
-  for (std::size_t i = 0; i < n; ++i) breaks[i] = break_before(i);
+  std::vector<std::optional<Vec2>> opened(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const JoinPlan join = join_before(i);
+    breaks[i] = join.kind;
+    opened[i] = join.opened;
+  }
   const std::size_t first = static_cast<std::size_t>(
       std::find_if(breaks.begin(), breaks.end(), [](const auto& b) { return b.has_value(); }) - breaks.begin());
   if (first == n) {  // one closed run

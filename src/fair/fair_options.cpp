@@ -14,7 +14,6 @@ FairSettings resolve_settings(const FairOptions& options, double units_per_em) {
   s.tolerance_units = options.tolerance_units.value_or((hand ? 0.012 : 0.00125) * units_per_em);
   s.corner_angle_deg = options.corner_angle_deg.value_or(hand ? 30.0 : 3.0);
   s.units_per_em = units_per_em;
-  s.flat_curvature = 0.5 / units_per_em;
   s.chain_share = hand ? 0.7 : 0.4;
   s.feature_window_units = hand ? 0.03 * units_per_em : 0.004 * units_per_em;
   if (hand) s.guide_lobes = {std::numbers::pi / 6.0, 0.3 / units_per_em};

@@ -48,11 +48,11 @@ struct FairSettings {
   /// extrema: wobbles shorter than this are not features.
   double feature_window_units = 5.0;
   Rounding rounding = Rounding::as_source;
-  /// |κ| (1/unit) of half a unit per em: flatter curves are compared by the difference of
-  /// their curvatures, not the ratio (the check's g2-jump rule).
-  double flat_curvature = 5e-4;
   /// The em the settings were resolved for (the check's rules are per em).
   double units_per_em = 1000.0;
+  /// |κ| (1/unit) of half a unit per em: flatter curves are compared by the difference of
+  /// their curvatures, not the ratio (the check's g2-jump rule).
+  double flat_curvature() const { return 0.5 / units_per_em; }
   /// Of the tolerance, what the fairing leaves rounding to the grid (units; none without
   /// rounding): half a unit, what rounding moves a point, and room for the handle steps.
   double rounding_reserve_units = 0.5;

@@ -966,7 +966,7 @@ LacPoint FairedChain::end_frame() const {
 namespace {
 
 // |κ| under which G3 counts no sign: the check's |κ|·UPM of 1e-6.
-double unsigned_curvature(const FairSettings& settings) { return 2e-6 * settings.flat_curvature; }
+double unsigned_curvature(const FairSettings& settings) { return 2e-6 * settings.flat_curvature(); }
 
 // The run faired on `guide` (its smoothing guide) or, without one, on its source itself, in at
 // most `rounds` rounds from `junctions` (on the guide's arc length where there is one);

@@ -240,7 +240,7 @@ TEST(G3Fairing, RoundedTheCubicsStayG2AndKeepPartOfG3) {
         if (!a || !b || std::abs(turning_angle(*a, *b)) > 0.05 * std::numbers::pi / 180.0) continue;
         const double k1 = end_curvature(into, SegmentEnd::end).curvature.value_or(0.0);
         const double k2 = end_curvature(out_of, SegmentEnd::start).curvature.value_or(0.0);
-        const double flat = settings.flat_curvature;  // half a unit per em: compared by difference
+        const double flat = settings.flat_curvature();  // half a unit per em: compared by difference
         EXPECT_LE(std::abs(k1 - k2) / std::max({std::abs(k1), std::abs(k2), flat}), 0.05) << name << " join " << i;
       }
     const std::vector<double> j = cubic_slope_jumps(g3.glyph.outline.contours);
