@@ -143,7 +143,7 @@ ContourPlan plan_contour(const Contour& source, std::span<const std::size_t> smo
                            : flag                     ? !*flag
                                                       : opened || angle > (line_join ? std::min(corner, tangential_line) : corner);
     if (is_corner) return {RunEndKind::corner, opened};
-    return {line_join ? std::optional{RunEndKind::line} : std::nullopt, opened};
+    return {line_join ? std::optional{RunEndKind::line} : std::nullopt, std::nullopt};  // opened is a corner
   };
 
   // The share of a line a run meeting it may take, by the kind of the line's far join.
