@@ -49,10 +49,6 @@ OutlineFaults FaultCounter::count(const Contour& faired) const {
   return out;
 }
 
-OutlineFaults outline_faults(const Contour& faired, const Contour& source, double units_per_em) {
-  return FaultCounter(source, units_per_em).count(faired);
-}
-
 bool fewer_faults(const OutlineFaults& a, const OutlineFaults& b) {
   return a.at_smooth_joins() < b.at_smooth_joins() && a.kinks <= b.kinks && a.inflections <= b.inflections &&
          a.corners_lost <= b.corners_lost;

@@ -30,9 +30,6 @@ class FaultCounter {
   double units_per_em_;
 };
 
-/// The faults of `faired`, the fairing of `source`: FaultCounter(source, units_per_em).count(faired).
-OutlineFaults outline_faults(const Contour& faired, const Contour& source, double units_per_em);
-
 /// Whether `a` has fewer jumps and kinks together than `b`, and no more kinks, inflections or
 /// lost corners: a curvature jump is not traded for a broken tangent, a new inflection or a
 /// corner rounded off.

@@ -30,21 +30,21 @@ void expect_faults(const OutlineFaults& f, const OutlineFaults& want) {
   EXPECT_EQ(f.corners_lost, want.corners_lost);
 }
 
-TEST(OutlineFaults, ASquareHasNone) { expect_faults(outline_faults(square, square, upm), {}); }
+TEST(OutlineFaults, ASquareHasNone) { expect_faults(FaultCounter(square, upm).count(square), {}); }
 
 TEST(OutlineFaults, ACurveLeavingALineBentHasAJump) {
   // The cubic leaves the baseline tangentially with κ = (2/3)·(30·10)/30³ = 1/135 (κ·UPM 7.4)
   // against the line's 0; its far end is a corner, as are the lines' other ends.
   const Contour c = closed({Line{{{0, 0}, {100, 0}}}, Cubic{{{100, 0}, {130, 0}, {150, 10}, {160, 30}}},
                             Line{{{160, 30}, {0, 100}}}, Line{{{0, 100}, {0, 0}}}});
-  expect_faults(outline_faults(c, c, upm), {.jumps = 1});
+  expect_faults(FaultCounter(c, upm).count(c), {.jumps = 1});
 }
 
 TEST(OutlineFaults, ATangentBrokenByADegreeIsAKink) {
   const double rise = 100.0 * std::tan(std::numbers::pi / 180.0);
   const Contour c = closed({Line{{{0, 0}, {100, 0}}}, Line{{{100, 0}, {200, rise}}}, Line{{{200, rise}, {200, 100}}},
                             Line{{{200, 100}, {0, 0}}}});
-  expect_faults(outline_faults(c, c, upm), {.kinks = 1});
+  expect_faults(FaultCounter(c, upm).count(c), {.kinks = 1});
 }
 
 TEST(OutlineFaults, AnSCurveHasAnInflectionAndARoundedCornerIsLost) {
@@ -55,7 +55,7 @@ TEST(OutlineFaults, AnSCurveHasAnInflectionAndARoundedCornerIsLost) {
                             Cubic{{{100, 80}, {100, 91}, {91, 100}, {80, 100}}}, Line{{{80, 100}, {0, 100}}},
                             Line{{{0, 100}, {0, 0}}}});
   // (100, 100) lost; (0, 0) and (100, 0) stay corners, turning by 90° less the S's 22°.
-  expect_faults(outline_faults(c, square, upm), {.jumps = 2, .inflections = 1, .corners_lost = 1});
+  expect_faults(FaultCounter(square, upm).count(c), {.jumps = 2, .inflections = 1, .corners_lost = 1});
 }
 
 TEST(OutlineFaults, FewerJumpsAreBetterOnlyWithNoMoreOfTheRest) {
