@@ -715,8 +715,8 @@ void expect_faired_without_faults(const std::string& font, const std::string& gl
 TEST(ContourFairing, AContourThatKeepsAJumpIsFairedAgainWithMoreRoomForRounding) {
   // Gentium Plus's X, rounded: faired leaving rounding half a unit of its 2.56-unit tolerance,
   // the curve at the lower left arm's foot left its (5, 8) line with κ·UPM 17.9. Faired again
-  // leaving rounding 0.75 units (fair_contour's second try), the glyph has no jump, and no
-  // kink or lost corner in its place.
+  // leaving rounding 0.75 units (the first of fair_contour's refairings), the glyph has no
+  // jump, and no kink or lost corner in its place.
   expect_faired_without_faults(test::gentium_plus, "X");
 }
 
