@@ -509,6 +509,7 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
       limits.flat_node_reach = hand ? 0.0 : text_flat_node_reach;
       limits.slope_jump_weight = !g3 ? 0.0 : hand ? handwriting_slope_jump_weight : text_slope_jump_weight;
       limits.counted_jump_cost = g3 && !hand ? text_counted_jump_cost : 0.0;
+      limits.seats_beside_lines = g3;
       limits.allowance_by_cubic = tolerance_left(by_segment, settings.tolerance_units, 0.0);
       // Rounding can stray past its allowance where it slides a line's end (line_rounding) and
       // the handles after it take other whole steps (DejaVu Sans's chi: 4.4 units from the

@@ -57,6 +57,8 @@ class CubicJudge {
   bool match_slopes() const { return slope_jump_weight_ > 0.0; }
   /// HandleStepLimits::inflection_handles.
   bool inflection_handles() const { return inflection_handles_; }
+  /// HandleStepLimits::seats_beside_lines.
+  bool seats_beside_lines() const { return seats_beside_lines_; }
   /// The turns of κ at the node between cubics h and i beyond the unrounded outline's there
   /// (`unrounded_turns`, unrounded_node_turns(h, i)), each node_turn_weight; none unless
   /// HandleStepLimits::node_turns.
@@ -118,8 +120,11 @@ class CubicJudge {
   double slid_distance(std::size_t i, const Cubic& c, double within);
 
   // Cubic i's unrounded self with the unrounded cubics it joins smoothly, along the outline:
-  // `points`, of which [own_first, own_last] are its own. Built when first asked for (most
-  // cubics stay within their allowance).
+  // `points`, of which [own_first, own_last] are its own. A lone cubic between two lines has
+  // the lines' stretches near its joins instead: where it meets them with κ = 0 on the grid
+  // may be a stretch of line away from where it did unrounded (Noto Sans's W: its curve
+  // reaches 8 units farther up the line to the apex, its handles then long enough). Built
+  // when first asked for (most cubics stay within their allowance).
   struct Stretch {
     std::vector<Vec2> points;
     std::size_t own_first = 0, own_last = 0;
@@ -139,13 +144,15 @@ class CubicJudge {
   double hysteresis_ = 0.0;
   std::vector<CubicTraits> ideal_;
   std::vector<std::map<std::array<double, 8>, CubicTraits>> seen_;
-  bool inflection_handles_, node_turns_;
+  bool inflection_handles_, node_turns_, seats_beside_lines_;
   double slope_jump_weight_, counted_jump_cost_;
   const ToleranceBand* band_;
   std::vector<std::size_t> band_pieces_;  ///< the band's piece for each cubic
   std::vector<bool> keeps_corner_;
   bool closed_;
   std::vector<bool> joins_before_;                 ///< whether node i joins two cubics smoothly
+  /// For a cubic between two lines it meets smoothly, the lines' unrounded far ends.
+  std::vector<std::optional<std::array<Vec2, 2>>> lone_lines_;
   std::vector<Stretch> along_outline_;             ///< along_outline(i), once asked for
 };
 

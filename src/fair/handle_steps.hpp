@@ -86,6 +86,12 @@ struct HandleStepLimits {
   /// without breaking G2 (DejaVu Sans a–z A–Z at slope_jump_weight 3: g2-jumps 0 → 1 without
   /// it, 0 with it).
   double counted_jump_cost = 0.0;
+  /// A line join's far node (fair/node_seats, seat_line_joins) may also seat its handle at the
+  /// whole steps either side of the line, not only exactly on it. --continuity g3 only: Lato's M
+  /// and W, where no node of the curves from the apex lines seats its handle on the line, keep
+  /// κ·UPM 0.34 and 0.08 at the join without; under G2 Lato a–z A–Z gained a jump with it and
+  /// Comic Neue took twice the time.
+  bool seats_beside_lines = false;
 
   /// Where positive, a smooth node flat on both sides before rounding (κ = 0 there: an
   /// inflection, or a nearly straight stretch) whose nearest grid direction turns its tangent

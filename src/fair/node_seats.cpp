@@ -180,26 +180,30 @@ std::vector<std::size_t> seat_line_joins(std::vector<OutlineNode>& nodes, const 
     double best_cost = change.cost();
     std::optional<std::pair<OutlineNode, Vec2>> best;
     std::optional<Vec2> best_step;
-    // Sides up to 16: only a step that lands on the line is taken, not one set by curvature.
+    // Sides up to 16: only a step that lands on the line (or beside it) is taken, not one set
+    // by curvature.
+    const auto line_handles = [&](Vec2 p, Vec2 d) {
+      if (judge.seats_beside_lines()) return handles_near_line(p, d, sign, join.point, into);
+      const std::optional<double> m = whole_steps_to_line(p, d, sign, join.point, into);
+      return m ? std::vector<Vec2>{p + d * (sign * *m)} : std::vector<Vec2>{};
+    };
     for (const Vec2 d : node_directions(*steps[i], target, 16))
-      for (const Vec2 p : node_places(kept.point, target.point, 2)) {
-        const std::optional<double> m = whole_steps_to_line(p, d, sign, join.point, into);
-        if (!m) continue;
-        const Vec2 on_line = p + d * (sign * *m);
-        if (sign * dot(on_line - join.point, into) >= 0.0) continue;  // on i's side of the join
-        const double m_other = handle_steps_along(target, d, before);
-        nodes[i].point = p;
-        (before ? nodes[i].in_handle : nodes[i].out_handle) = on_line;
-        for (int b = -handle_reach; b <= handle_reach; ++b) {
-          if (m_other + b < 1.0) continue;
-          (before ? nodes[i].out_handle : nodes[i].in_handle) = p - d * (sign * (m_other + b));
-          for (const Vec2 f : fars) {
-            far_handle = f;
-            if (const std::optional<double> c = change.cost_under(best_cost))
-              best_cost = *c, best = {nodes[i], f}, best_step = d;
+      for (const Vec2 p : node_places(kept.point, target.point, 2))
+        for (const Vec2 on_line : line_handles(p, d)) {
+          if (sign * dot(on_line - join.point, into) >= 0.0) continue;  // on i's side of the join
+          const double m_other = handle_steps_along(target, d, before);
+          nodes[i].point = p;
+          (before ? nodes[i].in_handle : nodes[i].out_handle) = on_line;
+          for (int b = -handle_reach; b <= handle_reach; ++b) {
+            if (m_other + b < 1.0) continue;
+            (before ? nodes[i].out_handle : nodes[i].in_handle) = p - d * (sign * (m_other + b));
+            for (const Vec2 f : fars) {
+              far_handle = f;
+              if (const std::optional<double> c = change.cost_under(best_cost))
+                best_cost = *c, best = {nodes[i], f}, best_step = d;
+            }
           }
         }
-      }
     nodes[i] = best ? best->first : kept;
     far_handle = best ? best->second : kept_far;
     if (!best) continue;

@@ -769,6 +769,27 @@ TEST(ContourFairing, ANodeSlidesAlongTheOutlineWhereTheBandAroundTheSourceHoldsI
   expect_faired_g2(test::noto_sans, "h");
 }
 
+TEST(ContourFairing, ALoneCubicBetweenTwoLinesIsJudgedAlongThem) {
+  // Noto Sans's W: a curve of 4° between a stroke's line and the short line up to the middle
+  // apex, which needs κ = 0 at both joins. Rounding had slid the curve's end 40 units down the
+  // apex line, leaving κ·UPM −0.19 there. A curve reaching 8 units farther up that line than
+  // unrounded has handles long enough for κ·UPM under 0.03 at both joins; measured against
+  // the unrounded cubic alone, not the lines beside it, it "moved" 13 units and was refused.
+  expect_faired_g2(test::noto_sans, "W");
+}
+
+TEST(ContourFairing, UnderG3ACurveLeavingALineMaySeatItsFarHandleBesideTheLine) {
+  // Lato's M under --continuity g3: where the curves leave the lines up to the apexes, no place
+  // of their far nodes put a handle a whole step exactly on the line, and one cap kept κ·UPM
+  // 0.34 at its join. Under G3 those nodes also try the whole steps either side of the line.
+  FairOptions options = options_for(FairProfile::text, Rounding::integers);
+  options.continuity = Continuity::g3;
+  const FairedGlyph f = fair_named(test::lato, "M", options);
+  ASSERT_TRUE(f.result.kept.empty()) << f.result.kept.front();
+  EXPECT_LE(f.result.deviation, f.settings.tolerance_units);
+  EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm), 0);
+}
+
 TEST(ContourFairing, ATailThatOvershootsTheHorizontalIsFlatAtItsInflection) {
   // Lato's j: the tail's tip turns past the horizontal by a degree before the inflection into
   // the bowl, so the faired curve had two horizontal extrema 0.9 units apart across it, each a
