@@ -64,13 +64,13 @@ int turns_at_node(const CubicTraits& before, const CubicTraits& after, double hy
 CubicJudge::CubicJudge(const std::vector<OutlineNode>& rounded, const std::vector<OutlineNode>& ideal,
                        const OutlineJoins& joins, const HandleStepLimits& limits)
     : unrounded_(rounded.size()), allowed_(rounded.size(), 0.0), ideal_(rounded.size()), seen_(rounded.size()),
-      inflection_handles_(limits.inflection_handles), node_turns_(limits.node_turns),
-      seats_beside_lines_(limits.seats_beside_lines), slope_jump_weight_(limits.slope_jump_weight),
+      inflection_handles_(limits.inflection_handles), node_turns_(limits.node_turns), slope_jump_weight_(limits.slope_jump_weight),
       counted_jump_cost_(limits.counted_jump_cost), band_(limits.band), band_pieces_(rounded.size()),
       keeps_corner_(rounded.size(), false), closed_(joins.closed), joins_before_(rounded.size(), false),
       lone_lines_(rounded.size()), along_outline_(rounded.size()) {
-  for (std::size_t i = 0; i < rounded.size(); ++i) band_pieces_[i] = limits.band_piece(i);
-  for (std::size_t i = 0; i < rounded.size(); ++i) {
+  const std::size_t n = rounded.size();
+  for (std::size_t i = 0; i < n; ++i) band_pieces_[i] = limits.band_piece(i);
+  for (std::size_t i = 0; i < n; ++i) {
     if (!joins.is_cubic(i)) continue;
     unrounded_[i] = along_lines(outline_cubic(ideal, i), rounded, i, joins);
     const double allowance = limits.allowance_at(i);
@@ -78,14 +78,13 @@ CubicJudge::CubicJudge(const std::vector<OutlineNode>& rounded, const std::vecto
     // κ turns count from 1 % of the outline's largest unrounded |κ|, as the check counts them.
     hysteresis_ = std::max(hysteresis_, 0.01 * curvature_shape(unrounded_[i], 0.0).largest);
   }
-  const std::size_t n = rounded.size();
   for (std::size_t i = 0; i < n; ++i) joins_before_[i] = joins.joins_cubics(i);
   for (std::size_t i = 0; i < n; ++i)
     if (joins.is_cubic(i) && joins.meets_line(i) && joins.meets_line((i + 1) % n))
       lone_lines_[i] = std::array{ideal[(i + n - 1) % n].point, ideal[(i + 2) % n].point};
-  for (std::size_t i = 0; i < rounded.size(); ++i)
+  for (std::size_t i = 0; i < n; ++i)
     if (joins.is_cubic(i)) ideal_[i] = measure(i, unrounded_[i]);
-  for (std::size_t k = 0; k < rounded.size(); ++k) keeps_corner_[k] = corner_to_keep(ideal, closed_, k);
+  for (std::size_t k = 0; k < n; ++k) keeps_corner_[k] = corner_to_keep(ideal, closed_, k);
 }
 
 double CubicJudge::slid_distance(std::size_t i, const Cubic& c, double within) {

@@ -57,8 +57,6 @@ class CubicJudge {
   bool match_slopes() const { return slope_jump_weight_ > 0.0; }
   /// HandleStepLimits::inflection_handles.
   bool inflection_handles() const { return inflection_handles_; }
-  /// HandleStepLimits::seats_beside_lines.
-  bool seats_beside_lines() const { return seats_beside_lines_; }
   /// The turns of κ at the node between cubics h and i beyond the unrounded outline's there
   /// (`unrounded_turns`, unrounded_node_turns(h, i)), each node_turn_weight; none unless
   /// HandleStepLimits::node_turns.
@@ -144,7 +142,7 @@ class CubicJudge {
   double hysteresis_ = 0.0;
   std::vector<CubicTraits> ideal_;
   std::vector<std::map<std::array<double, 8>, CubicTraits>> seen_;
-  bool inflection_handles_, node_turns_, seats_beside_lines_;
+  bool inflection_handles_, node_turns_;
   double slope_jump_weight_, counted_jump_cost_;
   const ToleranceBand* band_;
   std::vector<std::size_t> band_pieces_;  ///< the band's piece for each cubic

@@ -206,7 +206,8 @@ void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<Outl
       again[run_of[i]] = true;
     for (const std::size_t i : seat_flat_nodes(nodes, ideal, steps, joins, inside, judge, limits.flat_curvature))
       again[run_of[i]] = true;
-    for (const std::size_t i : seat_line_joins(nodes, ideal, steps, joins, inside, judge, limits.flat_curvature))
+    for (const std::size_t i :
+         seat_line_joins(nodes, ideal, steps, joins, inside, judge, limits.flat_curvature, limits.seats_beside_lines))
       again[run_of[i]] = true;
     for (const std::size_t i : slide_line_joins(nodes, entry, steps, joins, judge, limits.flat_curvature))
       for (const std::size_t r : {run_of[i], run_starting_at[i]})

@@ -154,7 +154,8 @@ std::vector<std::size_t> seat_flat_nodes(std::vector<OutlineNode>& nodes, const 
 
 std::vector<std::size_t> seat_line_joins(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal,
                                          std::vector<std::optional<Vec2>>& steps, const OutlineJoins& joins,
-                                         std::span<const std::size_t> candidates, CubicJudge& judge, double flat) {
+                                         std::span<const std::size_t> candidates, CubicJudge& judge, double flat,
+                                         bool beside_lines) {
   std::vector<std::size_t> seated;
   for (const std::size_t i : candidates) {
     if (!joins.joins_cubics(i) || !steps[i]) continue;
@@ -183,7 +184,7 @@ std::vector<std::size_t> seat_line_joins(std::vector<OutlineNode>& nodes, const 
     // Sides up to 16: only a step that lands on the line (or beside it) is taken, not one set
     // by curvature.
     const auto line_handles = [&](Vec2 p, Vec2 d) {
-      if (judge.seats_beside_lines()) return handles_near_line(p, d, sign, join.point, into);
+      if (beside_lines) return handles_near_line(p, d, sign, join.point, into);
       const std::optional<double> m = whole_steps_to_line(p, d, sign, join.point, into);
       return m ? std::vector<Vec2>{p + d * (sign * *m)} : std::vector<Vec2>{};
     };

@@ -45,11 +45,13 @@ std::vector<std::size_t> seat_flat_nodes(std::vector<OutlineNode>& nodes, const 
 /// passes a whole step of a horizontal handle every four units of height: Lato's c, whose cap
 /// seats two units down) and, unless it is an extremum, in the primitive
 /// directions within `grid_turn` of its tangent, for one whose handle line crosses the line at a whole
-/// step on its side of the join; that handle goes there, the node's other handle a step or three
-/// either way. Returns the nodes it moved (their directions changed in `steps`).
+/// step on its side of the join (with `beside_lines`, HandleStepLimits::seats_beside_lines, also
+/// at the whole steps either side of the line); that handle goes there, the node's other handle
+/// a step or three either way. Returns the nodes it moved (their directions changed in `steps`).
 std::vector<std::size_t> seat_line_joins(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal,
                                          std::vector<std::optional<Vec2>>& steps, const OutlineJoins& joins,
-                                         std::span<const std::size_t> candidates, CubicJudge& judge, double flat);
+                                         std::span<const std::size_t> candidates, CubicJudge& judge, double flat,
+                                         bool beside_lines);
 
 /// A curve whose far handle misses its line leaves the line with κ = (2/3)·d/h² (d the far
 /// handle's offset from the line, h the near handle's length), and on a slanted line the grid
