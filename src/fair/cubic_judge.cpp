@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 #include <span>
+#include <vector>
 
 #include "geom/curvature.hpp"
 #include "geom/polyline_distance.hpp"
@@ -16,6 +17,16 @@ constexpr int slide_samples = 24;      // points per cubic where a node's slide 
 // for every cubic meeting a line, the passes slid more joins along their lines and left more
 // jumps elsewhere (a–z A–Z: TeX Gyre Pagella 10 → 15, EB Garamond 55 → 60, Lato 0 → 1).
 constexpr double line_stretch = 48.0;
+
+// A line from a join towards its far end: a point a unit for line_stretch units, then the far end.
+std::vector<Vec2> line_from(Vec2 join, Vec2 far) {
+  const double length = distance(join, far);
+  const int units = static_cast<int>(std::min(length, line_stretch));
+  std::vector<Vec2> run{join};
+  for (int k = 1; k <= units; ++k) run.push_back(join + (far - join) * (k / length));
+  if (length > units) run.push_back(far);
+  return run;
+}
 
 // The unrounded cubic i with each end that meets a line moved along its tangent as far as
 // rounding moved that end along it (line_rounding slides a curve's end along its line, its
@@ -112,16 +123,6 @@ const CubicJudge::Stretch& CubicJudge::along_outline(std::size_t i) {
   const auto add = [&](const Cubic& c) {
     for (int t = along.points.empty() ? 0 : 1; t <= slide_samples; ++t)
       along.points.push_back(c.point_at(double(t) / slide_samples));
-  };
-  // A line from the join towards its far end: a point a unit for line_stretch units, then the
-  // far end.
-  const auto line_from = [](Vec2 join, Vec2 far) {
-    const double length = distance(join, far);
-    const int units = static_cast<int>(std::min(length, line_stretch));
-    std::vector<Vec2> run{join};
-    for (int k = 1; k <= units; ++k) run.push_back(join + (far - join) * (k / length));
-    if (length > units) run.push_back(far);
-    return run;
   };
   const Cubic& own = unrounded_[i];
   if (joins_before_[i]) add(unrounded_[(i + n - 1) % n]);
