@@ -24,6 +24,8 @@ inline const std::string comic_neue = fonts + "/ComicNeue/ComicNeue-Regular-subs
 inline const std::string linux_libertine = fonts + "/LinuxLibertine/LinLibertine_R-subset.otf";  // d, g, D, M, T, Z
 // dkg handwriting's T, renamed (its licence reserves the name)
 inline const std::string handwriting_probe = fonts + "/HandwritingProbe/GlyphfairProbeHandwriting-T.ttf";
+// Liberation Sans 2.1's M, renamed (its licence reserves the name)
+inline const std::string sans_probe = fonts + "/SansProbe/GlyphfairProbeSans-M.ttf";
 inline const std::string cff2_variable = fonts + "/Inter/GlyphfairProbe-CFF2.var.otf";
 
 }  // namespace gf::test

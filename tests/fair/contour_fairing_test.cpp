@@ -778,6 +778,18 @@ TEST(ContourFairing, ALoneCubicBetweenTwoLinesIsJudgedAlongThem) {
   expect_faired_g2(test::noto_sans, "W");
 }
 
+TEST(ContourFairing, ACurveBendingHardIntoALineLeavesItFartherEarlier) {
+  // Liberation Sans 2.1's M: the curve from the inner vertex's corner bends into the right
+  // stem's line with κ·UPM 45 at the source's join, so its transition slide was a few units,
+  // drew no κ = 0 end there, and the run met the line G1 (κ·UPM −2.3 against 0), in floats
+  // as on the grid. Sliding twice as far and so on, within the line, draws it.
+  const FairedGlyph floats = fair_named(test::sans_probe, "M", options_for(FairProfile::text, Rounding::none));
+  ASSERT_TRUE(floats.result.kept.empty()) << floats.result.kept.front();
+  EXPECT_LE(floats.result.deviation, floats.settings.tolerance_units);
+  EXPECT_EQ(g2_jumps(floats.result.glyph.outline, floats.upm), 0);
+  expect_faired_g2(test::sans_probe, "M");
+}
+
 TEST(ContourFairing, UnderG3ACurveLeavingALineMaySeatItsFarHandleBesideTheLine) {
   // Lato's M under --continuity g3: where the curves leave the lines up to the apexes, no place
   // of their far nodes put a handle a whole step exactly on the line, and one cap kept κ·UPM
