@@ -64,11 +64,6 @@ constexpr double leaning_move_share = 0.25;
 // Of the writeback's budget, what making a run kept as drawn G1 at its kinks may move it
 // (drawn_nodes): the run is the source itself, and the rounding keeps its own reserve.
 constexpr double drawn_move_share = 0.5;
-// The shortest span the cubic writeback halves when the outline is rounded, units (else
-// shortest_span_units): cubics of two to four units land on a few grid points whose whole
-// steps cannot set their curvature (Breip's W and E, Because We Create's d, t and X kept jumps
-// there; halving from eight units leaves no cubic under four).
-constexpr double shortest_rounded_span = 8.0;
 
 // Points along a contour, dense enough that chords stay within a small fraction of a unit of
 // the curve for glyph-sized curvature, and for each the segment whose stretch of polyline (to
@@ -247,7 +242,7 @@ std::vector<OutlineNode> drawn_nodes(const SmoothRun& run, double most_move, Fai
 Attempt fair_with_budgets(const ContourPlan& plan, const FairSettings& settings, Budgets budgets, FairedRuns& cache,
                           bool after_run_failure, RunBasis basis, bool as_drawn = false) {
   Attempt a;
-  const SpanCutting cutting{settings.rounding == Rounding::integers ? shortest_rounded_span : shortest_span_units,
+  const SpanCutting cutting{settings.rounding == Rounding::integers ? settings.shortest_rounded_span_units : shortest_span_units,
                             settings.profile == FairProfile::handwriting};
   const std::size_t count = plan.pieces.size();
   std::vector<std::optional<FairedRun>> runs(count);
@@ -795,7 +790,12 @@ ContourFairing fair_contour_once(const Contour& source, const FairSettings& requ
 // then a whole unit, each only while faults are left. a–z A–Z, the ten text fonts still
 // jumping: g2-jumps 161 with the first alone, 137 with the first again, 115 with the second,
 // 111 with the third (Carlito 1 → 0), 102 with the fourth; 0.8 of the tolerance after the
-// third, 109 for a third more time on EB Garamond (docs/fairing.md, stops 76 and 77). Only a
+// third, 109 for a third more time on EB Garamond (docs/fairing.md, stops 76 and 77). Last,
+// with the writeback halving its spans down to twice its rounded shortest (16 units): a
+// stroke's edge bending back and forth by a unit or two, written as cubics of 5 to 7 units,
+// leaves whole steps no curvature to match (a–z A–Z of 27 fonts: EB Garamond's g2-jumps 57 →
+// 53, its W; Caladea's 3 → 1, its y; no other font changed; at 24 units 54 and 1; halving
+// so in every first fairing, EB Garamond 85). Only a
 // contour its first fairing took at most two tries (fair_within_budgets) to fair, and each
 // fairing again stops there: of whole DejaVu Sans's contours that took more (another basis, a
 // kink pass), none came out better, and they took most of the time. Not on handwriting, whose
@@ -803,8 +803,9 @@ ContourFairing fair_contour_once(const Contour& source, const FairSettings& requ
 struct Refairing {
   double more_reserve_units = 0.0;  ///< added to FairSettings::rounding_reserve_units
   double tolerance_scale = 1.0;     ///< of FairSettings::tolerance_units
+  double span_scale = 1.0;          ///< of FairSettings::shortest_rounded_span_units
 };
-constexpr std::array<Refairing, 4> refairings{{{0.25, 1.0}, {0.5, 1.0}, {0.0, 0.9}, {0.5, 0.9}}};
+constexpr std::array<Refairing, 5> refairings{{{0.25, 1.0}, {0.5, 1.0}, {0.0, 0.9}, {0.5, 0.9}, {0.0, 1.0, 2.0}}};
 constexpr int most_tries_faired_again = 2;
 
 }  // namespace
@@ -824,6 +825,7 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& requested
     FairSettings again_settings = settings;
     again_settings.rounding_reserve_units += r.more_reserve_units;
     again_settings.tolerance_units *= r.tolerance_scale;
+    again_settings.shortest_rounded_span_units *= r.span_scale;
     Tries again_tries{0, first.made, false};
     ContourFairing again = fair_contour_once(source, again_settings, again_tries);
     if (!again.faired) continue;

@@ -56,6 +56,11 @@ struct FairSettings {
   /// Of the tolerance, what the fairing leaves rounding to the grid (units; none without
   /// rounding): half a unit, what rounding moves a point, and room for the handle steps.
   double rounding_reserve_units = 0.5;
+  /// The shortest span the cubic writeback halves when the outline is rounded (units; else
+  /// fair/cubic_writeback's own): cubics of two to four units land on a few grid points whose
+  /// whole steps cannot set their curvature (Breip's W and E, Because We Create's d, t and X
+  /// kept jumps there; halving from eight units leaves no cubic under four).
+  double shortest_rounded_span_units = 8.0;
   /// The share of the tolerance (after rounding's reserve) the log-aesthetic chain may use;
   /// the cubics get the rest. Text 0.4; handwriting 0.7, where the chain follows a smoothed
   /// guide and the cubics follow the chain closely.

@@ -741,6 +741,17 @@ TEST(ContourFairing, AFlatNodeSeatsAlongALongDirectionAndLeavesTheCornerBesideIt
   EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm, std::pair{Vec2{-10.0, 630.0}, Vec2{1000.0, 670.0}}), 0);
 }
 
+TEST(ContourFairing, AContourStillJumpingIsFairedAgainWithLongerShortestSpans) {
+  // EB Garamond's W, rounded: the right leg's inner edge, bending back and forth by a unit or
+  // two above the baseline, came out of the writeback as cubics of 5 to 7 units (spans halved
+  // down to the shortest, 8 units), whose whole steps left κ·UPM 167 against −167 and 236
+  // against −59 at their nodes. Faired again with spans halved no shorter than 16 units, the
+  // stretch rounds G2.
+  FairedGlyph f;
+  expect_faired(test::eb_garamond, "W", FairProfile::text, &f);
+  EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm, std::pair{Vec2{620.0, -20.0}, Vec2{720.0, 260.0}}), 0);
+}
+
 TEST(ContourFairing, ACurveSlidesDownItsDiagonalLineUntilItLeavesItFlat) {
   // Lato's M: the right leg's line, step (16, 29), into a curve to the cap whose far handle,
   // whole steps of (2, 1), lies a quarter of a unit off the line at best: κ·UPM 0.073 at the
