@@ -69,6 +69,49 @@ std::optional<Vec2> opened_against_line(const Piece& a, const Piece& b, Vec2 ta,
   return a.straight ? direction_of(angle_of(ta) + opened) : direction_of(angle_of(tb) - opened);
 }
 
+// Whether the caller made the join in front of `node` smooth.
+bool is_made_smooth(std::span<const std::size_t> smooth_nodes, std::size_t node) {
+  return std::find(smooth_nodes.begin(), smooth_nodes.end(), node) != smooth_nodes.end();
+}
+
+// A line shorter than this (units), as short as the cubics rounding merges (grid_rounding)...
+constexpr double stub_line_units = 2.0;
+
+// ...that a curve meets tangentially (within `tangential` radians), with a corner (turning by
+// more than `corner`) or another such curve at its other end, is the curve's last stretch drawn
+// straight, not a line to meet with κ = 0: no curve leaves a one-unit line flat within it
+// (Linux Biolinum's f, whose crossbar's curve ends on a line of one unit into the stem's
+// corner, kept κ·UPM −0.73 there). It becomes a straight cubic of the curve's run.
+void absorb_stub_lines(std::vector<Piece>& pieces, const Contour& contour, std::span<const std::size_t> smooth_nodes,
+                       double tangential, double corner) {
+  const std::size_t n = pieces.size();
+  if (n < 3) return;
+  // The join in front of piece b, from piece a: +1 a curve meeting the line tangentially, −1 a
+  // corner, 0 neither (another line, or a curve at a kink).
+  const auto kind = [&](const Piece& a, const Piece& b, const Piece& curve) {
+    const std::optional<bool> flag = contour.nodes[b.source_node].smooth;
+    const double angle = std::abs(turning_angle(drawn_tangent(a.segment, SegmentEnd::end), drawn_tangent(b.segment, SegmentEnd::start)));
+    if (!is_made_smooth(smooth_nodes, b.source_node) && (flag ? !*flag : angle > corner)) return -1;
+    return !curve.straight && angle <= tangential ? 1 : 0;
+  };
+  std::vector<std::size_t> stubs;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Piece& line = pieces[i];
+    if (!line.straight || (!contour.closed && (i == 0 || i + 1 == n)) ||
+        distance(start_point(line.segment), end_point(line.segment)) >= stub_line_units)
+      continue;
+    const Piece& prev = pieces[(i + n - 1) % n];
+    const Piece& next = pieces[(i + 1) % n];
+    const int in = kind(prev, line, prev), out = kind(line, next, next);
+    if (in != 0 && out != 0 && in + out >= 0) stubs.push_back(i);
+  }
+  for (const std::size_t i : stubs) {
+    const Vec2 a = start_point(pieces[i].segment), b = end_point(pieces[i].segment);
+    pieces[i].segment = Cubic{a, a + (b - a) / 3.0, a + (b - a) * (2.0 / 3.0), b};
+    pieces[i].straight = false;
+  }
+}
+
 }  // namespace
 
 bool is_straight(const Cubic& c) {
@@ -91,9 +134,7 @@ bool is_straight_segment(const Segment& s) {
 
 ContourPlan plan_contour(const Contour& source, std::span<const std::size_t> smooth_nodes, const PlanOptions& options) {
   const Contour contour = with_cubics(source);
-  const auto made_smooth = [&](std::size_t node) {
-    return std::find(smooth_nodes.begin(), smooth_nodes.end(), node) != smooth_nodes.end();
-  };
+  const auto made_smooth = [&](std::size_t node) { return is_made_smooth(smooth_nodes, node); };
   std::vector<Piece> pieces;
   for (std::size_t i = 0; i < contour.segments.size(); ++i) {
     const Segment& s = contour.segments[i];
@@ -117,6 +158,7 @@ ContourPlan plan_contour(const Contour& source, std::span<const std::size_t> smo
   if (n == 0) return plan;
   const double corner = radians(options.corner_angle_deg);
   const double tangential_line = radians(options.tangential_line_deg);
+  absorb_stub_lines(pieces, contour, smooth_nodes, std::min(corner, tangential_line), corner);
   const bool corners_stay = options.corners_stay;
 
   // The join in front of piece i (between piece i−1 and i): its kind, nullopt when smooth

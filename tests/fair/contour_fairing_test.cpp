@@ -801,6 +801,16 @@ TEST(ContourFairing, ACurveBendingHardIntoALineLeavesItFartherEarlier) {
   expect_faired_g2(test::sans_probe, "M");
 }
 
+TEST(ContourFairing, ACurveEndingOnALineOfOneUnitMeetsTheCornerBeyondIt) {
+  // Linux Biolinum's f (drawn off the grid, so faired in fractions): the crossbar's underside
+  // curves into a line of one unit before the stem's corner, and the run kept κ·UPM −0.73
+  // against the line's 0: no κ = 0 end fits on one unit. The stub is the run's last stretch.
+  const FairedGlyph f = fair_named(test::linux_biolinum, "f", FairOptions{});
+  ASSERT_TRUE(f.result.kept.empty()) << f.result.kept.front();
+  EXPECT_LE(f.result.deviation, f.settings.tolerance_units);
+  EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm), 0);
+}
+
 TEST(ContourFairing, UnderG3ACurveLeavingALineMaySeatItsFarHandleBesideTheLine) {
   // Lato's M under --continuity g3: where the curves leave the lines up to the apexes, no place
   // of their far nodes put a handle a whole step exactly on the line, and one cap kept κ·UPM

@@ -34,6 +34,37 @@ TEST(ContourPlan, ALineJoinBeyondTheKinkLimitIsACornerUnlessMadeSmooth) {
   EXPECT_EQ(joined.end.kind, RunEndKind::corner);
 }
 
+// A closed contour: a curve down from (0, 100) that reaches (100, 0) level, a line of
+// `stub` units on along the level, a corner up to (100 + stub, 100), and a line home.
+Contour curve_onto_stub_line(double stub) {
+  const Vec2 top{0, 100}, foot{100, 0}, end{100 + stub, 0}, up{100 + stub, 100};
+  Contour c;
+  c.segments = {Cubic{top, top + Vec2{0, -60}, foot - Vec2{60, 0}, foot}, Line{foot, end}, Line{end, up}, Line{up, top}};
+  c.nodes.resize(4);
+  return c;
+}
+
+TEST(ContourPlan, ALineUnderTwoUnitsBetweenACurveAndACornerIsTheCurvesLastStretch) {
+  // A one-unit line that the curve meets level, then a corner: no curve leaves such a line
+  // with κ = 0 within it (Linux Biolinum's f), so it is the run's last cubic, drawn straight,
+  // and the run ends at the corner.
+  const ContourPlan plan = plan_contour(curve_onto_stub_line(1.0), {}, {3.0});
+  ASSERT_EQ(plan.pieces.size(), 3u);  // the run, the line up, the line home
+  const SmoothRun& run = std::get<SmoothRun>(plan.pieces[0]);
+  ASSERT_EQ(run.cubics.size(), 2u);
+  EXPECT_TRUE(is_straight(run.cubics[1]));
+  EXPECT_EQ(run.cubics[1].p[3], (Vec2{101, 0}));
+  EXPECT_EQ(run.end.kind, RunEndKind::corner);
+  EXPECT_EQ(run.end.tangent, (Vec2{1, 0}));
+  // Two units and longer, it is a line the run meets tangentially.
+  const ContourPlan longer = plan_contour(curve_onto_stub_line(2.0), {}, {3.0});
+  ASSERT_EQ(longer.pieces.size(), 4u);
+  const SmoothRun& meets = std::get<SmoothRun>(longer.pieces[0]);
+  EXPECT_EQ(meets.cubics.size(), 1u);
+  EXPECT_EQ(meets.end.kind, RunEndKind::line);
+  EXPECT_TRUE(std::holds_alternative<Line>(longer.pieces[1]));
+}
+
 TEST(ContourPlan, CornersThatStaySayWhatLiesBeyondThem) {
   // line_then_curves(10°): the run leaves the first line at a corner of 10° and meets the
   // closing line at (100, 200) at another; each of its ends says the line's direction beyond.
