@@ -373,9 +373,9 @@ bool leave_lines_earlier(LacChain& chain, const RunReference& ref, double budget
 // turn: a κ = 0 end at a line leaves the line earlier (transition_slide), and, where that does
 // not draw its segment, twice as early and so on within its room (Liberation Sans 2.1's M: the
 // curve from the inner vertex bends into the right stem's line with κ·UPM 45, its transition
-// slide of a few units drew nothing, and the end went G1 with κ·UPM 2.3 left at the join);
-// a κ = 0 end at a line
-// the source's shape does not allow (its curvature falls towards the end) becomes a free end,
+// slide of a few units drew nothing, and the end went G1 with κ·UPM 2.3 left at the join); a
+// κ = 0 end at a line the source's shape does not allow (its curvature falls towards the end)
+// becomes a free end,
 // G1 there, but on a guided run, whose guide meets the line with κ = 0 where no chain does (dkg,
 // Because We Learn and Kristi a–z A–Z unrounded: g2-jumps 0.9, 0.1 and 1.8 % → 0), and never at
 // an inflection junction, where the next chain still meets it with κ = 0 (Linux Libertine's T
