@@ -339,9 +339,9 @@ double transition_slide(double end_curvature, double budget, double room) {
 // The chain's κ = 0 end at a line (its start, or its end, which segment i ends at) put its
 // transition_slide back along the line from where the reference meets the line, where that
 // segment is still drawn; whether it moved (not when it was there already: make_drawable may
-// have put it there before the solve stalled). `farther`: instead twice, four times… that
-// slide, up to the room, the first that draws the segment (a curve whose source bends hard
-// into the line: its transition slide is short).
+// have put it there before the solve stalled). `farther`: where that slide does not draw the
+// segment, twice, four times… it, up to the room, the first that does (a curve whose source
+// bends hard into the line: its transition slide is short).
 bool leave_line_earlier(LacChain& chain, std::size_t i, bool at_start, const RunReference& ref, double budget,
                         LineRoom room, bool farther = false) {
   const double r = at_start ? room.start : room.end;
@@ -355,7 +355,7 @@ bool leave_line_earlier(LacChain& chain, std::size_t i, bool at_start, const Run
     chain.points[p] = ref.point_at(s) + direction_of(chain.tangent_angles[p]) * (at_start ? -slide : slide);
     return chain.points[p] != held && build_chain_segment(chain, i).ok();
   };
-  if (!farther && drawn_slid(first)) return true;
+  if (drawn_slid(first)) return true;
   for (double slide = first; farther && slide < r;)
     if (drawn_slid(slide = std::min(2.0 * slide, r))) return true;
   chain.points[p] = held;
@@ -369,19 +369,18 @@ bool leave_lines_earlier(LacChain& chain, const RunReference& ref, double budget
   return start || end;
 }
 
-// Makes every segment exist before the solve, or says which junctions to add or drop. In
-// turn: a κ = 0 end at a line leaves the line earlier (transition_slide), and, where that does
-// not draw its segment, twice as early and so on within its room (Liberation Sans 2.1's M: the
+// Makes every segment exist before the solve, or says which junctions to add or drop. In turn:
+// a κ = 0 end at a line leaves the line earlier (transition_slide), and, where that does not
+// draw its segment, twice as early and so on within its room (Liberation Sans 2.1's M: the
 // curve from the inner vertex bends into the right stem's line with κ·UPM 45, its transition
 // slide of a few units drew nothing, and the end went G1 with κ·UPM 2.3 left at the join); a
 // κ = 0 end at a line the source's shape does not allow (its curvature falls towards the end)
-// becomes a free end,
-// G1 there, but on a guided run, whose guide meets the line with κ = 0 where no chain does (dkg,
-// Because We Learn and Kristi a–z A–Z unrounded: g2-jumps 0.9, 0.1 and 1.8 % → 0), and never at
-// an inflection junction, where the next chain still meets it with κ = 0 (Linux Libertine's T
-// and D, a jump each, κ·UPM 152 against 0 on T's serif); a corner's
-// noisy tangent is turned; the nearest drawable α; a junction that does not turn with its
-// neighbours is dropped; else the piece is cut.
+// becomes a free end, G1 there, but on a guided run, whose guide meets the line with κ = 0
+// where no chain does (dkg, Because We Learn and Kristi a–z A–Z unrounded: g2-jumps
+// 0.9, 0.1 and 1.8 % → 0), and never at an inflection junction, where the next chain still
+// meets it with κ = 0 (Linux Libertine's T and D, a jump each, κ·UPM 152 against 0 on T's
+// serif); a corner's noisy tangent is turned; the nearest drawable α; a junction that does not
+// turn with its neighbours is dropped; else the piece is cut.
 void make_drawable(LacChain& chain, const ChainSpan& span, const RunReference& ref, const SmoothRun& run,
                    bool guided, double budget, LineRoom room, ChainOutcome& out) {
   const double L = ref.length();
@@ -390,9 +389,8 @@ void make_drawable(LacChain& chain, const ChainSpan& span, const RunReference& r
     if (build_chain_segment(chain, i).ok()) continue;
     const bool at_start = i == 0 && chain.zero_curvature_start;
     const bool zero_here = !chain.closed && (at_start || (i + 1 == segments && chain.zero_curvature_end));
-    if (zero_here && leave_line_earlier(chain, i, at_start, ref, budget, room)) continue;
-    if (zero_here && meets_line(span, ref, run, at_start) && leave_line_earlier(chain, i, at_start, ref, budget, room, true))
-      continue;
+    // (The room is the line's only where the end meets one: line_room.)
+    if (zero_here && leave_line_earlier(chain, i, at_start, ref, budget, room, true)) continue;
     if (zero_here && !guided && meets_line(span, ref, run, at_start)) {
       LacChain released = chain;
       (at_start ? released.zero_curvature_start : released.zero_curvature_end) = false;
