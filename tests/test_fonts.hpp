@@ -27,6 +27,8 @@ inline const std::string linux_biolinum = fonts + "/LinuxBiolinum/LinBiolinum_R-
 inline const std::string handwriting_probe = fonts + "/HandwritingProbe/GlyphfairProbeHandwriting-T.ttf";
 // Liberation Sans 2.1's M, renamed (its licence reserves the name)
 inline const std::string sans_probe = fonts + "/SansProbe/GlyphfairProbeSans-M.ttf";
+// Liberation Serif 2.1's D, renamed (its licence reserves the name)
+inline const std::string serif_probe = fonts + "/SerifProbe/GlyphfairProbeSerif-D.ttf";
 inline const std::string cff2_variable = fonts + "/Inter/GlyphfairProbe-CFF2.var.otf";
 
 }  // namespace gf::test

@@ -12,6 +12,10 @@ namespace gf {
 namespace {
 
 constexpr double sample_spacing = 1.0;  // units, at most, between the points the move is measured on
+// Units: on the grid, the fillet from an extremum gives it κ = (2/3)·d/m² for whole d and m;
+// below this, a unit more or less of m changes κ by more than a fifth (Comic Neue's d: 1.5-unit
+// ramps of κ·UPM 19 asked for m = 5.6).
+constexpr double shortest_extremum_handle = 8.0;
 
 // The unit axis direction nearest the unit vector d.
 Vec2 nearest_axis(Vec2 d) {
@@ -38,6 +42,13 @@ std::vector<Vec2> points_along(std::initializer_list<Segment> segments) {
     for (int k = 0; k <= n; ++k) out.push_back(point_at(s, static_cast<double>(k) / n));
   }
   return out;
+}
+
+// How far the outline moves, both ways, from the segments `before` to `after`; past `limit`,
+// only that it is past.
+double outline_move(std::initializer_list<Segment> before, std::initializer_list<Segment> after, double limit) {
+  const std::vector<Vec2> a = points_along(before), b = points_along(after);
+  return std::max(directed_hausdorff(a, b, limit), directed_hausdorff(b, a, limit));
 }
 
 // The sign of the curvature the cubic ends with just before its end (the end itself is flat:
@@ -81,13 +92,47 @@ std::optional<Filleted> fillet_join(const Cubic& curve, Vec2 far, const LeaningL
   out.curve.p[2] = j - axis * handle;
   out.curve.p[1] = j + axis * dot(curve.p[1] - j, axis);
   out.fillet = Cubic{{j, v, v, q}};
-  // How far the outline moves, both ways, from the curve's start to the line's far end.
-  const std::vector<Vec2> before = points_along({curve, Line{{j, far}}});
-  const std::vector<Vec2> after = points_along({out.curve, out.fillet, Line{{q, far}}});
-  const double moved = std::max(directed_hausdorff(before, after, limits.max_move_units),
-                                directed_hausdorff(after, before, limits.max_move_units));
-  if (moved > limits.max_move_units) return std::nullopt;
+  // From the curve's start to the line's far end.
+  if (outline_move({curve, Line{{j, far}}}, {out.curve, out.fillet, Line{{q, far}}}, limits.max_move_units) >
+      limits.max_move_units)
+    return std::nullopt;
   return out;
+}
+
+// The join of `ramp` (from a smooth H/V extremum N to the join, its curvature running down to
+// 0 there) and the line from there to `far`, where the ramp stays within half a unit of N's axis
+// line: the grid lays such a ramp flat against the curvature the extremum carries, a jump
+// (Liberation Serif 2.1's D: 9 units from the bowl's foot to a line 0.48° off the level;
+// Pagella's F). So the fillet starts at N itself and takes the ramp's place: (N, V, P2, Q) with
+// V = N + m·axis and P2, Q on the line from V to `far`, a step of it apart, so κ = 0 at Q and,
+// at N, κ = (2/3)·cross(axis, P2 − V)/m² (a cubic's curvature at its start), the ramp's own:
+// m = √((2/3)·step·sin(lean)/|κ_N|), then |P2 − V| solved for that κ exactly. None where the
+// limits say no, the ramp bends against the line's lean or N's tangent leaves the axis.
+std::optional<Cubic> fillet_from_extremum(const Cubic& ramp, Vec2 far, const LeaningLineLimits& limits) {
+  const Vec2 n = ramp.p[0], j = ramp.p[3], leaving = ramp.p[1] - n;
+  const double length = distance(j, far);
+  if (!(length > 0.0) || !(norm(leaving) > 0.0)) return std::nullopt;
+  const Vec2 t = (far - j) / length, axis = nearest_axis(t);
+  if (dot(axis, leaving) <= 0.0 || std::abs(cross(axis, leaving)) > 1e-9 * norm(leaving)) return std::nullopt;
+  const double lean = std::atan2(std::abs(cross(axis, t)), dot(axis, t));
+  if (lean < radians(limits.min_lean_deg) || lean > radians(limits.max_lean_deg)) return std::nullopt;
+  for (const Vec2 p : ramp.p)
+    if (std::abs(cross(axis, p - n)) >= 0.5) return std::nullopt;
+  const double kappa = node_curvature(ramp, SegmentEnd::start), side = cross(axis, t);
+  if (kappa * side <= 0.0) return std::nullopt;
+  const double step = shortest_step(j, far);
+  const double m = std::sqrt(2.0 / 3.0 * step * std::abs(side) / std::abs(kappa));
+  if (!(m >= shortest_extremum_handle)) return std::nullopt;
+  const Vec2 v = n + axis * m;
+  const Vec2 along = (far - v) / norm(far - v);
+  if (cross(axis, along) * side <= 0.0) return std::nullopt;
+  const double w = 1.5 * std::abs(kappa) * m * m / std::abs(cross(axis, along));
+  const Vec2 p2 = v + along * w, q = p2 + along * step;
+  if (distance(q, far) < step || dot(q - v, far - v) <= 0.0) return std::nullopt;
+  const Cubic fillet{{n, v, p2, q}};
+  if (outline_move({ramp, Line{{j, far}}}, {fillet, Line{{q, far}}}, limits.max_move_units) > limits.max_move_units)
+    return std::nullopt;
+  return fillet;
 }
 
 }  // namespace
@@ -108,6 +153,23 @@ int fillet_leaning_line_ends(std::vector<OutlineNode>& nodes, bool closed, const
     const Cubic cubic = arrives ? outline_cubic(nodes, prev) : outline_cubic(nodes, k).reversed();
     if (cubic.p[1] == cubic.p[2]) continue;  // a fillet already (both handles on its vertex)
     const Vec2 far = nodes[arrives ? next : prev].point;
+    // A ramp from a smooth extremum: the fillet from the extremum, in the ramp's place.
+    const OutlineNode& start = nodes[arrives ? prev : next];
+    if (start.smooth && (arrives ? start.in_handle : start.out_handle))
+      if (const std::optional<Cubic> f = fillet_from_extremum(cubic, far, limits)) {
+        const Cubic fillet = arrives ? *f : f->reversed();
+        if (arrives) {
+          *nodes[prev].out_handle = fillet.p[1];
+          node.in_handle = fillet.p[2];
+        } else {
+          *nodes[next].in_handle = fillet.p[2];
+          node.out_handle = fillet.p[1];
+        }
+        node.point = arrives ? fillet.p[3] : fillet.p[0];
+        node.grid_step.reset();
+        ++filleted;
+        continue;
+      }
     const std::optional<Filleted> f = fillet_join(cubic, far, limits);
     if (!f) continue;
     const Cubic curve = arrives ? f->curve : f->curve.reversed();

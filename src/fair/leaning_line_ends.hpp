@@ -6,7 +6,9 @@
 // turned by the lean, its far handle onto the axis line), a fillet (J, V, V, Q) with both
 // handles on the vertex V = J + m·axis turns onto the line, and the line starts at Q, one of
 // its steps beyond V. The fillet has κ = 0 at both ends (V lies on both tangent lines), so
-// both joins stay G2; J takes the axis as its grid step, Q the line's.
+// both joins stay G2; J takes the axis as its grid step, Q the line's. Where the curve's last
+// cubic is a ramp from an H/V extremum too flat for the grid, the fillet starts at the
+// extremum instead, with its curvature there.
 #pragma once
 
 #include <vector>
@@ -25,7 +27,10 @@ struct LeaningLineLimits {
 /// nearest axis, whose shortest grid step (its ends moved a unit or less) is longer than the
 /// cubic's handle there, the line at least three such steps long, and the fillet would turn
 /// the way the cubic bends there (else an inflection): the fillet put in, where the outline
-/// then moves by no more than `max_move_units`. How many joins were filleted.
+/// then moves by no more than `max_move_units`; or, where the cubic runs from a smooth H/V
+/// extremum along that axis and stays within half a unit of it, the fillet from the extremum
+/// in the cubic's place, G2 there, its first handle at least 8 units long. How many joins were
+/// filleted.
 int fillet_leaning_line_ends(std::vector<OutlineNode>& nodes, bool closed, const LeaningLineLimits& limits);
 
 }  // namespace gf

@@ -801,6 +801,13 @@ TEST(ContourFairing, ACurveBendingHardIntoALineLeavesItFartherEarlier) {
   expect_faired_g2(test::sans_probe, "M");
 }
 
+TEST(ContourFairing, ABowlWhoseFootRampsIntoALeaningLineKeepsItsCurvatureOnTheGrid) {
+  // Liberation Serif 2.1's D: the bowl's foot, a horizontal extremum, ramps down to κ = 0 in 9
+  // units into a base line 0.48° off the level, and rose 0.03 units doing so: rounded, the ramp
+  // lay flat against the foot's κ·UPM −1.6. The fillet onto the line starts at the foot.
+  expect_faired_g2(test::serif_probe, "D");
+}
+
 TEST(ContourFairing, ACurveEndingOnALineOfOneUnitMeetsTheCornerBeyondIt) {
   // Linux Biolinum's f (drawn off the grid, so faired in fractions): the crossbar's underside
   // curves into a line of one unit before the stem's corner, and the run kept κ·UPM −0.73

@@ -59,6 +59,48 @@ TEST(LeaningLineEnds, ACurveMeetingALeaningStemLeavesAlongTheAxisThroughAFillet)
   EXPECT_LE(test::polyline_hausdorff(dense(before), dense(reversed)), limits.max_move_units + 1e-9);
 }
 
+// A bowl arriving level at its foot N, a horizontal extremum, and a 9-unit ramp from N on to
+// the base line (Liberation Serif 2.1's D), which leans 4 units up over 478: the ramp rises
+// 0.05 units and its curvature runs from the foot's down to 0 at the line.
+std::vector<OutlineNode> bowl_ramp_and_line() {
+  const Vec2 n{718, -4.05}, j{709, -4}, far{231, 0};
+  const Vec2 t = (far - j) / norm(far - j);
+  return {test::node({1322, 305}, std::nullopt, Vec2{1184, 29}, false), test::node(n, Vec2{884, -4.05}, n + Vec2{-3, 0}),
+          test::node(j, j - t * 3.0, std::nullopt), test::node(far, std::nullopt, std::nullopt, false),
+          test::node({231, 1000}, std::nullopt, std::nullopt, false)};
+}
+
+TEST(LeaningLineEnds, ARampFromAnExtremumIsTheFilletsFirstStretch) {
+  std::vector<OutlineNode> nodes = bowl_ramp_and_line();
+  const std::vector<OutlineNode> before = nodes;
+  const double foot_kappa = *end_curvature(outline_cubic(before, 1), SegmentEnd::start).curvature;
+  ASSERT_LT(foot_kappa, 0.0);
+  const LeaningLineLimits limits;
+  ASSERT_EQ(fillet_leaning_line_ends(nodes, true, limits), 1);
+  ASSERT_EQ(nodes.size(), before.size());  // the fillet takes the ramp's place
+  const OutlineNode &n = nodes[1], &q = nodes[2];
+  EXPECT_EQ(n.point, before[1].point);
+  EXPECT_EQ(n.in_handle, before[1].in_handle);  // the bowl as it was
+  // The fillet leaves the foot level, with a handle the grid can vary by whole units.
+  EXPECT_EQ(n.out_handle->y, n.point.y);
+  EXPECT_GE(n.point.x - n.out_handle->x, 8.0);
+  // At the foot the ramp's curvature, at q none, and q's handle, q and the line's far end in a line.
+  const Cubic fillet = outline_cubic(nodes, 1);
+  EXPECT_NEAR(*end_curvature(fillet, SegmentEnd::start).curvature, foot_kappa, 1e-9 * std::abs(foot_kappa));
+  EXPECT_NEAR(*end_curvature(fillet, SegmentEnd::end).curvature, 0.0, 1e-12);
+  EXPECT_FALSE(q.out_handle.has_value());
+  EXPECT_NEAR(cross(q.point - *q.in_handle, nodes[3].point - q.point) / norm(nodes[3].point - q.point), 0.0, 1e-9);
+  EXPECT_LE(test::polyline_hausdorff(dense(before), dense(nodes)), limits.max_move_units + 1e-9);
+  // Walked the other way round, the same fillet.
+  std::vector<OutlineNode> reversed;
+  for (auto it = before.rbegin(); it != before.rend(); ++it) reversed.push_back(test::node(it->point, it->out_handle, it->in_handle, it->smooth));
+  ASSERT_EQ(fillet_leaning_line_ends(reversed, true, limits), 1);
+  EXPECT_LE(test::polyline_hausdorff(dense(before), dense(reversed)), limits.max_move_units + 1e-9);
+  const std::size_t foot = reversed.size() - 2;  // the nodes reversed: the foot second to last
+  EXPECT_NEAR(*end_curvature(outline_cubic(reversed, foot - 1), SegmentEnd::end).curvature, -foot_kappa,
+              1e-9 * std::abs(foot_kappa));
+}
+
 TEST(LeaningLineEnds, LinesOnTheAxisFarFromItWithShortStepsOrLeaningAgainstTheCurveStay) {
   const LeaningLineLimits limits;
   for (const double dx : {0.0, -50.0, -500.0}) {  // upright; 2.9° and 26.6°, past the lean limit
