@@ -12,9 +12,9 @@ namespace gf {
 namespace {
 
 constexpr double sample_spacing = 1.0;  // units, at most, between the points the move is measured on
-// Units: on the grid, the fillet from an extremum gives it κ = (2/3)·d/m² for whole d and m;
-// below this, a unit more or less of m changes κ by more than a fifth (Comic Neue's d: 1.5-unit
-// ramps of κ·UPM 19 asked for m = 5.6).
+// Units, the shortest first handle m of a fillet from an extremum: on the grid it gives the
+// extremum κ = (2/3)·d/m² for whole d and m, and below this a unit of m changes κ by more than
+// a quarter (Comic Neue's d: 1.5-unit ramps of κ·UPM 19 asked for m = 5.6).
 constexpr double shortest_extremum_handle = 8.0;
 
 // The unit axis direction nearest the unit vector d.
@@ -107,7 +107,8 @@ std::optional<Filleted> fillet_join(const Cubic& curve, Vec2 far, const LeaningL
 // V = N + m·axis and P2, Q on the line from V to `far`, a step of it apart, so κ = 0 at Q and,
 // at N, κ = (2/3)·cross(axis, P2 − V)/m² (a cubic's curvature at its start), the ramp's own:
 // m = √((2/3)·step·sin(lean)/|κ_N|), then |P2 − V| solved for that κ exactly. None where the
-// limits say no, the ramp bends against the line's lean or N's tangent leaves the axis.
+// limits say no, the ramp bends against the line's lean, N's tangent leaves the axis or m is
+// under shortest_extremum_handle.
 std::optional<Cubic> fillet_from_extremum(const Cubic& ramp, Vec2 far, const LeaningLineLimits& limits) {
   const Vec2 n = ramp.p[0], j = ramp.p[3], leaving = ramp.p[1] - n;
   const double length = distance(j, far);
