@@ -51,6 +51,24 @@ double outline_move(std::initializer_list<Segment> before, std::initializer_list
   return std::max(directed_hausdorff(a, b, limit), directed_hausdorff(b, a, limit));
 }
 
+// A line leaning between the limits' angles off its nearest axis.
+struct Lean {
+  Vec2 direction;  ///< unit, from the join to the line's far end
+  Vec2 axis;       ///< the axis nearest it, the same way
+  double angle;    ///< radians between them
+};
+
+// The line from the join j to `far` as it leans; none where it has no length or leans outside
+// the limits.
+std::optional<Lean> leaning(Vec2 j, Vec2 far, const LeaningLineLimits& limits) {
+  const double length = distance(j, far);
+  if (!(length > 0.0)) return std::nullopt;
+  const Vec2 t = (far - j) / length, axis = nearest_axis(t);
+  const double angle = std::atan2(std::abs(cross(axis, t)), dot(axis, t));
+  if (angle < radians(limits.min_lean_deg) || angle > radians(limits.max_lean_deg)) return std::nullopt;
+  return Lean{t, axis, angle};
+}
+
 // The sign of the curvature the cubic ends with just before its end (the end itself is flat:
 // it meets its line with κ = 0); 0 where it is straight there.
 double end_bend(const Cubic& c) {
@@ -71,18 +89,16 @@ struct Filleted {
 };
 std::optional<Filleted> fillet_join(const Cubic& curve, Vec2 far, const LeaningLineLimits& limits) {
   const Vec2 j = curve.p[3];
-  const double length = distance(j, far);
-  if (!(length > 0.0)) return std::nullopt;
-  const Vec2 t = (far - j) / length, axis = nearest_axis(t);
-  const double lean = std::atan2(std::abs(cross(axis, t)), dot(axis, t));
-  if (lean < radians(limits.min_lean_deg) || lean > radians(limits.max_lean_deg)) return std::nullopt;
+  const std::optional<Lean> lean = leaning(j, far, limits);
+  if (!lean) return std::nullopt;
+  const Vec2 axis = lean->axis;
   const double handle = distance(curve.p[2], j), step = shortest_step(j, far);
-  if (!(handle > 0.0) || step <= handle || length < 3.0 * step) return std::nullopt;
+  if (!(handle > 0.0) || step <= handle || distance(j, far) < 3.0 * step) return std::nullopt;
   // From the axis onto a line leaning the other way from the curve's bend is an inflection
   // (where the curve's handle is too short for any grid direction on its own side).
-  if (cross(axis, t) * end_bend(curve) <= 0.0) return std::nullopt;
+  if (cross(axis, lean->direction) * end_bend(curve) <= 0.0) return std::nullopt;
   // The axis leg: half a step, at most as long as keeps the vertex within the move of the line.
-  const double m = std::min(0.5 * step, limits.max_move_units / std::sin(lean));
+  const double m = std::min(0.5 * step, limits.max_move_units / std::sin(lean->angle));
   if (m < 1.0) return std::nullopt;
   const Vec2 v = j + axis * m;
   const Vec2 q = v + (far - v) / norm(far - v) * step;
@@ -111,15 +127,13 @@ std::optional<Filleted> fillet_join(const Cubic& curve, Vec2 far, const LeaningL
 // under shortest_extremum_handle.
 std::optional<Cubic> fillet_from_extremum(const Cubic& ramp, Vec2 far, const LeaningLineLimits& limits) {
   const Vec2 n = ramp.p[0], j = ramp.p[3], leaving = ramp.p[1] - n;
-  const double length = distance(j, far);
-  if (!(length > 0.0) || !(norm(leaving) > 0.0)) return std::nullopt;
-  const Vec2 t = (far - j) / length, axis = nearest_axis(t);
+  const std::optional<Lean> lean = leaning(j, far, limits);
+  if (!lean || !(norm(leaving) > 0.0)) return std::nullopt;
+  const Vec2 axis = lean->axis;
   if (dot(axis, leaving) <= 0.0 || std::abs(cross(axis, leaving)) > 1e-9 * norm(leaving)) return std::nullopt;
-  const double lean = std::atan2(std::abs(cross(axis, t)), dot(axis, t));
-  if (lean < radians(limits.min_lean_deg) || lean > radians(limits.max_lean_deg)) return std::nullopt;
   for (const Vec2 p : ramp.p)
     if (std::abs(cross(axis, p - n)) >= 0.5) return std::nullopt;
-  const double kappa = node_curvature(ramp, SegmentEnd::start), side = cross(axis, t);
+  const double kappa = node_curvature(ramp, SegmentEnd::start), side = cross(axis, lean->direction);
   if (kappa * side <= 0.0) return std::nullopt;
   const double step = shortest_step(j, far);
   const double m = std::sqrt(2.0 / 3.0 * step * std::abs(side) / std::abs(kappa));
