@@ -86,13 +86,14 @@ void absorb_stub_lines(std::vector<Piece>& pieces, const Contour& contour, std::
                        double tangential, double corner) {
   const std::size_t n = pieces.size();
   if (n < 3) return;
-  // The join in front of piece b, from piece a: +1 a curve meeting the line tangentially, −1 a
-  // corner, 0 neither (another line, or a curve at a kink).
-  const auto kind = [&](const Piece& a, const Piece& b, const Piece& curve) {
+  // The join in front of piece b, from piece a (one of them the stub): +1 a curve meeting the
+  // line tangentially, −1 a corner, 0 neither (another line, or a curve at a kink).
+  const auto kind = [&](const Piece& a, const Piece& b) {
     const std::optional<bool> flag = contour.nodes[b.source_node].smooth;
     const double angle = std::abs(turning_angle(drawn_tangent(a.segment, SegmentEnd::end), drawn_tangent(b.segment, SegmentEnd::start)));
     if (!is_made_smooth(smooth_nodes, b.source_node) && (flag ? !*flag : angle > corner)) return -1;
-    return !curve.straight && angle <= tangential ? 1 : 0;
+    const Piece& other = a.straight ? b : a;
+    return !other.straight && angle <= tangential ? 1 : 0;
   };
   std::vector<std::size_t> stubs;
   for (std::size_t i = 0; i < n; ++i) {
@@ -102,7 +103,7 @@ void absorb_stub_lines(std::vector<Piece>& pieces, const Contour& contour, std::
       continue;
     const Piece& prev = pieces[(i + n - 1) % n];
     const Piece& next = pieces[(i + 1) % n];
-    const int in = kind(prev, line, prev), out = kind(line, next, next);
+    const int in = kind(prev, line), out = kind(line, next);
     if (in != 0 && out != 0 && in + out >= 0) stubs.push_back(i);
   }
   for (const std::size_t i : stubs) {
