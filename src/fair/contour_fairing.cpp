@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "fair/contour_plan.hpp"
+#include "fair/corner_end_lobes.hpp"
 #include "fair/cubic_writeback.hpp"
 #include "fair/g3_cubics.hpp"
 #include "fair/grid_rounding.hpp"
@@ -435,6 +436,21 @@ void fillet_leaning_lines(std::vector<OutlineNode>& nodes, bool closed, const Sa
   merge_tiny_cubics(nodes, closed, tiny_cubic_chord);
 }
 
+// Handwriting: a corner's short lobe bending against the stroke's edge beyond it becomes part of
+// one cubic from the corner (fair/corner_end_lobes.hpp), each within what the outline leaves of
+// `available` at the cubics it replaces; kept where the whole outline stays within `available`.
+void drop_lobes_at_corners(std::vector<OutlineNode>& nodes, bool closed, const SampledContour& sampled_source,
+                           const FairSettings& settings, double available) {
+  const SampledContour sampled(to_contour(nodes, closed));
+  const std::vector<double> by_segment = distance_by_piece(sampled.grid, sampled.samples.segment_of, sampled_source.grid);
+  std::vector<double> allowance =
+      tolerance_left(by_segment, settings.tolerance_units, settings.tolerance_units - available);
+  std::vector<OutlineNode> dropped = nodes;
+  if (drop_corner_end_lobes(dropped, closed, allowance) == 0) return;
+  if (distance_between(SampledContour(to_contour(dropped, closed)), sampled_source) > available) return;
+  nodes = std::move(dropped);
+}
+
 // How many times a contour has been faired on one plan and basis (fair_within_budgets), and
 // how many times it may be: a fairing again (fair_contour) stops where the first did, and
 // gives a plan up where its rounding strays instead of rounding again on halved allowances
@@ -478,6 +494,8 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
     drop_empty_cubics(a.nodes, source.closed);
     if (round) merge_tiny_cubics(a.nodes, source.closed, tiny_cubic_chord);
     rotate_to_start(a.nodes, source.node_point(0));
+    if (settings.profile == FairProfile::handwriting)
+      drop_lobes_at_corners(a.nodes, source.closed, sampled_source, settings, available);
     if (round) fillet_leaning_lines(a.nodes, source.closed, sampled_source, settings, available);
     if (settings.continuity == Continuity::g3)
       a.g3_cubics = carry_g3_into_cubics(a.nodes, source.closed, sampled_source, source.node_count(), settings);

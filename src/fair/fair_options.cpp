@@ -11,7 +11,7 @@ FairSettings resolve_settings(const FairOptions& options, double units_per_em) {
   s.continuity = options.continuity;
   s.rounding = options.rounding;
   const bool hand = options.profile == FairProfile::handwriting;
-  s.tolerance_units = options.tolerance_units.value_or((hand ? 0.012 : 0.00125) * units_per_em);
+  s.tolerance_units = options.tolerance_units.value_or((hand ? 0.014 : 0.00125) * units_per_em);
   s.corner_angle_deg = options.corner_angle_deg.value_or(hand ? 30.0 : 3.0);
   s.units_per_em = units_per_em;
   s.chain_share = hand ? 0.7 : 0.4;

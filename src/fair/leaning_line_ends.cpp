@@ -2,10 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <initializer_list>
 #include <limits>
 
-#include "geom/polyline_distance.hpp"
+#include "geom/outline_move.hpp"
 
 namespace gf {
 
@@ -32,23 +31,6 @@ double shortest_step(Vec2 a, Vec2 b) {
       if (const std::optional<Vec2> s = primitive_step(d + Vec2{static_cast<double>(dx), static_cast<double>(dy)}))
         best = std::min(best, norm(*s));
   return best;
-}
-
-// Points at most sample_spacing apart along the segments, in order.
-std::vector<Vec2> points_along(std::initializer_list<Segment> segments) {
-  std::vector<Vec2> out;
-  for (const Segment& s : segments) {
-    const int n = std::max(1, static_cast<int>(std::ceil(control_polygon_length(s) / sample_spacing)));
-    for (int k = 0; k <= n; ++k) out.push_back(point_at(s, static_cast<double>(k) / n));
-  }
-  return out;
-}
-
-// How far the outline moves, both ways, from the segments `before` to `after`; past `limit`,
-// only that it is past.
-double outline_move(std::initializer_list<Segment> before, std::initializer_list<Segment> after, double limit) {
-  const std::vector<Vec2> a = points_along(before), b = points_along(after);
-  return std::max(directed_hausdorff(a, b, limit), directed_hausdorff(b, a, limit));
 }
 
 // A line leaning between the limits' angles off its nearest axis.
@@ -109,8 +91,8 @@ std::optional<Filleted> fillet_join(const Cubic& curve, Vec2 far, const LeaningL
   out.curve.p[1] = j + axis * dot(curve.p[1] - j, axis);
   out.fillet = Cubic{{j, v, v, q}};
   // From the curve's start to the line's far end.
-  if (outline_move({curve, Line{{j, far}}}, {out.curve, out.fillet, Line{{q, far}}}, limits.max_move_units) >
-      limits.max_move_units)
+  if (outline_move({curve, Line{{j, far}}}, {out.curve, out.fillet, Line{{q, far}}}, sample_spacing,
+                   limits.max_move_units) > limits.max_move_units)
     return std::nullopt;
   return out;
 }
@@ -145,7 +127,8 @@ std::optional<Cubic> fillet_from_extremum(const Cubic& ramp, Vec2 far, const Lea
   const Vec2 p2 = v + along * w, q = p2 + along * step;
   if (distance(q, far) < step || dot(q - v, far - v) <= 0.0) return std::nullopt;
   const Cubic fillet{{n, v, p2, q}};
-  if (outline_move({ramp, Line{{j, far}}}, {fillet, Line{{q, far}}}, limits.max_move_units) > limits.max_move_units)
+  if (outline_move({ramp, Line{{j, far}}}, {fillet, Line{{q, far}}}, sample_spacing, limits.max_move_units) >
+      limits.max_move_units)
     return std::nullopt;
   return fillet;
 }

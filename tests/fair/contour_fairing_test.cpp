@@ -955,6 +955,43 @@ TEST(ContourFairing, RoundedSmoothNodesStayG2WhereCornerHandlesMustMoveFar) {
   EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm), 0);
 }
 
+// Because We Learn's F: the top arm's lower edge runs from the level top of its curve, (567,
+// 383), to the arm's end, the corner at (207, 293), in one cubic that turns back a little
+// before the corner (a lobe of κ·UPM 2 and 6 units off its chord, within the 14 units of the
+// handwriting tolerance). Faired, that edge bends one way from its level node into the corner
+// (fair/corner_end_lobes).
+TEST(ContourFairing, AStrokesEdgeRunsIntoItsCornerBendingOneWay) {
+  const FairedGlyph f = fair_named(test::because_we_learn, "F", options_for(FairProfile::handwriting, Rounding::integers));
+  ASSERT_TRUE(f.result.kept.empty()) << f.result.kept.front();
+  ASSERT_EQ(f.result.glyph.outline.contours.size(), 1u);
+  const Contour& c = f.result.glyph.outline.contours[0];
+  const std::size_t n = c.segments.size();
+  // The segment arriving at the corner nearest (207, 293), and back from it to a level tangent.
+  std::size_t last = 0;
+  for (std::size_t i = 1; i < n; ++i)
+    if (distance(end_point(c.segments[i]), {207, 293}) < distance(end_point(c.segments[last]), {207, 293})) last = i;
+  ASSERT_LE(distance(end_point(c.segments[last]), {207, 293}), 1.0);
+  std::size_t first = last;
+  for (std::size_t steps = 0; steps < n; ++steps, first = (first + n - 1) % n) {
+    const std::optional<Vec2> t = end_tangent(c.segments[first], SegmentEnd::start);
+    ASSERT_TRUE(t.has_value());
+    if (t->y == 0.0) break;
+  }
+  ASSERT_NEAR(start_point(c.segments[first]).y, 383.0, f.settings.tolerance_units);
+  int changes = 0, sign = 0;
+  for (std::size_t i = first;; i = (i + 1) % n) {
+    for (int step = 0; step <= 64; ++step) {
+      const std::optional<double> k = curvature(derivatives_at(c.segments[i], step / 64.0));
+      if (!k || std::abs(*k) * f.upm < 1e-6) continue;
+      const int now = *k > 0.0 ? 1 : -1;
+      changes += sign != 0 && now != sign;
+      sign = now;
+    }
+    if (i == last) break;
+  }
+  EXPECT_EQ(changes, 0);
+}
+
 // Because We Learn's f, h, s, E, R and W each kept one smooth node over the check's limit on the
 // grid: no move of that node alone mends it, only one that its neighbours' handles follow
 // (HandleStepLimits::polish_rounds).

@@ -1,0 +1,244 @@
+#include "fair/corner_end_lobes.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <utility>
+
+#include "geom/arc_length.hpp"
+#include "geom/critical_points.hpp"
+#include "geom/curvature.hpp"
+#include "geom/g2_hermite.hpp"
+#include "geom/outline_move.hpp"
+
+namespace gf {
+
+namespace {
+
+constexpr double sample_spacing = 2.0;  // units, at most, between the points a move is measured on
+constexpr int tangent_steps = 30;       // corner tangents tried each way, up to most_turn_deg
+constexpr int handle_steps = 24;        // corner handles tried: 1/24 … 24/24 of the chord
+constexpr double flat_bend = 1e-9;      // κ·chord below which an end is flat (an inflection node's)
+constexpr double shortest_piece = 8.0;  // units: the writeback's shortest span on the grid
+constexpr double end_parameter = 1e-6;  // an inflection this near a cubic's end (in t) is the end's
+constexpr double end_share = 0.005;     // of a cubic's length: an H/V extremum this near an end needs no node
+
+// The cubic's inflections off its ends: a lobe cut at its inflection node ends there with
+// κ = 0, which the roots may place a rounding error inside.
+std::vector<double> inner_inflections(const Cubic& c) {
+  std::vector<double> out;
+  for (const double t : inflections(c))
+    if (std::min(t, 1.0 - t) > end_parameter) out.push_back(t);
+  return out;
+}
+
+// The way a cubic bends (1 left, −1 right), or 0 where it bends both ways or not at all.
+int bend_of(const Cubic& c) {
+  if (!inner_inflections(c).empty()) return 0;
+  const std::optional<double> k = curvature(derivatives_at(c, 0.5));
+  return !k || *k == 0.0 ? 0 : (*k > 0.0 ? 1 : -1);
+}
+
+// The cubic's H/V extrema that need a node: those farther along it from both ends than
+// end_share of its length (the check's margin is twice that; half is left for rounding).
+std::vector<AxisExtremum> inner_extrema(const Cubic& c) {
+  std::vector<AxisExtremum> out;
+  const double length = arc_length_estimate(c);
+  for (const AxisExtremum& e : axis_extrema(c)) {
+    const double along = arc_length_estimate(c, 0.0, e.t);
+    if (along > end_share * length && length - along > end_share * length) out.push_back(e);
+  }
+  return out;
+}
+
+// Whether cutting the cubic at its inner extrema leaves no piece shorter than shortest_piece:
+// shorter, the grid can only make it straight or fold it.
+bool pieces_long_enough(const Cubic& c) {
+  Vec2 last = c.p[0];
+  for (const AxisExtremum& e : inner_extrema(c)) {
+    const Vec2 q = c.point_at(e.t);
+    if (distance(last, q) < shortest_piece) return false;
+    last = q;
+  }
+  return last == c.p[0] || distance(last, c.p[3]) >= shortest_piece;
+}
+
+struct Replacement {
+  Cubic cubic;
+  double move;
+};
+
+// The cubic from the corner c, leaving it within most_turn_deg of `drawn`, to `far` (its
+// tangent and curvature met) that bends `way`, its H/V extrema far enough apart to be nodes,
+// and moves the outline least from `old` within `room`, curvature monotone where any such
+// cubic is; none where no cubic does. `arriving`: the direction the outline arrives at the
+// corner in, which it still turns from by least_corner_deg and half what it did.
+std::optional<Replacement> one_way_cubic(Vec2 c, Vec2 drawn, Vec2 arriving, const HermiteEnd& far, int way,
+                                         std::initializer_list<Segment> old, double room,
+                                         const CornerLobeLimits& limits) {
+  if (way == 0 || far.curvature * way < 0.0) return std::nullopt;
+  const double corner = turning_angle(arriving, drawn);
+  const double least_corner = std::max(radians(limits.least_corner_deg), 0.5 * std::abs(corner));
+  if (std::abs(corner) < least_corner) return std::nullopt;
+  const double chord = distance(c, far.point);
+  std::optional<Replacement> best, best_monotone;
+  for (int k = -tangent_steps; k <= tangent_steps; ++k) {
+    const Vec2 t0 = direction_of(angle_of(drawn) + radians(limits.most_turn_deg) * k / tangent_steps);
+    const double turned = turning_angle(arriving, t0);
+    // Still a corner the same way round, and the chord on the side the cubic bends to.
+    if (turned * corner <= 0.0 || std::abs(turned) < least_corner || way * cross(t0, far.point - c) <= 0.0) continue;
+    for (int j = 1; j <= handle_steps; ++j) {
+      // A flat end (an inflection node's) fixes the corner's handle and leaves its own to choose.
+      const double handle = chord * j / handle_steps;
+      const std::optional<Cubic> cubic =
+          far.curvature == 0.0 ? g2_hermite_cubic_from_flat_end({c, t0, 0.0}, far, SegmentEnd::start, handle)
+                               : g2_hermite_cubic_with_free_end({c, t0, 0.0}, far, SegmentEnd::start, handle);
+      if (!cubic || bend_of(*cubic) != way || !pieces_long_enough(*cubic)) continue;
+      // Curvature monotone where any candidate has it: a peak inside is an extremum more.
+      const bool monotone = critical_points(*cubic).curvature_extrema.empty();
+      std::optional<Replacement>& slot = monotone ? best_monotone : best;
+      const double limit = slot ? std::min(slot->move, room) : room;
+      const double move = outline_move(old, {*cubic}, sample_spacing, limit);
+      if (move < limit) slot = Replacement{*cubic, move};
+    }
+  }
+  return best_monotone ? best_monotone : best;
+}
+
+// Where the cubic ends: its point, tangent and curvature (0 where it ends flat, as at an
+// inflection node or into a line, to rounding error); none where it has no direction there.
+std::optional<HermiteEnd> end_frame(const Cubic& c) {
+  const std::optional<double> k = end_curvature(c, SegmentEnd::end).curvature;
+  const std::optional<Vec2> t = end_tangent(c, SegmentEnd::end);
+  if (!k || !t) return std::nullopt;
+  const bool flat = std::abs(*k) * distance(c.p[0], c.p[3]) < flat_bend;
+  return HermiteEnd{c.p[3], *t, flat ? 0.0 : *k};
+}
+
+// The replacement's pieces: cut at its H/V extrema, where the outline keeps a node (snapped
+// exactly onto the axis there).
+std::vector<OutlineNode> extremum_nodes(const Cubic& cubic, std::vector<Cubic>& pieces) {
+  std::vector<OutlineNode> out;
+  Cubic rest = cubic;
+  double done = 0.0;
+  for (const AxisExtremum& e : inner_extrema(cubic)) {
+    const auto halves = rest.split((e.t - done) / (1.0 - done));
+    done = e.t;
+    pieces.push_back(halves[0]);
+    rest = halves[1];
+    OutlineNode node{halves[1].p[0], halves[0].p[2], halves[1].p[1], true, std::nullopt};
+    const Vec2 d = halves[1].p[1] - halves[1].p[0];
+    if (e.tangent == Axis::horizontal) {
+      node.in_handle->y = node.out_handle->y = node.point.y;
+      node.grid_step = Vec2{d.x > 0.0 ? 1.0 : -1.0, 0.0};
+    } else {
+      node.in_handle->x = node.out_handle->x = node.point.x;
+      node.grid_step = Vec2{0.0, d.y > 0.0 ? 1.0 : -1.0};
+    }
+    out.push_back(node);
+  }
+  pieces.push_back(rest);
+  return out;
+}
+
+// The corner at node 0 leaves along `r` up to node `far`: the nodes between replaced by the
+// replacement's extremum nodes, each of its pieces left `left` of the tolerance.
+void put_in(std::vector<OutlineNode>& nodes, std::vector<double>& allowance, std::size_t far, const Replacement& r,
+            double left) {
+  std::vector<Cubic> pieces;
+  const std::vector<OutlineNode> inner = extremum_nodes(r.cubic, pieces);
+  nodes.front().out_handle = pieces.front().p[1];
+  nodes[far].in_handle = pieces.back().p[2];
+  nodes.erase(nodes.begin() + 1, nodes.begin() + static_cast<std::ptrdiff_t>(far));
+  nodes.insert(nodes.begin() + 1, inner.begin(), inner.end());
+  allowance.erase(allowance.begin(), allowance.begin() + static_cast<std::ptrdiff_t>(far));
+  allowance.insert(allowance.begin(), pieces.size(), left);
+}
+
+// The way the cubic bends after its only inflection, or 0 where it has none or more.
+int bend_after_inflection(const Cubic& c) {
+  const std::vector<double> roots = inner_inflections(c);
+  if (roots.size() != 1) return 0;
+  const std::optional<double> k = curvature(derivatives_at(c, 0.5 * (roots[0] + 1.0)));
+  return !k || *k == 0.0 ? 0 : (*k > 0.0 ? 1 : -1);
+}
+
+// The lobe after the corner at node 0, if there is one to drop: dropped. The lobe bends
+// against the way the outline goes on, and ends inside the first cubic, at its end, or inside
+// the second; the cubics up to there become one, ending as the last of them ends (so what
+// follows meets it as before).
+bool drop_after_corner(std::vector<OutlineNode>& nodes, std::vector<double>& allowance,
+                       const CornerLobeLimits& limits) {
+  if (nodes[0].smooth || !nodes[0].out_handle || !nodes[1].in_handle) return false;
+  const Cubic first = outline_cubic(nodes, 0);
+  const std::optional<Vec2> drawn = end_tangent(first, SegmentEnd::start);
+  if (!drawn) return false;
+  const Vec2 arriving = arriving_direction(nodes, 0);
+  // The lobe ends inside the first cubic.
+  if (const int way = bend_after_inflection(first); way != 0) {
+    const std::optional<HermiteEnd> far = end_frame(first);
+    const auto r = far ? one_way_cubic(first.p[0], *drawn, arriving, *far, way, {first}, allowance[0], limits)
+                       : std::nullopt;
+    if (r) put_in(nodes, allowance, 1, *r, allowance[0] - r->move);
+    return r.has_value();
+  }
+  // The lobe is the first cubic and ends at its end or inside the second.
+  if (!nodes[1].smooth || !nodes[1].out_handle || !nodes[2].in_handle) return false;
+  const Cubic second = outline_cubic(nodes, 1);
+  const int lobe = bend_of(first);
+  const int way = lobe != 0 && (bend_of(second) == -lobe || bend_after_inflection(second) == -lobe) ? -lobe : 0;
+  const std::optional<HermiteEnd> far = end_frame(second);
+  if (way == 0 || !far) return false;
+  const double room = std::min(allowance[0], allowance[1]);
+  const auto r = one_way_cubic(first.p[0], *drawn, arriving, *far, way, {first, second}, room, limits);
+  if (r) put_in(nodes, allowance, 2, *r, room - r->move);
+  return r.has_value();
+}
+
+// The pass one way round the closed outline: each node in turn brought to the front.
+int drop_after_corners(std::vector<OutlineNode>& nodes, std::vector<double>& allowance,
+                       const CornerLobeLimits& limits) {
+  int dropped = 0;
+  const std::size_t visits = nodes.size();
+  for (std::size_t v = 0; v < visits && nodes.size() >= 4; ++v) {
+    dropped += drop_after_corner(nodes, allowance, limits);
+    std::rotate(nodes.begin(), nodes.begin() + 1, nodes.end());
+    std::rotate(allowance.begin(), allowance.begin() + 1, allowance.end());
+  }
+  return dropped;
+}
+
+// The outline read the other way round: segment j joins nodes j and j + 1 both ways.
+void reverse_outline(std::vector<OutlineNode>& nodes, std::vector<double>& allowance) {
+  const std::size_t n = nodes.size();
+  std::reverse(nodes.begin(), nodes.end());
+  for (OutlineNode& q : nodes) {
+    std::swap(q.in_handle, q.out_handle);
+    if (q.grid_step) q.grid_step = -*q.grid_step;
+  }
+  std::vector<double> reversed(allowance.size());
+  for (std::size_t j = 0; j < reversed.size(); ++j) reversed[j] = allowance[(2 * n - 2 - j) % n];
+  allowance = std::move(reversed);
+}
+
+}  // namespace
+
+int drop_corner_end_lobes(std::vector<OutlineNode>& nodes, bool closed, std::vector<double>& allowance,
+                          const CornerLobeLimits& limits) {
+  if (!closed || allowance.size() != nodes.size() || nodes.empty()) return 0;
+  const Vec2 start = nodes.front().point;
+  int dropped = drop_after_corners(nodes, allowance, limits);
+  reverse_outline(nodes, allowance);
+  dropped += drop_after_corners(nodes, allowance, limits);
+  reverse_outline(nodes, allowance);
+  // The passes leave the outline rotated: it starts where it did, where that node is left.
+  const auto first = std::find_if(nodes.begin(), nodes.end(), [&](const OutlineNode& q) { return q.point == start; });
+  if (first != nodes.end()) {
+    const auto k = first - nodes.begin();
+    std::rotate(nodes.begin(), first, nodes.end());
+    std::rotate(allowance.begin(), allowance.begin() + k, allowance.end());
+  }
+  return dropped;
+}
+
+}  // namespace gf

@@ -1,0 +1,136 @@
+// A stroke's edge that leaves a corner bending one way for a short stretch and then turns the
+// other way (a scan's rounded corner, cut at the inflection) becomes one cubic from the corner
+// that bends one way, meeting the node where the lobe's cubics ended with that node's tangent
+// and curvature; the corner stays a corner, the outline moves within the allowance. Left alone
+// where the allowance is too small.
+#include "fair/corner_end_lobes.hpp"
+
+#include <gtest/gtest.h>
+
+#include "geom/critical_points.hpp"
+#include "geom/curvature.hpp"
+#include "point_set_distance.hpp"
+#include "test_shapes.hpp"
+
+namespace gf {
+namespace {
+
+// A corner C = (0, 0) that the outline reaches going down its left side. From C the edge rises
+// about a unit and comes back, bending right, to the inflection node N = (60, 0), which it
+// leaves heading a little down (along T) with κ = 0 on both sides (each cubic's far handle on
+// that tangent); the cubic beyond bends left up to the corner M = (200, 60). Then lines back
+// to the top left and down to C. `rise`: how far the lobe's first handle stands off T's line.
+std::vector<OutlineNode> corner_lobe_and_curve(double rise = 3.0) {
+  const Vec2 n{60, 0}, t = Vec2{1, -rise / 40.0} / norm(Vec2{1, -rise / 40.0});
+  return {test::node({0, 0}, std::nullopt, n - t * 40.0, false), test::node(n, n - t * 20.0, n + t * 40.0),
+          test::node({200, 60}, n + t * 80.0, std::nullopt, false), test::node({0, 150}, std::nullopt, std::nullopt, false)};
+}
+
+std::vector<Vec2> dense(const std::vector<OutlineNode>& nodes) { return test::contour_points(to_contour(nodes, true), 400); }
+
+// The sign changes of κ along the cubics from node `from` up to node `to` (exclusive).
+int sign_changes(const std::vector<OutlineNode>& nodes, std::size_t from, std::size_t to) {
+  int changes = 0, last = 0;
+  for (std::size_t i = from; i < to; ++i)
+    for (int step = 0; step <= 64; ++step) {
+      const std::optional<double> k = curvature(derivatives_at(outline_cubic(nodes, i), step / 64.0));
+      if (!k || std::abs(*k) < 1e-12) continue;
+      const int sign = *k > 0.0 ? 1 : -1;
+      changes += last != 0 && sign != last;
+      last = sign;
+    }
+  return changes;
+}
+
+std::vector<OutlineNode> reversed(const std::vector<OutlineNode>& nodes) {
+  std::vector<OutlineNode> out;
+  for (auto it = nodes.rbegin(); it != nodes.rend(); ++it)
+    out.push_back(test::node(it->point, it->out_handle, it->in_handle, it->smooth));
+  return out;
+}
+
+TEST(CornerEndLobes, ALobeLeavingACornerBecomesPartOfOneCubicThatBendsOneWay) {
+  std::vector<OutlineNode> nodes = corner_lobe_and_curve();
+  const std::vector<OutlineNode> before = nodes;
+  ASSERT_EQ(sign_changes(before, 0, 2), 1);  // the lobe, then the curve
+  const double room = 5.0;
+  std::vector<double> allowance(nodes.size(), room);
+  ASSERT_EQ(drop_corner_end_lobes(nodes, true, allowance), 1);
+  ASSERT_EQ(allowance.size(), nodes.size());
+  // The start and the corners stay; N goes, and the new cubic keeps a node where it runs level
+  // (as the curve beyond N did), its handles exactly level.
+  ASSERT_EQ(nodes.size(), 4u);
+  EXPECT_EQ(nodes[0].point, before[0].point);
+  EXPECT_EQ(nodes[2].point, before[2].point);
+  EXPECT_FALSE(nodes[0].smooth);
+  const OutlineNode& level = nodes[1];
+  EXPECT_TRUE(level.smooth);
+  EXPECT_EQ(level.grid_step, (Vec2{1, 0}));
+  EXPECT_EQ(level.in_handle->y, level.point.y);
+  EXPECT_EQ(level.out_handle->y, level.point.y);
+  EXPECT_EQ(sign_changes(nodes, 0, 2), 0);
+  EXPECT_NEAR(*end_curvature(outline_cubic(nodes, 0), SegmentEnd::end).curvature,
+              *end_curvature(outline_cubic(nodes, 1), SegmentEnd::start).curvature, 1e-12);
+  // M is met as before: its tangent and its curvature.
+  const Cubic old_beyond = outline_cubic(before, 1), now = outline_cubic(nodes, 1);
+  EXPECT_NEAR(cross(*end_tangent(now, SegmentEnd::end), *end_tangent(old_beyond, SegmentEnd::end)), 0.0, 1e-12);
+  EXPECT_NEAR(*end_curvature(now, SegmentEnd::end).curvature, *end_curvature(old_beyond, SegmentEnd::end).curvature, 1e-12);
+  // C still turns the same way round, by at least the limit.
+  const double corner = turning_angle(arriving_direction(nodes, 0), leaving_direction(nodes, 0));
+  EXPECT_GT(corner, radians(CornerLobeLimits{}.least_corner_deg));
+  // Within the allowance, and what is left of it follows the cubic.
+  const double moved = test::polyline_hausdorff(dense(before), dense(nodes));
+  EXPECT_LE(moved, room + 1e-9);
+  EXPECT_LT(allowance[0], room);
+  EXPECT_EQ(allowance[1], allowance[0]);
+  EXPECT_EQ(allowance[2], room);
+}
+
+TEST(CornerEndLobes, ALobeArrivingAtACornerIsDroppedTheSameWay) {
+  std::vector<OutlineNode> nodes = reversed(corner_lobe_and_curve());
+  const std::vector<OutlineNode> before = nodes;
+  std::vector<double> allowance(nodes.size(), 5.0);
+  ASSERT_EQ(drop_corner_end_lobes(nodes, true, allowance), 1);
+  ASSERT_EQ(nodes.size(), 4u);
+  EXPECT_EQ(nodes[0].point, before[0].point);  // the outline starts where it did
+  // From M the outline now runs into C through the level node, bending one way.
+  const auto m = std::find_if(nodes.begin(), nodes.end(), [](const OutlineNode& q) { return q.point == Vec2{200, 60}; });
+  ASSERT_NE(m, nodes.end());
+  const std::size_t i = static_cast<std::size_t>(m - nodes.begin());
+  ASSERT_LT(i + 2, nodes.size());
+  EXPECT_EQ(nodes[i + 1].grid_step, (Vec2{-1, 0}));
+  EXPECT_EQ(nodes[i + 2].point, (Vec2{0, 0}));
+  EXPECT_EQ(sign_changes(nodes, i, i + 2), 0);
+  EXPECT_LE(test::polyline_hausdorff(dense(before), dense(nodes)), 5.0 + 1e-9);
+}
+
+TEST(CornerEndLobes, ALobeInsideTheCornersCubicIsDroppedFromIt) {
+  // C's cubic itself bends right and then left (one inflection), ending at N as the curve
+  // beyond it goes on: the same shape as one cubic less.
+  std::vector<OutlineNode> nodes = {
+      test::node({0, 0}, std::nullopt, Vec2{40, 4}, false), test::node({120, 20}, Vec2{80, 0}, Vec2{160, 40}),
+      test::node({200, 60}, Vec2{180, 50}, std::nullopt, false), test::node({0, 150}, std::nullopt, std::nullopt, false)};
+  ASSERT_EQ(critical_points(outline_cubic(nodes, 0)).inflections.size(), 1u);
+  const std::vector<OutlineNode> before = nodes;
+  std::vector<double> allowance(nodes.size(), 5.0);
+  ASSERT_EQ(drop_corner_end_lobes(nodes, true, allowance), 1);
+  ASSERT_EQ(nodes.size(), before.size());
+  EXPECT_TRUE(critical_points(outline_cubic(nodes, 0)).inflections.empty());
+  EXPECT_EQ(nodes[1].point, before[1].point);
+  EXPECT_EQ(*nodes[1].out_handle, *before[1].out_handle);  // the curve beyond N as it was
+  const Cubic now = outline_cubic(nodes, 0), was = outline_cubic(before, 0);
+  EXPECT_NEAR(*end_curvature(now, SegmentEnd::end).curvature, *end_curvature(was, SegmentEnd::end).curvature, 1e-12);
+  EXPECT_LE(test::polyline_hausdorff(dense(before), dense(nodes)), 5.0 + 1e-9);
+}
+
+TEST(CornerEndLobes, ALobeFartherFromAOneWayCurveThanTheAllowanceStays) {
+  std::vector<OutlineNode> nodes = corner_lobe_and_curve(12.0);  // a lobe 4 units high
+  const std::vector<OutlineNode> before = nodes;
+  std::vector<double> allowance(nodes.size(), 1.0);
+  EXPECT_EQ(drop_corner_end_lobes(nodes, true, allowance), 0);
+  EXPECT_EQ(nodes, before);
+  EXPECT_EQ(allowance, std::vector<double>(before.size(), 1.0));
+}
+
+}  // namespace
+}  // namespace gf
