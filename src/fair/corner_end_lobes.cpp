@@ -163,12 +163,73 @@ int bend_after_inflection(const Cubic& c) {
   return !k || *k == 0.0 ? 0 : (*k > 0.0 ? 1 : -1);
 }
 
+// The first curve after the line that starts at node k (nodes[k] has no out-handle): the cubic
+// from the line's far node, or none where a corner or another line comes first.
+std::optional<Cubic> curve_after_line(const std::vector<OutlineNode>& nodes, std::size_t k) {
+  const std::size_t far = (k + 1) % nodes.size();
+  const OutlineNode& e = nodes[far];
+  if (!e.smooth || !e.out_handle || !nodes[(far + 1) % nodes.size()].in_handle) return std::nullopt;
+  return outline_cubic(nodes, far);
+}
+
+// A lobe from the corner at node 0 into a line (node 1 starts it) that the curve beyond the
+// line bends away from: no cubic from the corner can meet the line there bending the other way
+// (its end and end tangent are the line's), so the corner moves onto the line's extension and
+// the line runs from it, where the lobe is nearly straight: the corner's arriving segment
+// follows it (a line from a corner, or a cubic whose last handle moves with it). Dropped.
+bool straighten_into_line(std::vector<OutlineNode>& nodes, std::vector<double>& allowance,
+                          const CornerLobeLimits& limits) {
+  const std::size_t last = nodes.size() - 1;
+  OutlineNode &corner = nodes[0], &join = nodes[1];
+  if (corner.smooth || !corner.out_handle || !join.in_handle || join.out_handle || !join.smooth) return false;
+  const Cubic lobe = outline_cubic(nodes, 0);
+  const std::optional<Cubic> beyond = curve_after_line(nodes, 1);
+  const int way = beyond ? bend_of(*beyond) : 0;
+  const std::optional<double> ending = curvature(derivatives_at(lobe, 0.75));
+  if (way == 0 || !ending || *ending * way >= 0.0) return false;
+  const Vec2 e = nodes[2].point, along = (e - join.point) / norm(e - join.point);
+  const Vec2 moved = join.point + along * dot(corner.point - join.point, along);
+  if (dot(e - moved, along) <= 0.0) return false;
+  // The segment arriving at the corner, moved with it.
+  const OutlineNode& before = nodes[last];
+  const bool arriving_cubic = corner.in_handle.has_value();
+  if (!arriving_cubic && before.smooth) return false;
+  const Segment was = arriving_cubic ? Segment{outline_cubic(nodes, last)} : Segment{Line{{before.point, corner.point}}};
+  const Vec2 shift = moved - corner.point;
+  const Segment now = arriving_cubic ? Segment{Cubic{{before.point, *before.out_handle, *corner.in_handle + shift, moved}}}
+                                     : Segment{Line{{before.point, moved}}};
+  // A cubic moved so must keep its shape: no H/V extremum or inflection it did not have.
+  if (arriving_cubic) {
+    const Cubic& c = std::get<Cubic>(now);
+    const Cubic& c0 = std::get<Cubic>(was);
+    if (inner_extrema(c).size() > inner_extrema(c0).size() || inner_inflections(c).size() > inner_inflections(c0).size())
+      return false;
+  }
+  const std::optional<Vec2> arrives = end_tangent(now, SegmentEnd::end);
+  const double drawn = turning_angle(arriving_direction(nodes, 0), leaving_direction(nodes, 0));
+  if (!arrives) return false;
+  const double turned = turning_angle(*arrives, along);
+  if (turned * drawn <= 0.0 || std::abs(turned) < std::max(radians(limits.least_corner_deg), 0.5 * std::abs(drawn)))
+    return false;
+  const double room = std::min({allowance[last], allowance[0], allowance[1]});
+  const double move = outline_move({was, lobe, Line{{join.point, e}}}, {now, Line{{moved, e}}}, sample_spacing, room);
+  if (move >= room) return false;
+  if (arriving_cubic) corner.in_handle = *corner.in_handle + shift;
+  corner.point = moved;
+  corner.out_handle.reset();
+  nodes.erase(nodes.begin() + 1);
+  allowance.erase(allowance.begin() + 1);
+  allowance[0] = allowance.back() = room - move;
+  return true;
+}
+
 // The lobe after the corner at node 0, if there is one to drop: dropped. The lobe bends
 // against the way the outline goes on, and ends inside the first cubic, at its end, or inside
 // the second; the cubics up to there become one, ending as the last of them ends (so what
 // follows meets it as before).
 bool drop_after_corner(std::vector<OutlineNode>& nodes, std::vector<double>& allowance,
                        const CornerLobeLimits& limits) {
+  if (straighten_into_line(nodes, allowance, limits)) return true;
   if (nodes[0].smooth || !nodes[0].out_handle || !nodes[1].in_handle) return false;
   const Cubic first = outline_cubic(nodes, 0);
   const std::optional<Vec2> drawn = end_tangent(first, SegmentEnd::start);
@@ -231,13 +292,13 @@ int drop_corner_end_lobes(std::vector<OutlineNode>& nodes, bool closed, std::vec
   reverse_outline(nodes, allowance);
   dropped += drop_after_corners(nodes, allowance, limits);
   reverse_outline(nodes, allowance);
-  // The passes leave the outline rotated: it starts where it did, where that node is left.
-  const auto first = std::find_if(nodes.begin(), nodes.end(), [&](const OutlineNode& q) { return q.point == start; });
-  if (first != nodes.end()) {
-    const auto k = first - nodes.begin();
-    std::rotate(nodes.begin(), first, nodes.end());
-    std::rotate(allowance.begin(), allowance.begin() + k, allowance.end());
-  }
+  // The passes leave the outline rotated: it starts again at the node nearest where it did.
+  const auto first = std::min_element(nodes.begin(), nodes.end(), [&](const OutlineNode& a, const OutlineNode& b) {
+    return distance(a.point, start) < distance(b.point, start);
+  });
+  const auto k = first - nodes.begin();
+  std::rotate(nodes.begin(), first, nodes.end());
+  std::rotate(allowance.begin(), allowance.begin() + k, allowance.end());
   return dropped;
 }
 

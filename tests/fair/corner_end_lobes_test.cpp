@@ -42,6 +42,9 @@ int sign_changes(const std::vector<OutlineNode>& nodes, std::size_t from, std::s
   return changes;
 }
 
+// The way a cubic bends at its middle.
+int bend_sign(const Cubic& c) { return *curvature(derivatives_at(c, 0.5)) > 0.0 ? 1 : -1; }
+
 std::vector<OutlineNode> reversed(const std::vector<OutlineNode>& nodes) {
   std::vector<OutlineNode> out;
   for (auto it = nodes.rbegin(); it != nodes.rend(); ++it)
@@ -121,6 +124,32 @@ TEST(CornerEndLobes, ALobeInsideTheCornersCubicIsDroppedFromIt) {
   const Cubic now = outline_cubic(nodes, 0), was = outline_cubic(before, 0);
   EXPECT_NEAR(*end_curvature(now, SegmentEnd::end).curvature, *end_curvature(was, SegmentEnd::end).curvature, 1e-12);
   EXPECT_LE(test::polyline_hausdorff(dense(before), dense(nodes)), 5.0 + 1e-9);
+}
+
+TEST(CornerEndLobes, ALobeIntoALineBecomesTheLineFromTheCornerMovedOntoIt) {
+  // From the corner C = (0, 0), 2 units left of the upright line x = 2 from N = (2, 60) to
+  // E = (2, 200), the lobe bends left into the line (κ = 0 at N); beyond the line the curve
+  // bends right to the corner F. C is reached by a line from the corner (−40, −100).
+  std::vector<OutlineNode> nodes = {
+      test::node({0, 0}, std::nullopt, Vec2{2, 20}, false),   test::node({2, 60}, Vec2{2, 40}, std::nullopt),
+      test::node({2, 200}, std::nullopt, Vec2{2, 240}),      test::node({40, 300}, Vec2{2, 270}, std::nullopt, false),
+      test::node({100, 300}, std::nullopt, std::nullopt, false), test::node({100, -100}, std::nullopt, std::nullopt, false),
+      test::node({-40, -100}, std::nullopt, std::nullopt, false)};
+  const std::vector<OutlineNode> before = nodes;
+  ASSERT_EQ(sign_changes(nodes, 0, 1) + (bend_sign(outline_cubic(nodes, 0)) != bend_sign(outline_cubic(nodes, 2))), 1);
+  std::vector<double> allowance(nodes.size(), 5.0);
+  ASSERT_EQ(drop_corner_end_lobes(nodes, true, allowance), 1);
+  ASSERT_EQ(nodes.size(), before.size() - 1);
+  // The corner on the line's extension, the line from it to E, E and what follows as they were.
+  EXPECT_EQ(nodes[0].point, (Vec2{2, 0}));
+  EXPECT_FALSE(nodes[0].smooth);
+  EXPECT_FALSE(nodes[0].out_handle.has_value());
+  EXPECT_EQ(nodes[1], before[2]);
+  EXPECT_EQ(nodes[2], before[3]);
+  // Still a corner, turning left as before.
+  EXPECT_GT(turning_angle(arriving_direction(nodes, 0), leaving_direction(nodes, 0)), radians(6.0));
+  EXPECT_LE(test::polyline_hausdorff(dense(before), dense(nodes)), 5.0 + 1e-9);
+  EXPECT_EQ(allowance.size(), nodes.size());
 }
 
 TEST(CornerEndLobes, ALobeFartherFromAOneWayCurveThanTheAllowanceStays) {
