@@ -32,12 +32,14 @@ std::vector<double> inner_inflections(const Cubic& c) {
   return out;
 }
 
-// The way a cubic bends (1 left, −1 right), or 0 where it bends both ways or not at all.
-int bend_of(const Cubic& c) {
-  if (!inner_inflections(c).empty()) return 0;
-  const std::optional<double> k = curvature(derivatives_at(c, 0.5));
+// The way a cubic bends at t (1 left, −1 right), or 0 where it is straight there.
+int bend_at(const Cubic& c, double t) {
+  const std::optional<double> k = curvature(derivatives_at(c, t));
   return !k || *k == 0.0 ? 0 : (*k > 0.0 ? 1 : -1);
 }
+
+// The way a cubic bends, or 0 where it bends both ways or not at all.
+int bend_of(const Cubic& c) { return inner_inflections(c).empty() ? bend_at(c, 0.5) : 0; }
 
 // The cubic's H/V extrema that need a node: those farther along it from both ends than
 // end_share of its length (the check's margin is twice that; half is left for rounding).
@@ -158,9 +160,7 @@ void put_in(std::vector<OutlineNode>& nodes, std::vector<double>& allowance, std
 // The way the cubic bends after its only inflection, or 0 where it has none or more.
 int bend_after_inflection(const Cubic& c) {
   const std::vector<double> roots = inner_inflections(c);
-  if (roots.size() != 1) return 0;
-  const std::optional<double> k = curvature(derivatives_at(c, 0.5 * (roots[0] + 1.0)));
-  return !k || *k == 0.0 ? 0 : (*k > 0.0 ? 1 : -1);
+  return roots.size() == 1 ? bend_at(c, 0.5 * (roots[0] + 1.0)) : 0;
 }
 
 // The first curve after the line that starts at node k (nodes[k] has no out-handle): the cubic
@@ -175,8 +175,8 @@ std::optional<Cubic> curve_after_line(const std::vector<OutlineNode>& nodes, std
 // A lobe from the corner at node 0 into a line (node 1 starts it) that the curve beyond the
 // line bends away from: no cubic from the corner can meet the line there bending the other way
 // (its end and end tangent are the line's), so the corner moves onto the line's extension and
-// the line runs from it, where the lobe is nearly straight: the corner's arriving segment
-// follows it (a line from a corner, or a cubic whose last handle moves with it). Dropped.
+// the line runs from it, within the allowance: the corner's arriving segment follows it (a line
+// from a corner, or a cubic whose last handle moves with it). Dropped.
 bool straighten_into_line(std::vector<OutlineNode>& nodes, std::vector<double>& allowance,
                           const CornerLobeLimits& limits) {
   const std::size_t last = nodes.size() - 1;
@@ -185,8 +185,7 @@ bool straighten_into_line(std::vector<OutlineNode>& nodes, std::vector<double>& 
   const Cubic lobe = outline_cubic(nodes, 0);
   const std::optional<Cubic> beyond = curve_after_line(nodes, 1);
   const int way = beyond ? bend_of(*beyond) : 0;
-  const std::optional<double> ending = curvature(derivatives_at(lobe, 0.75));
-  if (way == 0 || !ending || *ending * way >= 0.0) return false;
+  if (way == 0 || bend_at(lobe, 0.75) != -way) return false;
   const Vec2 e = nodes[2].point, along = (e - join.point) / norm(e - join.point);
   const Vec2 moved = join.point + along * dot(corner.point - join.point, along);
   if (dot(e - moved, along) <= 0.0) return false;

@@ -7,7 +7,6 @@
 // from the corner, moved onto it.
 #pragma once
 
-#include <span>
 #include <vector>
 
 #include "fair/outline_nodes.hpp"
