@@ -39,7 +39,7 @@ void FairCommand::add_to(CLI::App& app) {
                "g2 (curvature matched at every smooth join), g3 (its rate of change too) or g1")
       ->check(CLI::IsMember({"g1", "g2", "g3"}));
   c.add_option("--tolerance", tolerance_,
-               "Largest distance from the source, font units (default 0.125 % of the em for text, 1.2 % for handwriting)")
+               "Largest distance from the source, font units (default 0.125 % of the em for text, 1.4 % for handwriting)")
       ->check(CLI::PositiveNumber);
   c.add_option("--corner-angle", corner_angle_,
                "Joins turning by more than this many degrees stay corners (default 3 for text, 30 for handwriting)")
