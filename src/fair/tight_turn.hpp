@@ -3,7 +3,8 @@
 // radius. Faired as a curve, that radius comes back as a curvature spike, κ·UPM in the
 // hundreds, which alone holds most of a glyph's curvature variation. It reads as a corner and
 // is made one: the contour is split at the turn's sharpest point, and the pieces either side
-// of it keep the directions the contour had before and after the turn.
+// of it keep the directions the contour had before and after the turn. A stroke's end that
+// narrow (a hairline's) turns back on itself and becomes a needle.
 #pragma once
 
 #include <span>
@@ -22,7 +23,10 @@ struct TightTurn {
 
 struct TightTurnLimits {
   double min_turn_deg = 30.0;   ///< a turn through less is a bend, not a corner
-  double max_turn_deg = 160.0;  ///< through more, the corner would be a needle (a stroke's end)
+  /// Through more, the stretch is a loop. A turn back on itself within the deviation (a
+  /// hairline's end, narrower than the tolerance) is a needle: faired round, the guide drew it
+  /// as a spike of its own (Typo Script's loops, tips of 5 units against 14: κ·UPM 1,450).
+  double max_turn_deg = 200.0;
   /// The turn's sharpest radius at most this, and the bend within this of the two lines
   /// through its sharpest point along its directions before and after. A turn's stretch keeps
   /// its peak's sign and a radius of at most twice this, and ends no nearer a corner.

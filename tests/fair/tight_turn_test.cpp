@@ -1,6 +1,7 @@
 // Tight turns: a bend of small radius through a corner's worth of turning is split at its
 // sharpest point (the same curve), and the runs either side leave it along the directions
-// before and after the bend; a wide bend, a stroke's end and a corner are left alone.
+// before and after the bend; a wide bend and a corner are left alone, and a stroke's end too
+// where the limits stop short of a half turn. A hairline's end is a needle.
 #include "fair/tight_turn.hpp"
 
 #include <gtest/gtest.h>
@@ -77,6 +78,37 @@ TEST(TightTurn, AWideBendAStrokeEndAndAGentleTurnStayCurves) {
     EXPECT_TRUE(found.turns.empty()) << "radius " << r << ", turn " << turn << "°";
     EXPECT_EQ(found.contour.segments, source.segments);
   }
+}
+
+// A hairline's end: the pen turns back on itself within a radius of 3 units (178°); with the
+// default limits (through up to 200°) it is a needle, the same curve split at its tip, the
+// runs leaving it nearly opposite ways; faired, the tip a corner and the sides from it nowhere
+// as sharp as the tip was.
+TEST(TightTurn, AHairlinesEndIsANeedle) {
+  const Contour source = reversal(3.0, 178.0 * deg);
+  TightTurnLimits needle;
+  needle.deviation_units = 5.0;
+  const TightTurns found = find_tight_turns(source, needle);
+  ASSERT_EQ(found.turns.size(), 1u);
+  const TightTurn& t = found.turns.front();
+  EXPECT_GT(std::abs(turning_angle(t.tangent_in, t.tangent_out)), 160.0 * deg);
+  // The same curve (sampled ten times as densely as elsewhere: the tip is 3 units round).
+  EXPECT_LT(test::point_set_hausdorff(test::contour_points(found.contour, 4000), test::contour_points(source, 4000)), 0.1);
+  FairOptions fo;
+  fo.profile = FairProfile::handwriting;
+  const ContourFairing r = fair_contour(source, resolve_settings(fo, 1000.0));
+  ASSERT_TRUE(r.faired) << r.reason;
+  // The tip a corner turning back on itself, the sides from it nowhere as sharp as the tip was.
+  const Contour& c = r.contour;
+  std::size_t tip = 0;
+  for (std::size_t i = 1; i < c.segments.size(); ++i)
+    if (norm(c.node_point(i)) < norm(c.node_point(tip))) tip = i;
+  EXPECT_LE(norm(c.node_point(tip)), 3.0);
+  const Segment& before = c.segments[(tip + c.segments.size() - 1) % c.segments.size()];
+  EXPECT_GT(std::abs(turning_angle(*end_tangent(before, SegmentEnd::end), *end_tangent(c.segments[tip], SegmentEnd::start))),
+            170.0 * deg);
+  for (const Segment* s : {&before, &c.segments[tip]})
+    for (int k = 0; k <= 64; ++k) EXPECT_LT(std::abs(curvature(derivatives_at(*s, k / 64.0)).value_or(0.0)), 1.0 / 3.0);
 }
 
 TEST(TightTurn, ACornerIsNotATightTurn) {
