@@ -401,18 +401,25 @@ std::vector<double> tolerance_left(std::span<const double> by_segment, double to
   return out;
 }
 
+// The same for the outline `nodes` draws, its distances measured from the source here.
+std::vector<double> tolerance_left_at(const std::vector<OutlineNode>& nodes, bool closed,
+                                      const SampledContour& sampled_source, double tolerance_units, double reserve) {
+  const SampledContour sampled(to_contour(nodes, closed));
+  return tolerance_left(distance_by_piece(sampled.grid, sampled.samples.segment_of, sampled_source.grid),
+                        tolerance_units, reserve);
+}
+
 // --continuity g3: the written cubics made as G3 as their allowances let them (fair/g3_cubics),
 // the nodes they add held within g3_node_share of the cubics, and within the fairing issue's
 // bar of 1.3 times the source's nodes (`source_nodes`), which the G3 output must keep too (TeX
 // Gyre Heros a–z A–Z: 1.18× under G2, 1.31× with 17 nodes added for G3).
 G3CubicReport carry_g3_into_cubics(std::vector<OutlineNode>& nodes, bool closed, const SampledContour& sampled_source,
                                    std::size_t source_nodes, const FairSettings& settings) {
-  const SampledContour sampled(to_contour(nodes, closed));
-  const std::vector<double> by_segment = distance_by_piece(sampled.grid, sampled.samples.segment_of, sampled_source.grid);
   const double reserve = settings.rounding == Rounding::integers
                              ? std::min(g3_rounding_reserve, g3_reserve_share * settings.tolerance_units)
                              : 0.0;
-  const std::vector<double> allowance = tolerance_left(by_segment, settings.tolerance_units, reserve);
+  const std::vector<double> allowance =
+      tolerance_left_at(nodes, closed, sampled_source, settings.tolerance_units, reserve);
   std::size_t cubics = 0;
   for (const OutlineNode& node : nodes) cubics += node.out_handle.has_value();
   const int budget = g3_node_budget(cubics, nodes.size(), source_nodes, g3_node_share, most_nodes_share);
@@ -441,10 +448,9 @@ void fillet_leaning_lines(std::vector<OutlineNode>& nodes, bool closed, const Sa
 // `available` at the cubics it replaces; kept where the whole outline stays within `available`.
 void drop_lobes_at_corners(std::vector<OutlineNode>& nodes, bool closed, const SampledContour& sampled_source,
                            const FairSettings& settings, double available) {
-  const SampledContour sampled(to_contour(nodes, closed));
-  const std::vector<double> by_segment = distance_by_piece(sampled.grid, sampled.samples.segment_of, sampled_source.grid);
+  if (std::all_of(nodes.begin(), nodes.end(), [](const OutlineNode& q) { return q.smooth; })) return;
   std::vector<double> allowance =
-      tolerance_left(by_segment, settings.tolerance_units, settings.tolerance_units - available);
+      tolerance_left_at(nodes, closed, sampled_source, settings.tolerance_units, settings.tolerance_units - available);
   std::vector<OutlineNode> dropped = nodes;
   if (drop_corner_end_lobes(dropped, closed, allowance) == 0) return;
   if (distance_between(SampledContour(to_contour(dropped, closed)), sampled_source) > available) return;

@@ -37,10 +37,11 @@ struct FairOptions {
 ///                sampling; at 1 % dkg kept half its inflections and Because We Learn more, at
 ///                1.2 % Domestic Manners kept 0.52× its source's); corners from 30° (fonts
 ///                traced from scans break their curves by 3–20° at many joins; a stroke end or
-///                a sharp turn of the pen turns by far more), and wobbles up to the tolerance smoothed away: each run
-///                is first replaced by the smoothest spline within 0.8 of the chain's budget
-///                (geom/smoothing_spline's sparse penalty: fewest changes of curvature; its
-///                lobes turning less than 30° merged into their neighbours).
+///                a sharp turn of the pen turns by far more), and wobbles up to the tolerance
+///                smoothed away: each run is first replaced by the smoothest spline within 0.8
+///                of the chain's budget (geom/smoothing_spline's sparse penalty: fewest
+///                changes of curvature; its lobes turning less than 30° merged into their
+///                neighbours).
 struct FairSettings {
   FairProfile profile = FairProfile::text;
   Continuity continuity = Continuity::g2;

@@ -2,11 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "geom/polyline_distance.hpp"
 
 namespace gf {
 
+namespace {
+
+// Points at most `spacing` apart along the segments (by their control polygons), in order.
 std::vector<Vec2> points_along(std::initializer_list<Segment> segments, double spacing) {
   std::vector<Vec2> out;
   for (const Segment& s : segments) {
@@ -15,6 +19,8 @@ std::vector<Vec2> points_along(std::initializer_list<Segment> segments, double s
   }
   return out;
 }
+
+}  // namespace
 
 double outline_move(std::initializer_list<Segment> before, std::initializer_list<Segment> after, double spacing,
                     double limit) {

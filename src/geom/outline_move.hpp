@@ -4,14 +4,10 @@
 
 #include <initializer_list>
 #include <limits>
-#include <vector>
 
 #include "geom/segment.hpp"
 
 namespace gf {
-
-/// Points at most `spacing` apart along the segments (by their control polygons), in order.
-std::vector<Vec2> points_along(std::initializer_list<Segment> segments, double spacing);
 
 /// How far the outline moves, both ways, from the segments `before` to `after`, measured on
 /// points `spacing` apart; past `limit`, only that it is past.
