@@ -243,8 +243,9 @@ std::vector<OutlineNode> drawn_nodes(const SmoothRun& run, double most_move, Fai
 Attempt fair_with_budgets(const ContourPlan& plan, const FairSettings& settings, Budgets budgets, FairedRuns& cache,
                           bool after_run_failure, RunBasis basis, bool as_drawn = false) {
   Attempt a;
+  const bool hand = settings.profile == FairProfile::handwriting;
   const SpanCutting cutting{settings.rounding == Rounding::integers ? settings.shortest_rounded_span_units : shortest_span_units,
-                            settings.profile == FairProfile::handwriting};
+                            hand, hand};
   const std::size_t count = plan.pieces.size();
   std::vector<std::optional<FairedRun>> runs(count);
   for (std::size_t i = 0; i < count; ++i) {
@@ -664,6 +665,7 @@ ContourFairing fair_curve(const Contour& source, const Contour& curve, const Con
   ContourFairing out;
   out.contour = source;
   PlanOptions options{settings.corner_angle_deg, settings.profile == FairProfile::text};
+  options.stub_line_units = settings.stub_line_units;
   // `open`: with PlanOptions::open_against_lines.
   const auto plan_with = [&](std::span<const std::size_t> smooth_nodes, bool open = false) {
     PlanOptions o = options;

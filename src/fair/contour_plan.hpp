@@ -81,6 +81,10 @@ struct PlanOptions {
   /// turns by the corner floor (smooth, the curve could meet the line only through an
   /// inflection the source does not draw).
   bool open_against_lines = false;
+  /// A line shorter than this (units) that a curve meets tangentially, with a corner or
+  /// another such curve at its other end, is the curve's stretch drawn straight and becomes
+  /// part of its run (2: as short as the cubics rounding merges).
+  double stub_line_units = 2.0;
 };
 
 /// Corners: joins whose smooth flag says so where the source has flags, else joins turning by

@@ -17,6 +17,11 @@ constexpr int slide_samples = 24;      // points per cubic where a node's slide 
 // for every cubic meeting a line, the passes slid more joins along their lines and left more
 // jumps elsewhere (a–z A–Z: TeX Gyre Pagella 10 → 15, EB Garamond 55 → 60, Lato 0 → 1).
 constexpr double line_stretch = 48.0;
+// The share of the outline's largest |κ| rounding may take off it, so that the turns at nodes
+// the choices weigh are those the check will count (Because We Learn's L: a peak of κ·UPM 25.8
+// rounded to 24.0, and a tooth of 0.24 at a node counted against 0.240 but weighed against
+// 0.258). Not in the cubics' shapes: on text, Comic Neue a–z A–Z g2-jumps 22 → 29.
+constexpr double turn_peak_margin = 0.1;
 
 // A line from a join towards its far end: a point a unit for line_stretch units, then the far end.
 std::vector<Vec2> line_from(Vec2 join, Vec2 far) {
@@ -89,6 +94,7 @@ CubicJudge::CubicJudge(const std::vector<OutlineNode>& rounded, const std::vecto
     // κ turns count from 1 % of the outline's largest unrounded |κ|, as the check counts them.
     hysteresis_ = std::max(hysteresis_, 0.01 * curvature_shape(unrounded_[i], 0.0).largest);
   }
+  node_hysteresis_ = (1.0 - turn_peak_margin) * hysteresis_;
   for (std::size_t i = 0; i < n; ++i) joins_before_[i] = joins.joins_cubics(i);
   for (std::size_t i = 0; i < n; ++i)
     if (joins.is_cubic(i) && joins.meets_line(i) && joins.meets_line((i + 1) % n))

@@ -274,6 +274,7 @@ class SpanWriter {
       if (have_within && q > finest) return;  // coarser than one already within: not measured
       const std::vector<Vec2> pts = cubic_points(c);
       if (absolute_turning(pa.tangent, pts, pb.tangent) > turning + fold_margin) return;
+      if (cutting_.no_inner_extrema && inner_axis_extrema_of(c).off_node > 0) return;
       const double d = cubic_deviation(pts, lac, have_within ? budget_ : std::min(cap, std::max(best.deviation, budget_)));
       if (d <= budget_) {
         if (!have_within || q < finest || d < best.deviation) best = {c, d}, finest = q;

@@ -63,6 +63,13 @@ struct SpanCutting {
   /// nodes, on no grid direction, round to one a few tenths of a degree off, and the longer
   /// cubics took more g2-jumps (EB Garamond a–z A–Z 100 → 117, Gentium Plus 9 → 12).
   bool evenly = false;
+  /// No cubic that crosses an axis inside, off its nodes: the path's extrema are nodes, so such
+  /// a cubic wobbles where the path does not. Handwriting, whose budget of ten units or more
+  /// let a long, nearly level guide span of Femke Klaver's Z come out as one S-shaped cubic
+  /// with two extrema inside (2 units deep over 765). Not on text, whose rounding moves such
+  /// an extremum onto its node or off the cubic; turned away there, Gentium Plus's M took a
+  /// node more and a g2-jump.
+  bool no_inner_extrema = false;
 };
 
 /// `flat_curvature`: below it a node's curvature counts as zero (a line join), not as a

@@ -41,7 +41,8 @@ struct FairOptions {
 ///                smoothed away: each run is first replaced by the smoothest spline within 0.8
 ///                of the chain's budget (geom/smoothing_spline's sparse penalty: fewest
 ///                changes of curvature; its lobes turning less than 30° merged into their
-///                neighbours).
+///                neighbours); lines under twice the tolerance that a curve meets
+///                tangentially faired with it (`stub_line_units`).
 struct FairSettings {
   FairProfile profile = FairProfile::text;
   Continuity continuity = Continuity::g2;
@@ -77,6 +78,12 @@ struct FairSettings {
   /// Handwriting: each chain's free junction tangents start inside the wedge between their
   /// chords (fair/initial_tangents); on text, g2-jumps moved both ways (seven fonts 20 → 21).
   bool tangents_between_chords = false;
+  /// A line shorter than this (units) that a curve meets tangentially is the curve's stretch
+  /// drawn straight, faired with it (fair/contour_plan's PlanOptions::stub_line_units): text
+  /// 2 units; handwriting twice the tolerance, where a tracer draws the flat top of a round
+  /// stroke end as a line of a few units and the joins' κ = 0 split it into two peaks
+  /// (Tomson Talks's N: TV 622 → 513).
+  double stub_line_units = 2.0;
   bool operator==(const FairSettings&) const = default;
 };
 

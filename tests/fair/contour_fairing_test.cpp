@@ -992,6 +992,25 @@ TEST(ContourFairing, AStrokesEdgeRunsIntoItsCornerBendingOneWay) {
   EXPECT_EQ(changes, 0);
 }
 
+// Because We Learn's P: where its arm leaves the bowl's outer edge, the tracer drew the stroke's
+// top as a corner, a 16-unit line and the curve down. Met with κ = 0 at both ends, the line
+// left a hook bending back against the bowl (κ·UPM −72 beside the corner). The handwriting
+// profile fairs a line under twice its tolerance with its curve: the outer edge bends one way
+// all round and keeps no line.
+TEST(ContourFairing, AHandwritingStubLineIsFairedWithItsCurve) {
+  const FairedGlyph f = fair_named(test::because_we_learn, "P", options_for(FairProfile::handwriting, Rounding::integers));
+  ASSERT_TRUE(f.result.kept.empty()) << f.result.kept.front();
+  ASSERT_EQ(f.result.glyph.outline.contours.size(), 2u);
+  const Contour& outer = f.result.glyph.outline.contours[0];
+  double least = 0.0;
+  for (const Segment& s : outer.segments) {
+    EXPECT_FALSE(is_line(s)) << "a line from " << start_point(s).x << ", " << start_point(s).y;
+    for (int step = 0; step <= 64; ++step)
+      if (const std::optional<double> k = curvature(derivatives_at(s, step / 64.0))) least = std::min(least, *k * f.upm);
+  }
+  EXPECT_GT(least, -0.5);
+}
+
 // Because We Learn's f, h, s, E, R and W each kept one smooth node over the check's limit on the
 // grid: no move of that node alone mends it, only one that its neighbours' handles follow
 // (HandleStepLimits::polish_rounds).
@@ -1067,7 +1086,9 @@ TEST(ContourFairing, HandwritingGlyphsAreG2BeforeRounding) {
 // unrounded cubic there has it to rounding: the writeback once took the chain's end κ a
 // rounding short of its end, where κ falls steeply (Inter's a had 7.8 per em there). On a
 // handwriting run a κ = 0 end no segment could draw was once let go, G1 only: Because We
-// Learn's P met its bowl's line with κ −51 per em; its guide carries it now.
+// Learn's P met its bowl's line with κ −51 per em; its guide carries it now. That line is 16
+// units, and since the handwriting profile fairs lines under twice its tolerance with their
+// curves, Because We Learn's Y and n carry the handwriting joins (five and four).
 TEST(ContourFairing, CurvesMeetTheirLinesWithZeroCurvatureBeforeRounding) {
   struct Case {
     const std::string* font;
@@ -1078,7 +1099,8 @@ TEST(ContourFairing, CurvesMeetTheirLinesWithZeroCurvatureBeforeRounding) {
                          {&test::inter_variable, "uni0067", FairProfile::text},
                          {&test::dejavu, "S", FairProfile::text},
                          {&test::dejavu, "y", FairProfile::text},
-                         {&test::because_we_learn, "P", FairProfile::handwriting}};
+                         {&test::because_we_learn, "Y", FairProfile::handwriting},
+                         {&test::because_we_learn, "n", FairProfile::handwriting}};
   for (const auto& [font, name, profile] : glyphs) {
     const FairedGlyph f = fair_named(*font, name, options_for(profile, Rounding::none));
     const GlyphFairing& r = f.result;

@@ -65,6 +65,22 @@ TEST(ContourPlan, ALineUnderTwoUnitsBetweenACurveAndACornerIsTheCurvesLastStretc
   EXPECT_TRUE(std::holds_alternative<Line>(longer.pieces[1]));
 }
 
+TEST(ContourPlan, ALineUnderTheStubLengthGivenIsTheCurvesToo) {
+  // Handwriting's stub length is twice its tolerance (fair_options): a 20-unit line the curve
+  // meets level is its last stretch under a stub length of 28, a line under 20.
+  PlanOptions hand{30.0};
+  hand.stub_line_units = 28.0;
+  const ContourPlan plan = plan_contour(curve_onto_stub_line(20.0), {}, hand);
+  ASSERT_EQ(plan.pieces.size(), 3u);
+  const SmoothRun& run = std::get<SmoothRun>(plan.pieces[0]);
+  ASSERT_EQ(run.cubics.size(), 2u);
+  EXPECT_TRUE(is_straight(run.cubics[1]));
+  EXPECT_EQ(run.cubics[1].p[3], (Vec2{120, 0}));
+  EXPECT_EQ(run.end.kind, RunEndKind::corner);
+  hand.stub_line_units = 20.0;
+  EXPECT_EQ(plan_contour(curve_onto_stub_line(20.0), {}, hand).pieces.size(), 4u);
+}
+
 TEST(ContourPlan, CornersThatStaySayWhatLiesBeyondThem) {
   // line_then_curves(10°): the run leaves the first line at a corner of 10° and meets the
   // closing line at (100, 200) at another; each of its ends says the line's direction beyond.

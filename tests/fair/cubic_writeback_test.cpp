@@ -1,6 +1,6 @@
 // The cubic writeback of a faired chain: an extremum a few units from a corner; the shortest
 // span it halves; a corner's free curvature; a nearly straight stroke cut where it runs along
-// a longer grid direction, or evenly along it.
+// a longer grid direction, or evenly along it; a cubic crossing an axis inside.
 #include "fair/cubic_writeback.hpp"
 
 #include <gtest/gtest.h>
@@ -196,6 +196,44 @@ TEST(CubicWriteback, AStrokeNoGridDirectionCutsTakesTheFewestCubicsThroughEvenPl
   EXPECT_EQ(halved.nodes.size(), 9u);
   EXPECT_EQ(evenly.nodes.size(), 7u);
   expect_faithful_cubics(chain, evenly, budget, 1e-5);
+}
+
+// A stroke's edge that rises, turns left within 20 units to run 5° above level for 300 units
+// while turning 4° more, and turns up again at the end: it rises all the way and meets the
+// vertical only at its ends, so it has no extremum inside. Within a budget of 15 units (a
+// handwriting tolerance) one G2 Hermite cubic from end to end fits, dipping below the level
+// and back: two horizontal extrema without nodes. Handwriting turns such a cubic away
+// (SpanCutting::no_inner_extrema) and cuts the span instead.
+TEST(CubicWriteback, ACubicCrossingAnAxisInsideIsCut) {
+  const auto heading = [](double deg) { return Vec2{std::cos(radians(deg)), std::sin(radians(deg))}; };
+  const Vec2 p0{0, 0}, p1 = p0 + heading(132.5) * 20.0, p2 = p1 + heading(177.0) * 300.0, p3 = p2 + heading(134.5) * 20.0;
+  const SegmentFit rise = fit_three_point(p0, p0 + heading(90.0) * 12.0, p1, 1.0);
+  const SegmentFit level = fit_three_point(p1, p1 + heading(175.0) * 150.0, p2, 1.0);
+  const SegmentFit up = fit_three_point(p2, p2 + heading(179.0) * 12.0, p3, 1.0);
+  ASSERT_TRUE(rise.ok() && level.ok() && up.ok());
+  FairedChain chain;
+  chain.segments = {*rise.segment, *level.segment, *up.segment};
+  const double budget = 15.0, flat = 5e-4;
+  const auto off_node_extrema = [](const ChainCubics& w) {
+    int count = 0;
+    for (std::size_t i = 0; i + 1 < w.nodes.size(); ++i) count += inner_axis_extrema_of(outline_cubic(w.nodes, i)).off_node;
+    return count;
+  };
+  const ChainCubics loose = write_chain_as_cubics(chain, budget, flat, {}, {.shortest_span = 8.0, .evenly = true});
+  ASSERT_EQ(loose.nodes.size(), 2u);
+  EXPECT_EQ(off_node_extrema(loose), 2);
+  const ChainCubics cut = write_chain_as_cubics(chain, budget, flat, {}, {.shortest_span = 8.0, .evenly = true, .no_inner_extrema = true});
+  EXPECT_GT(cut.nodes.size(), 2u);
+  EXPECT_EQ(off_node_extrema(cut), 0);
+  std::vector<Vec2> path;
+  for (const LogAestheticSegment& s : chain.segments)
+    for (const LacPoint& p : s.sample(1000)) path.push_back(p.point);
+  for (std::size_t i = 0; i + 1 < cut.nodes.size(); ++i) {
+    const Cubic c = outline_cubic(cut.nodes, i);
+    std::vector<Vec2> points;
+    for (int k = 0; k <= 400; ++k) points.push_back(c.point_at(k / 400.0));
+    EXPECT_LE(test::directed_to_polyline(points, path), budget) << "cubic " << i;
+  }
 }
 
 }  // namespace
