@@ -666,6 +666,7 @@ ContourFairing fair_curve(const Contour& source, const Contour& curve, const Con
   out.contour = source;
   PlanOptions options{settings.corner_angle_deg, settings.profile == FairProfile::text};
   options.stub_line_units = settings.stub_line_units;
+  options.stub_turn_deg = settings.stub_turn_deg;
   // `open`: with PlanOptions::open_against_lines.
   const auto plan_with = [&](std::span<const std::size_t> smooth_nodes, bool open = false) {
     PlanOptions o = options;

@@ -75,7 +75,7 @@ bool is_made_smooth(std::span<const std::size_t> smooth_nodes, std::size_t node)
 }
 
 // A line shorter than `stub_line_units` that a curve meets tangentially (within `tangential`
-// radians), with a corner (turning by more than `corner`) or another such curve at its other
+// radians: PlanOptions::stub_turn_deg), with a corner (turning by more than `corner`) or another such curve at its other
 // end, is the curve's last stretch drawn straight, not a line to meet with κ = 0: no curve
 // leaves a one-unit line flat within it (Linux Biolinum's f, whose crossbar's curve ends on a
 // line of one unit into the stem's corner, kept κ·UPM −0.73 there). It becomes a straight
@@ -157,7 +157,8 @@ ContourPlan plan_contour(const Contour& source, std::span<const std::size_t> smo
   if (n == 0) return plan;
   const double corner = radians(options.corner_angle_deg);
   const double tangential_line = radians(options.tangential_line_deg);
-  absorb_stub_lines(pieces, contour, smooth_nodes, std::min(corner, tangential_line), corner, options.stub_line_units);
+  const double stub_turn = options.stub_turn_deg ? radians(*options.stub_turn_deg) : tangential_line;
+  absorb_stub_lines(pieces, contour, smooth_nodes, std::min(corner, stub_turn), corner, options.stub_line_units);
   const bool corners_stay = options.corners_stay;
 
   // The join in front of piece i (between piece i−1 and i): its kind, nullopt when smooth

@@ -5,6 +5,7 @@
 // one closed run.
 #pragma once
 
+#include <optional>
 #include <span>
 #include <variant>
 #include <vector>
@@ -85,6 +86,9 @@ struct PlanOptions {
   /// another such curve at its other end, is the curve's stretch drawn straight and becomes
   /// part of its run (2: as short as the cubics rounding merges).
   double stub_line_units = 2.0;
+  /// Where given, a curve meeting such a line within this (degrees), not only tangentially,
+  /// makes the line its own (handwriting: a tracer's stub meets the curve at a scan's kink).
+  std::optional<double> stub_turn_deg;
 };
 
 /// Corners: joins whose smooth flag says so where the source has flags, else joins turning by

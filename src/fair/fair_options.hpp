@@ -84,6 +84,14 @@ struct FairSettings {
   /// stroke end as a line of a few units and the joins' κ = 0 split it into two peaks
   /// (Tomson Talks's N: TV 622 → 513).
   double stub_line_units = 2.0;
+  /// Where given, a curve meeting such a line within this (degrees) counts as meeting it
+  /// tangentially (PlanOptions::stub_turn_deg). Handwriting: half its corner angle, as a
+  /// scan breaks its curves by 3–20° at lines too (Tomson Talks's H: its tip's one-unit line
+  /// met 13° off the curve before it, and the corner there split the tip into two stretches;
+  /// Tomson Talks's TV 0.277× → 0.228× of its source's, the same at 10°, 20° and 30°; at 10°
+  /// Because We Build kept more nodes, at 20° and 30° Femke Klaver's inflections rose 0.40× →
+  /// 0.47×).
+  std::optional<double> stub_turn_deg;
   bool operator==(const FairSettings&) const = default;
 };
 

@@ -81,6 +81,25 @@ TEST(ContourPlan, ALineUnderTheStubLengthGivenIsTheCurvesToo) {
   EXPECT_EQ(plan_contour(curve_onto_stub_line(20.0), {}, hand).pieces.size(), 4u);
 }
 
+TEST(ContourPlan, AStubLineMetAtAKinkIsTheCurvesWithinTheStubTurn) {
+  // The curve arrives 13° below the level of its 10-unit line: a corner to a line, unless the
+  // stub turn (handwriting: half its corner angle) allows it.
+  Contour c = curve_onto_stub_line(10.0);
+  const Vec2 foot{100, 0}, arrival{std::cos(radians(13.0)), -std::sin(radians(13.0))};
+  std::get<Cubic>(c.segments[0]).p[2] = foot - arrival * 60.0;
+  PlanOptions hand{30.0};
+  hand.stub_line_units = 28.0;
+  EXPECT_EQ(plan_contour(c, {}, hand).pieces.size(), 4u);
+  hand.stub_turn_deg = 15.0;
+  const ContourPlan plan = plan_contour(c, {}, hand);
+  ASSERT_EQ(plan.pieces.size(), 3u);
+  const SmoothRun& run = std::get<SmoothRun>(plan.pieces[0]);
+  ASSERT_EQ(run.cubics.size(), 2u);
+  EXPECT_TRUE(is_straight(run.cubics[1]));
+  hand.stub_turn_deg = 10.0;
+  EXPECT_EQ(plan_contour(c, {}, hand).pieces.size(), 4u);
+}
+
 TEST(ContourPlan, CornersThatStaySayWhatLiesBeyondThem) {
   // line_then_curves(10°): the run leaves the first line at a corner of 10° and meets the
   // closing line at (100, 200) at another; each of its ends says the line's direction beyond.
