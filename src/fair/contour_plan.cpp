@@ -75,11 +75,11 @@ bool is_made_smooth(std::span<const std::size_t> smooth_nodes, std::size_t node)
 }
 
 // A line shorter than `stub_line_units` that a curve meets tangentially (within `tangential`
-// radians: PlanOptions::stub_turn_deg), with a corner (turning by more than `corner`) or another such curve at its other
-// end, is the curve's last stretch drawn straight, not a line to meet with κ = 0: no curve
-// leaves a one-unit line flat within it (Linux Biolinum's f, whose crossbar's curve ends on a
-// line of one unit into the stem's corner, kept κ·UPM −0.73 there). It becomes a straight
-// cubic of the curve's run.
+// radians: the tangential line angle, or PlanOptions::stub_turn_deg), with a corner (turning
+// by more than `corner`) or another such curve at its other end, is the curve's last stretch
+// drawn straight, not a line to meet with κ = 0: no curve leaves a one-unit line flat within
+// it (Linux Biolinum's f, whose crossbar's curve ends on a line of one unit into the stem's
+// corner, kept κ·UPM −0.73 there). It becomes a straight cubic of the curve's run.
 void absorb_stub_lines(std::vector<Piece>& pieces, const Contour& contour, std::span<const std::size_t> smooth_nodes,
                        double tangential, double corner, double stub_line_units) {
   const std::size_t n = pieces.size();

@@ -41,8 +41,8 @@ struct FairOptions {
 ///                smoothed away: each run is first replaced by the smoothest spline within 0.8
 ///                of the chain's budget (geom/smoothing_spline's sparse penalty: fewest
 ///                changes of curvature; its lobes turning less than 30° merged into their
-///                neighbours); lines under twice the tolerance that a curve meets
-///                tangentially faired with it (`stub_line_units`).
+///                neighbours); a line under twice the tolerance that a curve meets within
+///                half the corner angle faired with it (`stub_line_units`, `stub_turn_deg`).
 struct FairSettings {
   FairProfile profile = FairProfile::text;
   Continuity continuity = Continuity::g2;
