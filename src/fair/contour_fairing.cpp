@@ -244,8 +244,10 @@ Attempt fair_with_budgets(const ContourPlan& plan, const FairSettings& settings,
                           bool after_run_failure, RunBasis basis, bool as_drawn = false) {
   Attempt a;
   const bool hand = settings.profile == FairProfile::handwriting;
-  const SpanCutting cutting{settings.rounding == Rounding::integers ? settings.shortest_rounded_span_units : shortest_span_units,
-                            hand, hand};
+  const SpanCutting cutting{
+      .shortest_span = settings.rounding == Rounding::integers ? settings.shortest_rounded_span_units : shortest_span_units,
+      .evenly = hand,
+      .no_inner_extrema = hand};
   const std::size_t count = plan.pieces.size();
   std::vector<std::optional<FairedRun>> runs(count);
   for (std::size_t i = 0; i < count; ++i) {
@@ -665,7 +667,7 @@ ContourFairing fair_curve(const Contour& source, const Contour& curve, const Con
   ContourFairing out;
   out.contour = source;
   PlanOptions options{settings.corner_angle_deg, settings.profile == FairProfile::text};
-  options.stub_line_units = settings.stub_line_units;
+  if (settings.stub_line_units) options.stub_line_units = *settings.stub_line_units;
   options.stub_turn_deg = settings.stub_turn_deg;
   // `open`: with PlanOptions::open_against_lines.
   const auto plan_with = [&](std::span<const std::size_t> smooth_nodes, bool open = false) {

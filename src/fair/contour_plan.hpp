@@ -88,7 +88,7 @@ struct PlanOptions {
   double stub_line_units = 2.0;
   /// Where given, a curve meeting such a line within this (degrees), not only tangentially,
   /// makes the line its own (handwriting: a tracer's stub meets the curve at a scan's kink).
-  std::optional<double> stub_turn_deg;
+  std::optional<double> stub_turn_deg{};
 };
 
 /// Corners: joins whose smooth flag says so where the source has flags, else joins turning by

@@ -5,7 +5,7 @@
 #include <optional>
 #include <utility>
 
-#include "geom/arc_length.hpp"
+#include "fair/cubic_change.hpp"
 #include "geom/critical_points.hpp"
 #include "geom/curvature.hpp"
 #include "geom/g2_hermite.hpp"
@@ -43,15 +43,7 @@ int bend_of(const Cubic& c) { return inner_inflections(c).empty() ? bend_at(c, 0
 
 // The cubic's H/V extrema that need a node: those farther along it from both ends than
 // end_share of its length (the check's margin is twice that; half is left for rounding).
-std::vector<AxisExtremum> inner_extrema(const Cubic& c) {
-  std::vector<AxisExtremum> out;
-  const double length = arc_length_estimate(c);
-  for (const AxisExtremum& e : axis_extrema(c)) {
-    const double along = arc_length_estimate(c, 0.0, e.t);
-    if (along > end_share * length && length - along > end_share * length) out.push_back(e);
-  }
-  return out;
-}
+std::vector<AxisExtremum> inner_extrema(const Cubic& c) { return axis_extrema_inside(c, end_share); }
 
 // Whether cutting the cubic at its inner extrema leaves no piece shorter than shortest_piece:
 // shorter, the grid can only make it straight or fold it.

@@ -41,7 +41,7 @@ bool monotone(double a, double b, double c) {
 
 }  // namespace
 
-InnerAxisExtrema inner_axis_extrema_of(const Cubic& c) {
+std::vector<AxisExtremum> axis_extrema_inside(const Cubic& c, double end_share) {
   // Most cubics of an outline run monotone in x and y between nodes at their extrema: no
   // roots to isolate.
   const Vec2 d0 = c.p[1] - c.p[0], d1 = c.p[2] - c.p[1], d2 = c.p[3] - c.p[2];
@@ -49,11 +49,18 @@ InnerAxisExtrema inner_axis_extrema_of(const Cubic& c) {
   // By arc length, not t: a long handle crowds the first hundredth of t into a few units.
   const Segment whole(c);
   std::optional<double> length;  // only for a cubic with an extremum inside (0, 1)
-  InnerAxisExtrema out;
+  std::vector<AxisExtremum> out;
   for (const AxisExtremum& e : axis_extrema(c)) {
     if (!length) length = arc_length_estimate(whole);
     const double before = arc_length_estimate(whole, 0.0, e.t);
-    if (before <= 0.01 * *length || *length - before <= 0.01 * *length) continue;
+    if (before > end_share * *length && *length - before > end_share * *length) out.push_back(e);
+  }
+  return out;
+}
+
+InnerAxisExtrema inner_axis_extrema_of(const Cubic& c) {
+  InnerAxisExtrema out;
+  for (const AxisExtremum& e : axis_extrema_inside(c, 0.01)) {
     ++out.all;
     const Vec2 at = c.point_at(e.t);
     out.off_node += std::min(distance(at, c.p[0]), distance(at, c.p[3])) > 0.5;

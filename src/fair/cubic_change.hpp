@@ -4,8 +4,10 @@
 #pragma once
 
 #include <array>
+#include <vector>
 
 #include "geom/bezier.hpp"
+#include "geom/critical_points.hpp"
 
 namespace gf {
 
@@ -15,6 +17,10 @@ namespace gf {
 /// slid along its own tangent moves far less than it moves the control point. Past `within`,
 /// only that it is past.
 double moved_distance(const Cubic& a, const Cubic& b, double within);
+
+/// A cubic's horizontal and vertical extrema farther along it from both ends than `end_share`
+/// of its arc length, ascending in t.
+std::vector<AxisExtremum> axis_extrema_inside(const Cubic& c, double end_share);
 
 /// A cubic's horizontal and vertical extrema away from its ends: `all` those more than 1 % of
 /// its arc length from both (nearer, they sit on the node); `off_node` those of them also more

@@ -77,6 +77,8 @@ int turns_at_node(const CubicTraits& before, const CubicTraits& after, double hy
   return joined.turns - alone.turns;
 }
 
+double CubicJudge::node_hysteresis() const { return (1.0 - turn_peak_margin) * hysteresis_; }
+
 CubicJudge::CubicJudge(const std::vector<OutlineNode>& rounded, const std::vector<OutlineNode>& ideal,
                        const OutlineJoins& joins, const HandleStepLimits& limits)
     : unrounded_(rounded.size()), allowed_(rounded.size(), 0.0), ideal_(rounded.size()), seen_(rounded.size()),
@@ -94,7 +96,6 @@ CubicJudge::CubicJudge(const std::vector<OutlineNode>& rounded, const std::vecto
     // κ turns count from 1 % of the outline's largest unrounded |κ|, as the check counts them.
     hysteresis_ = std::max(hysteresis_, 0.01 * curvature_shape(unrounded_[i], 0.0).largest);
   }
-  node_hysteresis_ = (1.0 - turn_peak_margin) * hysteresis_;
   for (std::size_t i = 0; i < n; ++i) joins_before_[i] = joins.joins_cubics(i);
   for (std::size_t i = 0; i < n; ++i)
     if (joins.is_cubic(i) && joins.meets_line(i) && joins.meets_line((i + 1) % n))

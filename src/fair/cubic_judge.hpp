@@ -62,7 +62,7 @@ class CubicJudge {
   /// HandleStepLimits::node_turns.
   double node_turn_cost(const CubicTraits& before, const CubicTraits& after, int unrounded_turns) const {
     if (!node_turns_) return 0.0;
-    return node_turn_weight * std::max(0, turns_at_node(before, after, node_hysteresis_) - unrounded_turns);
+    return node_turn_weight * std::max(0, turns_at_node(before, after, node_hysteresis()) - unrounded_turns);
   }
   /// What a curvature jump j at a node costs, one the check counts the more
   /// (HandleStepLimits::counted_jump_cost).
@@ -72,7 +72,7 @@ class CubicJudge {
     return match_slopes() ? slope_jump_cost(before.slope_end, after.slope_start, slope_jump_weight_) : 0.0;
   }
   int unrounded_node_turns(std::size_t h, std::size_t i) const {
-    return node_turns_ ? turns_at_node(ideal_[h], ideal_[i], node_hysteresis_) : 0;
+    return node_turns_ ? turns_at_node(ideal_[h], ideal_[i], node_hysteresis()) : 0;
   }
   /// Whether κ turns at node i (joining cubics h and i) or inside either cubic where the
   /// unrounded outline does not; never unless HandleStepLimits::node_turns.
@@ -136,11 +136,12 @@ class CubicJudge {
   bool band_holds(std::size_t i, const Cubic& c);
 
   CubicTraits measure(std::size_t i, const Cubic& c);
+  /// The hysteresis the turns at nodes count from (turn_peak_margin below hysteresis_).
+  double node_hysteresis() const;
 
   std::vector<Cubic> unrounded_;
   std::vector<double> allowed_;
   double hysteresis_ = 0.0;
-  double node_hysteresis_ = 0.0;  ///< for the turns at nodes (turn_peak_margin)
   std::vector<CubicTraits> ideal_;
   std::vector<std::map<std::array<double, 8>, CubicTraits>> seen_;
   bool inflection_handles_, node_turns_;

@@ -78,12 +78,12 @@ struct FairSettings {
   /// Handwriting: each chain's free junction tangents start inside the wedge between their
   /// chords (fair/initial_tangents); on text, g2-jumps moved both ways (seven fonts 20 → 21).
   bool tangents_between_chords = false;
-  /// A line shorter than this (units) that a curve meets tangentially is the curve's stretch
-  /// drawn straight, faired with it (fair/contour_plan's PlanOptions::stub_line_units): text
-  /// 2 units; handwriting twice the tolerance, where a tracer draws the flat top of a round
-  /// stroke end as a line of a few units and the joins' κ = 0 split it into two peaks
-  /// (Tomson Talks's N: TV 622 → 513).
-  double stub_line_units = 2.0;
+  /// Where given, a line shorter than this (units) that a curve meets tangentially is the
+  /// curve's stretch drawn straight, faired with it (fair/contour_plan's
+  /// PlanOptions::stub_line_units, whose own 2 units text keeps): handwriting twice the
+  /// tolerance, where a tracer draws the flat top of a round stroke end as a line of a few
+  /// units and the joins' κ = 0 split it into two peaks (Tomson Talks's N: TV 622 → 513).
+  std::optional<double> stub_line_units{};
   /// Where given, a curve meeting such a line within this (degrees) counts as meeting it
   /// tangentially (PlanOptions::stub_turn_deg). Handwriting: half its corner angle, as a
   /// scan breaks its curves by 3–20° at lines too (Tomson Talks's H: its tip's one-unit line
@@ -91,7 +91,7 @@ struct FairSettings {
   /// Tomson Talks's TV 0.277× → 0.228× of its source's, the same at 10°, 20° and 30°; at 10°
   /// Because We Build kept more nodes, at 20° and 30° Femke Klaver's inflections rose 0.40× →
   /// 0.47×).
-  std::optional<double> stub_turn_deg;
+  std::optional<double> stub_turn_deg{};
   bool operator==(const FairSettings&) const = default;
 };
 
