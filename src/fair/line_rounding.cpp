@@ -176,14 +176,17 @@ class LinePlacer {
     const std::optional<Vec2> step = primitive_step(b.point - a.point);
     if (!step || turns_too_far(line, b.point - a.point) || leaves_its_axis(line, a.point, b.point)) return out;
     out.step = *step;
+    const double unseated = std::max(far_handle_unit, limits_.allowance_at(line.i));
+    const double bent_corners =
+        corner_curve_cost(line.i, a.point, true, unseated) + corner_curve_cost(line.j, b.point, false, unseated);
     // A line no curve meets tangentially needs no short step, and its ends' moves only break
     // ties: the lines beside it that a curve does meet decide where they go.
     if (!line.curve_arrives && !line.curve_leaves) {
-      out.cost = tie_weight * std::max(a.moved, b.moved);
+      out.cost = tie_weight * std::max(a.moved, b.moved) + bent_corners;
       return out;
     }
     const double step_cost = step_weight * norm(out.step);
-    out.cost = std::max(a.moved, b.moved) + step_cost;
+    out.cost = std::max(a.moved, b.moved) + step_cost + bent_corners;
     if (out.cost >= bound) return out;
     // A curve's handle on the line: as long as it was (a slid end: its tip where it was, so the
     // curve keeps its shape); then its far handle nearest the line, so the join can keep κ = 0.
@@ -202,7 +205,6 @@ class LinePlacer {
     }
     out.cost = std::max({out.cost, out.in_moved, out.out_moved});
     if (out.cost >= bound) return out;
-    const double unseated = std::max(far_handle_unit, limits_.allowance_at(line.i));
     if (out.in_handle) out.cost += far_handle_cost(previous(line.i), true, a.point, *out.in_handle, out.step, unseated);
     if (out.out_handle)
       out.cost += far_handle_cost((line.j + 1) % exact_.size(), false, b.point, *out.out_handle, out.step, unseated);
@@ -221,6 +223,25 @@ class LinePlacer {
     const Vec2 from = exact_[line.i].point, to = exact_[line.j].point;
     const auto kept = [](double exact, double u, double v) { return u == v && (u == exact || exact != std::round(exact)); };
     return (from.x == to.x && !kept(from.x, a.x, b.x)) || (from.y == to.y && !kept(from.y, a.y, b.y));
+  }
+
+  // A corner at the line's end (`at_start`: node k the line's first) that a curve meets on its
+  // other side moves that curve's handle along (RunPlacement::write) but not its far handle:
+  // moved to `to`, the curve may bulge past an axis it ran along at the corner, an H/V
+  // extremum its exact self lacks (Breip's M under G3: a corner 2 units over for the (1, −6)
+  // step of its line, its curve leaving upright, bent right and back, x-extremum inside).
+  // It costs what a curve meeting the line tangentially pays for one (far_handle_cost).
+  double corner_curve_cost(std::size_t k, Vec2 to, bool at_start, double unseated) const {
+    const std::size_t n = exact_.size();
+    const std::optional<Vec2>& handle = at_start ? rounded_[k].in_handle : rounded_[k].out_handle;
+    if (exact_[k].smooth || !handle) return 0.0;
+    const std::size_t far = at_start ? previous(k) : (k + 1) % n;
+    const std::optional<Vec2>& far_handle = at_start ? rounded_[far].out_handle : rounded_[far].in_handle;
+    if (!far_handle) return 0.0;
+    const Vec2 moved = *handle + (to - rounded_[k].point);
+    const Cubic c = at_start ? Cubic{rounded_[far].point, *far_handle, moved, to}
+                             : Cubic{to, moved, *far_handle, rounded_[far].point};
+    return inner_axis_extrema(c) > exact_extrema_[at_start ? far : k] ? unseated + fold_unit : 0.0;
   }
 
   // Whether a line placed along `placed` turns from its exact direction by more than a node may

@@ -32,9 +32,13 @@ std::vector<Vec2> directions_near(Vec2 tangent, double most, int longest) {
 
 std::vector<Vec2> node_directions(Vec2 step, const OutlineNode& target, int longest) {
   std::vector<Vec2> directions{step};
-  if (step.x != 0.0 && step.y != 0.0)
-    for (const Vec2 d : directions_near(*target.out_handle - *target.in_handle, grid_turn, longest))
-      if (d != step && d.x != 0.0 && d.y != 0.0) directions.push_back(d);
+  if (step.x == 0.0 || step.y == 0.0) return directions;
+  const Vec2 tangent = *target.out_handle - *target.in_handle;
+  for (const Vec2 d : directions_near(tangent, grid_turn, longest)) {
+    // An axis only along the tangent, to float noise (a G3 solve leaves 1e-13 rad).
+    const bool axis = d.x == 0.0 || d.y == 0.0;
+    if (d != step && (!axis || std::abs(cross(tangent, d)) <= 1e-9 * norm(tangent))) directions.push_back(d);
+  }
   return directions;
 }
 

@@ -334,6 +334,50 @@ TEST(GridRounding, ANodeRoundingLeftFlatOnOneSideIsSeatedFlatOnBoth) {
         << "cubic " << i;
 }
 
+// Breip's L under --continuity g3 (UPM 2048), unrounded: its stem's left side, whose vertical
+// extremum (node 13) has a curve below it to a node whose line stands a unit over on the grid.
+// Whole steps from there bulged the curve left past the extremum's node whatever its handles;
+// the flat-node seat then turned the node 2.3° off the vertical, and the curve kept an
+// x-extremum inside with no node (the check's "missing extremum").
+TEST(GridRounding, AnExtremumRoundedBesideALineKeepsItsNode) {
+  const std::vector<OutlineNode> nodes{
+      node(Vec2{92.0, 418.0}, std::nullopt, Vec2{140.206689, 178.258545}, false),
+      node(Vec2{368.5553853858288, 119.26848757209453}, Vec2{270.038327, 119.268488}, Vec2{451.732767, 119.268488}, true, Vec2{1.0, 0.0}),
+      node(Vec2{565.05445306961224, 190.49067299593389}, Vec2{518.638629, 161.318530}, Vec2{593.937159, 208.643328}),
+      node(Vec2{635.73388803502132, 222.3166711430826}, Vec2{615.692828, 222.316671}, Vec2{652.130451, 222.316671}, true, Vec2{1.0, 0.0}),
+      node(Vec2{674.99204339574862, 195.06732094335246}, Vec2{665.813808, 213.164187}, Vec2{584.490065, 104.561411}, false),
+      node(Vec2{374.69873224033074, 63.677856041435184}, Vec2{473.160788, 63.677856}, Vec2{252.955106, 63.677856}, true, Vec2{-1.0, 0.0}),
+      node(Vec2{79.729667754986039, 255.17449564773943}, Vec2{144.226314, 126.181203}, Vec2{22.476546, 369.680739}, true, Vec2{-1.0, 2.0}),
+      node(Vec2{17.779787264335344, 565.33350411579102}, Vec2{17.779787, 501.177625}, Vec2{17.779787, 615.708560}, true, Vec2{0.0, 1.0}),
+      node(Vec2{24.605262107542909, 721.71154262290793}, Vec2{20.675506, 686.343737}, Vec2{26.947699, 742.793477}, true, Vec2{1.0, 9.0}),
+      node(Vec2{36.973759527709859, 761.73184880059046}, Vec2{30.041412, 754.799501}, Vec2{41.252357, 766.010446}, true, Vec2{1.0, 1.0}),
+      node(Vec2{52.170138607331758, 768.1136938398588}, Vec2{46.750548, 768.113694}, Vec2{57.648943, 768.113694}, true, Vec2{1.0, 0.0}),
+      node(Vec2{67.296126677491955, 761.7227688164287}, Vec2{63.054660, 765.964236}, Vec2{75.771736, 753.247159}, true, Vec2{1.0, -1.0}),
+      node(Vec2{76.738102216605711, 731.35282750812951}, Vec2{76.738102, 739.278241}, Vec2{76.738102, 723.113852}, true, Vec2{0.0, -1.0}),
+      node(Vec2{75.693756439732624, 682.9509252837006}, Vec2{75.693756, 714.487413}, Vec2{75.693756, 655.385542}, true, Vec2{0.0, -1.0}),
+      node(Vec2{77.484399719159299, 596.93286453030862}, Vec2{76.491651, 621.820273}, Vec2{78.930847, 560.671586}),
+      node(Vec2{86.408892620028325, 479.03625556469046}, Vec2{80.965256, 538.462621}, std::nullopt),
+  };
+  HandleStepLimits limits;  // as glyphfair fair --profile handwriting --continuity g3 sets them
+  limits.flat_curvature = 0.5 / 2048.0;
+  limits.allowance = 5.58;
+  limits.allowance_by_cubic = {10.91, 11.63, 11.12, 5.58, 12.81, 11.06, 8.58, 7.93,
+                               6.91, 8.48, 11.55, 11.94, 11.28, 11.11, 12.97, 13.62};
+  limits.polish_rounds = 3;
+  limits.inflection_handles = limits.node_turns = limits.seats_beside_lines = true;
+  limits.slope_jump_weight = 5.0;
+  const std::vector<OutlineNode> r = round_to_grid(nodes, true, limits);
+
+  // The last cubic, laid flat along the line after it, merges into it: the nodes before stay.
+  ASSERT_GE(r.size(), nodes.size() - 1);
+  for (std::size_t i = 0; i + 2 < nodes.size(); ++i) {
+    if (!nodes[i].out_handle) continue;
+    EXPECT_LE(inner_axis_extrema(outline_cubic(r, i)), inner_axis_extrema(outline_cubic(nodes, i))) << "cubic " << i;
+  }
+  EXPECT_EQ(r[13].in_handle->x, r[13].point.x);  // still vertical
+  EXPECT_EQ(r[13].out_handle->x, r[13].point.x);
+}
+
 // Two more stretches of that P: the bowl's right side above the stem join, and its top. Whole
 // steps leave jumps there whatever the handles, and a node's nudge, weighing only the jumps
 // and the cubics' bends, took a one-step handle with its far handle a unit off the tangent:

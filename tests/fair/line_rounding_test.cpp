@@ -100,6 +100,30 @@ TEST(LineRounding, ACornerTakesItsCurvesHandleAlong) {
   EXPECT_GT(rounded.p[1].x, rounded.p[0].x);  // it leaves the corner to the right, as it did
 }
 
+TEST(LineRounding, ACornerMovesOnlyWhereItsCurveGainsNoExtremum) {
+  // Breip's M under G3: a line from a curve's tangent join, 9.5° off the vertical, to a corner
+  // whose curve leaves straight down (an x-extremum on the corner) and bends left. A (1, −6)
+  // step for the line put the corner 2 units left; its handle went along, its curve's far
+  // handle stayed right of it, and the curve bulged right past the corner: an extremum inside.
+  const std::vector<OutlineNode> nodes{
+      node(Vec2{716.63984843591652, 677.640025629864}, std::nullopt, Vec2{738.022076, 634.875570}, false),
+      node(Vec2{803.99969069830479, 263.0017433367463}, Vec2{752.107307, 555.486087}, std::nullopt),
+      node(Vec2{826.0, 139.0}, std::nullopt, Vec2{826.0, 91.166310}, false),
+      node(Vec2{822.4092876093697, 71.438977554373153}, Vec2{826.0, 84.250207}, std::nullopt, false),
+  };
+  std::vector<OutlineNode> r = all_at_nearest_grid_points(nodes);
+  std::vector<std::optional<Vec2>> steps(nodes.size());
+  HandleStepLimits limits;
+  limits.allowance = 5.0;
+  place_lines_on_grid(nodes, r, steps, false, limits);
+  ASSERT_TRUE(steps[1]);  // the line placed for its curve
+  const Cubic exact{nodes[2].point, *nodes[2].out_handle, *nodes[3].in_handle, nodes[3].point};
+  const Cubic rounded{r[2].point, *r[2].out_handle, *r[3].in_handle, r[3].point};
+  EXPECT_EQ(inner_axis_extrema(exact), 0);
+  EXPECT_EQ(inner_axis_extrema(rounded), 0);
+  EXPECT_EQ(r[2].out_handle->x, r[2].point.x);  // still leaving straight down
+}
+
 TEST(LineRounding, ALineStandsLevelOnlyWhereItsCurveCanMeetItWithoutAnS) {
   // Caladea's z: the base's top descends from its extremum into a line 2.1° off the level,
   // step (−27, −1). With its corner a unit up, the line would stand level at the shortest step,
