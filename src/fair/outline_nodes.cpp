@@ -5,6 +5,8 @@
 #include <cstdlib>
 #include <numeric>
 
+#include "geom/tangent_crossing.hpp"
+
 namespace gf {
 
 bool join_nearly_smooth_node(OutlineNode& node, double limit_rad, double most_move) {
@@ -117,6 +119,16 @@ void merge_tiny_cubics(std::vector<OutlineNode>& nodes, bool closed, double shor
       continue;
     }
     const double chord = distance(a.point, b.point);
+    // Extrema on both axes: the curve turns a right angle within the chord, a corner on the
+    // grid. Merged into one smooth node, the other's extremum fell inside the next cubic
+    // (Because We Create's s: a brush hook's level foot and upright side 0.9 units apart). The
+    // corner sits where their tangents cross, each handle where it was: both extrema stay on it.
+    if (!a_ends_line && !b_ends_line && on_axis(a) && on_axis(b) && cross(*a.grid_step, *b.grid_step) != 0.0) {
+      if (const std::optional<Vec2> x = tangent_crossing(a.point, a.point - *a.in_handle, b.point, *b.out_handle - b.point)) {
+        replace_pair(nodes, i, OutlineNode{*x, a.in_handle, b.out_handle, false, std::nullopt});
+        continue;
+      }
+    }
     const bool keep_first = a_ends_line || (!b_ends_line && (on_axis(a) || !on_axis(b)));
     const Vec2 tangent = keep_first ? a.point - (a_ends_line ? nodes[(i + n - 1) % n].point : *a.in_handle)
                                     : (b_ends_line ? nodes[(j + 1) % n].point : *b.out_handle) - b.point;

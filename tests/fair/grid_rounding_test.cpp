@@ -626,6 +626,27 @@ TEST(OutlineNodes, CubicsUnderTwoUnitsMergeIntoOneNode) {
   EXPECT_EQ(apart, before);
 }
 
+TEST(OutlineNodes, ExtremaOnBothAxesUnderTwoUnitsApartBecomeACorner) {
+  // Because We Create's s: a brush hook's level foot and its upright side 0.9 units apart, the
+  // curve turning a right angle between. Merged into the foot's smooth node, the side's
+  // x-extremum fell 0.9 units into the next cubic, with no node. A corner where their tangents
+  // cross keeps both: each handle where it was, each cubic meeting its axis at the corner.
+  const OutlineNode first = node({147, 69}, Vec2{146, 68.7}, Vec2{151, 64.13}, false);
+  const OutlineNode foot = node({152.03, 63.78}, Vec2{151.69, 63.78}, Vec2{152.17, 63.78}, true, Vec2{1, 0});
+  const OutlineNode side = node({152.39, 64.60}, Vec2{152.39, 63.84}, Vec2{152.39, 67.30}, true, Vec2{0, 1});
+  const OutlineNode last = node({142, 84}, Vec2{149.72, 71.78}, Vec2{143, 85}, false);
+  std::vector<OutlineNode> nodes{first, foot, side, last};
+  merge_tiny_cubics(nodes, false, 2.0);
+  ASSERT_EQ(nodes.size(), 3u);
+  EXPECT_FALSE(nodes[1].smooth);
+  EXPECT_NEAR(nodes[1].point.x, 152.39, 1e-12);
+  EXPECT_NEAR(nodes[1].point.y, 63.78, 1e-12);
+  EXPECT_EQ(nodes[1].in_handle, foot.in_handle);
+  EXPECT_EQ(nodes[1].out_handle, side.out_handle);
+  EXPECT_EQ(inner_axis_extrema(outline_cubic(nodes, 0)), 0);
+  EXPECT_EQ(inner_axis_extrema(outline_cubic(nodes, 1)), 0);
+}
+
 TEST(OutlineNodes, ATinyCubicAfterALineMergesIntoTheLinesEnd) {
   // Comic Neue's i dot: a line stood upright to x = 86 ends at (86, 603), and the curve leaving
   // it passes the vertical 0.8 units on, where a node sat; rounded, that cubic folded on its
