@@ -26,9 +26,9 @@ std::vector<Vec2> directions_near(Vec2 tangent, double most, int longest);
 /// vertical (an extremum's must stay so), the primitive directions within `grid_turn` of its
 /// unrounded tangent, only of at most `longest` units a side: whole steps of a longer one are too
 /// coarse to set curvature by (and each direction costs a search). Of the horizontal and vertical
-/// ones, only the unrounded tangent's own: an extremum that a seat turned off its axis
-/// (seat_flat_nodes, where the extremum then lay on the next node) may turn back onto it where
-/// that cubic has since gained one inside (Breip's L under --continuity g3).
+/// directions, only the unrounded tangent's own: the flat-node seat may turn an extremum off
+/// its axis, and the node must be able to turn back where a cubic beside it then holds the
+/// extremum inside (Breip's L under --continuity g3).
 std::vector<Vec2> node_directions(Vec2 step, const OutlineNode& target, int longest = 10);
 
 /// How many whole steps of d `from`'s out-handle (`out`) or in-handle is long, at least one: the

@@ -76,6 +76,23 @@ TEST(LineRounding, AShortStepNeedsNoSlide) {
   EXPECT_EQ(*r[1].out_handle, r[1].point + Vec2(8.0, 20.0));
 }
 
+// The lines of an open outline placed on the grid (within 5 units), its other points at their
+// nearest grid points: the cubic from the corner at node 2 to node 3, exact and as placed.
+struct CornerCurve {
+  Cubic exact, placed;
+  std::vector<std::optional<Vec2>> steps;
+};
+
+CornerCurve corner_curve_after_lines(const std::vector<OutlineNode>& nodes) {
+  std::vector<OutlineNode> r = all_at_nearest_grid_points(nodes);
+  std::vector<std::optional<Vec2>> steps(nodes.size());
+  HandleStepLimits limits;
+  limits.allowance = 5.0;
+  place_lines_on_grid(nodes, r, steps, false, limits);
+  return {Cubic{nodes[2].point, *nodes[2].out_handle, *nodes[3].in_handle, nodes[3].point},
+          Cubic{r[2].point, *r[2].out_handle, *r[3].in_handle, r[3].point}, steps};
+}
+
 TEST(LineRounding, ACornerTakesItsCurvesHandleAlong) {
   // Because We Connect's R: a stem's line 0.7° off the vertical, from a curve's tangent join to
   // the corner where the bowl's curve leaves it, 8° to the right. The line stands upright and
@@ -87,17 +104,11 @@ TEST(LineRounding, ACornerTakesItsCurvesHandleAlong) {
       node(Vec2{138.0, 330.0}, std::nullopt, Vec2{139.18, 337.45}, false),
       node(Vec2{143.0, 352.0}, Vec2{140.85, 344.8}, std::nullopt, false),
   };
-  std::vector<OutlineNode> r = all_at_nearest_grid_points(nodes);
-  std::vector<std::optional<Vec2>> steps(nodes.size());
-  HandleStepLimits limits;
-  limits.allowance = 5.0;
-  place_lines_on_grid(nodes, r, steps, false, limits);
-  ASSERT_NE(r[2].point, nearest_grid_point(nodes[2].point));  // the corner moved
-  const Cubic exact{nodes[2].point, *nodes[2].out_handle, *nodes[3].in_handle, nodes[3].point};
-  const Cubic rounded{r[2].point, *r[2].out_handle, *r[3].in_handle, r[3].point};
-  EXPECT_EQ(inner_axis_extrema(exact), 0);
-  EXPECT_EQ(inner_axis_extrema(rounded), 0);
-  EXPECT_GT(rounded.p[1].x, rounded.p[0].x);  // it leaves the corner to the right, as it did
+  const CornerCurve c = corner_curve_after_lines(nodes);
+  ASSERT_NE(c.placed.p[0], nearest_grid_point(nodes[2].point));  // the corner moved
+  EXPECT_EQ(inner_axis_extrema(c.exact), 0);
+  EXPECT_EQ(inner_axis_extrema(c.placed), 0);
+  EXPECT_GT(c.placed.p[1].x, c.placed.p[0].x);  // it leaves the corner to the right, as it did
 }
 
 TEST(LineRounding, ACornerMovesOnlyWhereItsCurveGainsNoExtremum) {
@@ -111,17 +122,11 @@ TEST(LineRounding, ACornerMovesOnlyWhereItsCurveGainsNoExtremum) {
       node(Vec2{826.0, 139.0}, std::nullopt, Vec2{826.0, 91.166310}, false),
       node(Vec2{822.4092876093697, 71.438977554373153}, Vec2{826.0, 84.250207}, std::nullopt, false),
   };
-  std::vector<OutlineNode> r = all_at_nearest_grid_points(nodes);
-  std::vector<std::optional<Vec2>> steps(nodes.size());
-  HandleStepLimits limits;
-  limits.allowance = 5.0;
-  place_lines_on_grid(nodes, r, steps, false, limits);
-  ASSERT_TRUE(steps[1]);  // the line placed for its curve
-  const Cubic exact{nodes[2].point, *nodes[2].out_handle, *nodes[3].in_handle, nodes[3].point};
-  const Cubic rounded{r[2].point, *r[2].out_handle, *r[3].in_handle, r[3].point};
-  EXPECT_EQ(inner_axis_extrema(exact), 0);
-  EXPECT_EQ(inner_axis_extrema(rounded), 0);
-  EXPECT_EQ(r[2].out_handle->x, r[2].point.x);  // still leaving straight down
+  const CornerCurve c = corner_curve_after_lines(nodes);
+  ASSERT_TRUE(c.steps[1]);  // the line placed for its curve
+  EXPECT_EQ(inner_axis_extrema(c.exact), 0);
+  EXPECT_EQ(inner_axis_extrema(c.placed), 0);
+  EXPECT_EQ(c.placed.p[1].x, c.placed.p[0].x);  // still leaving straight down
 }
 
 TEST(LineRounding, ALineStandsLevelOnlyWhereItsCurveCanMeetItWithoutAnS) {
