@@ -136,6 +136,12 @@ std::vector<EndPlace> end_places(Vec2 exact, const std::optional<Slide>& slide, 
   return out;
 }
 
+// The cubic between a line's end `end` (its handle there `near`) and its far node `far` (its
+// handle there `h`): arriving at the line's end where `arrives`, else leaving it.
+Cubic curve_at_line_end(Vec2 end, Vec2 near, Vec2 h, Vec2 far, bool arrives) {
+  return arrives ? Cubic{far, h, near, end} : Cubic{end, near, h, far};
+}
+
 // The outline's line from node i to node i + 1 and what rounding must keep of it.
 struct LineOnGrid {
   std::size_t i, j;
@@ -177,16 +183,19 @@ class LinePlacer {
     if (!step || turns_too_far(line, b.point - a.point) || leaves_its_axis(line, a.point, b.point)) return out;
     out.step = *step;
     const double unseated = std::max(far_handle_unit, limits_.allowance_at(line.i));
-    const double bent_corners =
-        corner_curve_cost(line.i, a.point, true, unseated) + corner_curve_cost(line.j, b.point, false, unseated);
+    const auto bent_corners = [&] {
+      return corner_curve_cost(line.i, a.point, true, unseated) + corner_curve_cost(line.j, b.point, false, unseated);
+    };
     // A line no curve meets tangentially needs no short step, and its ends' moves only break
     // ties: the lines beside it that a curve does meet decide where they go.
     if (!line.curve_arrives && !line.curve_leaves) {
-      out.cost = tie_weight * std::max(a.moved, b.moved) + bent_corners;
+      out.cost = tie_weight * std::max(a.moved, b.moved) + bent_corners();
       return out;
     }
     const double step_cost = step_weight * norm(out.step);
-    out.cost = std::max(a.moved, b.moved) + step_cost + bent_corners;
+    out.cost = std::max(a.moved, b.moved) + step_cost;
+    if (out.cost >= bound) return out;  // past already: the corners' curves not measured
+    out.cost += bent_corners();
     if (out.cost >= bound) return out;
     // A curve's handle on the line: as long as it was (a slid end: its tip where it was, so the
     // curve keeps its shape); then its far handle nearest the line, so the join can keep κ = 0.
@@ -239,8 +248,7 @@ class LinePlacer {
     const std::optional<Vec2>& far_handle = at_start ? rounded_[far].out_handle : rounded_[far].in_handle;
     if (!far_handle) return 0.0;
     const Vec2 moved = *handle + (to - rounded_[k].point);
-    const Cubic c = at_start ? Cubic{rounded_[far].point, *far_handle, moved, to}
-                             : Cubic{to, moved, *far_handle, rounded_[far].point};
+    const Cubic c = curve_at_line_end(to, moved, *far_handle, rounded_[far].point, at_start);
     return inner_axis_extrema(c) > exact_extrema_[at_start ? far : k] ? unseated + fold_unit : 0.0;
   }
 
@@ -268,7 +276,6 @@ class LinePlacer {
     const std::optional<Vec2> wanted = out ? exact_[k].out_handle : exact_[k].in_handle;
     const std::optional<Vec2> placed = out ? rounded_[k].out_handle : rounded_[k].in_handle;
     if (!wanted || !placed || (!steps_[k] && exact_[k].smooth)) return 0.0;
-    const auto curve = [&](Vec2 far, Vec2 h) { return out ? Cubic{far, h, near, end} : Cubic{end, near, h, far}; };
     const int extrema = exact_extrema_[out ? k : previous(k)];
     const double fold = unseated + fold_unit;
     double best = unseated + fold;
@@ -292,7 +299,7 @@ class LinePlacer {
     // units past a 91-unit curve's end, an S at its foot).
     const auto overshoots = [&](Vec2 far) { return dot(near - end, far - end) > dot(far - end, far - end); };
     const auto weigh = [&](Vec2 far, Vec2 h) {
-      const Cubic c = curve(far, h);
+      const Cubic c = curve_at_line_end(end, near, h, far, out);
       const double kappa = node_curvature(c, out ? SegmentEnd::end : SegmentEnd::start);
       const double seated = 0.3 * distance(h, *wanted) + distance(far, rounded_[k].point);
       const double cost = (std::abs(kappa) <= 0.05 * limits_.flat_curvature ? seated : unseated) +
