@@ -56,9 +56,6 @@ constexpr double text_flat_node_reach = 2.5;
 constexpr double text_slope_jump_weight = 8.0, handwriting_slope_jump_weight = 5.0;
 constexpr double text_counted_jump_cost = 10.0 * text_slope_jump_weight;
 constexpr int rounding_retries = 3;  // halvings where rounding strayed, then as many of every cubic's
-// Cubics shorter than this (units) are merged away before rounding (outline_nodes): 2 took
-// Because We Create's missing extrema 9 → 6, 3 to 12.
-constexpr double tiny_cubic_chord = 2.0;
 // Of the tolerance, how far a fillet onto a leaning line's axis may move the outline.
 constexpr double leaning_move_share = 0.25;
 

@@ -59,6 +59,14 @@ void drop_empty_cubics(std::vector<OutlineNode>& nodes, bool closed);
 /// plus the chord, along the kept node's tangent.
 void merge_tiny_cubics(std::vector<OutlineNode>& nodes, bool closed, double shortest);
 
+/// The chord (units) under which the fairing merges a cubic's nodes before rounding. 2 took
+/// Because We Create's missing extrema 9 → 6 (3 then took them to 12). Since stop 85, 3: a cubic
+/// of 2.0 units between Vollkorn's z's level foot and the inflection beside it rounded to a
+/// unit with its handles crossed. a–z A–Z rounded, 2 → 3: Vollkorn g2-jumps 3 → 0, EB Garamond
+/// 52 → 50, Junicode 59 → 52 (inflections 1.027× → 0.997×), Because We Create's TV 0.176× →
+/// 0.157× with its missing extrema 2 as before. 4 made four new corners on Gentium Plus.
+constexpr double tiny_cubic_chord = 3.0;
+
 /// A node whose handles break G1 by less than `limit_rad` made G1: both handles turned onto
 /// their bisector, each by half the break, where that moves neither cubic by more than
 /// `most_move` (a handle of length L turned by θ moves its cubic by at most (4/9)·L·θ); smooth

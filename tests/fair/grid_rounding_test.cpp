@@ -647,6 +647,31 @@ TEST(OutlineNodes, ExtremaOnBothAxesUnderTwoUnitsApartBecomeACorner) {
   EXPECT_EQ(inner_axis_extrema(outline_cubic(nodes, 1)), 0);
 }
 
+TEST(OutlineNodes, ACubicOfTwoUnitsMergesBeforeTheGridFoldsIt) {
+  // Vollkorn's z, the foot of its baseline stroke: a level extremum 2.005 units before the
+  // inflection where the stroke starts to rise, then the stroke's level top and its corner.
+  // Rounded as they were, the cubic between the first two became (424, −2) → (423, −2) with its
+  // handles crossed (423, then 424): a zigzag with κ·UPM −13.8 at one end and 0 at the other.
+  const std::vector<OutlineNode> faired{
+      node({456, 17}, std::nullopt, Vec2{449.96606874, 4.26170068}, false),
+      node({423.60562086, -1.97580384}, Vec2{441.23844493, -1.97580384}, Vec2{422.76319811, -1.97580384}, true, Vec2{-1, 0}),
+      node({421.60084709, -1.95321596}, Vec2{422.03056050, -1.96156655}, Vec2{367.98249488, -0.91125476}),
+      node({244.48554988, -0.00013569}, Vec2{321.09715692, -0.00013569}, Vec2{194.28883756, -0.00013569}, true, Vec2{-1, 0}),
+      node({67, -2}, Vec2{124.91393547, -0.39127957}, std::nullopt, false)};
+  ASSERT_GT(distance(faired[1].point, faired[2].point), 2.0);
+  std::vector<OutlineNode> nodes = faired;
+  merge_tiny_cubics(nodes, false, tiny_cubic_chord);
+  ASSERT_EQ(nodes.size(), 4u);
+  EXPECT_EQ(nodes[1].point, faired[1].point);  // the extremum stays
+  const std::vector<OutlineNode> r = round_to_grid(nodes, false);
+  ASSERT_EQ(r.size(), nodes.size());
+  // The stroke runs leftward: no control point of a cubic turns back to the right.
+  for (std::size_t i = 0; i + 1 < r.size(); ++i) {
+    const Cubic c = outline_cubic(r, i);
+    for (std::size_t k = 1; k < c.p.size(); ++k) EXPECT_LE(c.p[k].x, c.p[k - 1].x) << "cubic " << i << " point " << k;
+  }
+}
+
 TEST(OutlineNodes, ATinyCubicAfterALineMergesIntoTheLinesEnd) {
   // Comic Neue's i dot: a line stood upright to x = 86 ends at (86, 603), and the curve leaving
   // it passes the vertical 0.8 units on, where a node sat; rounded, that cubic folded on its
