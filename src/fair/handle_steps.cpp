@@ -147,6 +147,21 @@ std::vector<Vec2> handles_for_curvature(Vec2 node, Vec2 step, bool out, Vec2 far
   return whole_steps_around(node, step, out ? 1.0 : -1.0, m);
 }
 
+std::vector<Vec2> far_handles_for_curvature(Vec2 node, Vec2 step, bool out, Vec2 near, Vec2 far_node, Vec2 far_step,
+                                            double target) {
+  const double h = distance(near, node);
+  if (h == 0.0 || target == 0.0) return {};
+  const Vec2 t = step / norm(step);
+  // d(m) = d0 + m·d1, the far handle far_node ∓ m·far_step (an in-handle when `out`).
+  const double far_sign = out ? -1.0 : 1.0;
+  const auto offset = [&](Vec2 far) { return out ? cross(t, far - node) : cross(node - far, t); };
+  const double d0 = offset(far_node), d1 = offset(far_node + far_step * far_sign) - d0;
+  if (d1 == 0.0) return {};
+  const double m = (1.5 * target * h * h - d0) / d1;
+  if (m * norm(far_step) > 2.0 * distance(node, far_node)) return {};
+  return whole_steps_around(far_node, far_step, far_sign, m);
+}
+
 void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal,
                          std::span<const std::optional<Vec2>> grid_steps, bool closed, const HandleStepLimits& limits) {
   // The grid steps as rounding left them; a node turned or seated here takes a new one.

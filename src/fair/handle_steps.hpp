@@ -153,6 +153,13 @@ std::vector<Vec2> handles_near_line(Vec2 node, Vec2 step, double sign, Vec2 line
 /// has the other sign, or longer than twice the chord to the cubic's `other_end`.
 std::vector<Vec2> handles_for_curvature(Vec2 node, Vec2 step, bool out, Vec2 far, Vec2 other_end, double target);
 
+/// The far handles far_node + sign·m·far_step (m ≥ 1 whole steps; an in-handle when `out`, the
+/// node starting the cubic) on either side of the place that gives the node's end the
+/// curvature `target`, its own handle at `near`: κ = 2d / (3h²) with h fixed and d, the far
+/// handle's offset across the node's tangent, linear in m.
+std::vector<Vec2> far_handles_for_curvature(Vec2 node, Vec2 step, bool out, Vec2 near, Vec2 far_node, Vec2 far_step,
+                                            double target);
+
 /// Moves the handles of `nodes` (rounded, G1 exact along `grid_steps`) by whole steps along
 /// their grid directions, and a corner's handle by a unit, to minimise the curvature jumps at
 /// smooth nodes; then moves a node still jumping (or next to one), or one whose cubic bends
@@ -175,7 +182,8 @@ std::vector<Vec2> handles_for_curvature(Vec2 node, Vec2 step, bool out, Vec2 far
 /// cubic beyond its unrounded self's costs (a third of the weight of a matching jump
 /// at a node), as does a curvature extremum it adds (less than a jump over the target, so G2
 /// comes first). Where no whole step near the rounded length gives an end at a smooth node its
-/// unrounded curvature, the lengths aimed at it (handles_for_curvature) are tried too.
+/// unrounded curvature, the lengths aimed at it (handles_for_curvature) are tried too, and, where
+/// the cubic's other end meets a line, that end's handle aimed likewise (far_handles_for_curvature).
 void choose_handle_steps(std::vector<OutlineNode>& nodes, const std::vector<OutlineNode>& ideal,
                          std::span<const std::optional<Vec2>> grid_steps, bool closed, const HandleStepLimits& limits);
 

@@ -109,7 +109,8 @@ bool widen_at_risky_corners(CubicChoices& c, const std::vector<OutlineNode>& nod
 
 // Where no choice gives an end at a smooth node within the target of its unrounded curvature,
 // the handle lengths aimed at it (handles_for_curvature), against every place of the far
-// handle: only there, as they multiply the choices. Returns whether it added any.
+// handle, and, where the far end meets a line, the far handle's (far_handles_for_curvature):
+// only there, as they multiply the choices. Returns whether it added any.
 bool aim_at_unrounded_curvatures(CubicChoices& c, const std::vector<OutlineNode>& nodes,
                                  std::span<const std::optional<Vec2>> steps, const CubicTraits& ideal,
                                  bool line_before, bool line_after, double flat) {
@@ -131,6 +132,14 @@ bool aim_at_unrounded_curvatures(CubicChoices& c, const std::vector<OutlineNode>
   if (!end_met)  // against the far handles as they were, not those just aimed
     for (std::size_t k = 0; k < outs; ++k)
       add_handles(c.ins, handles_for_curvature(p3, *steps[j], false, c.outs[k], p0, ideal.k_end));
+  // Where the far end meets a line, its handle along the line is free (κ = 0 there whatever
+  // its length): aimed too, against the near handles as they were.
+  if (!end_met && line_before && steps[i])
+    for (std::size_t k = 0; k < ins; ++k)
+      add_handles(c.outs, far_handles_for_curvature(p3, *steps[j], false, c.ins[k], p0, *steps[i], ideal.k_end));
+  if (!start_met && line_after && steps[j])
+    for (std::size_t k = 0; k < outs; ++k)
+      add_handles(c.ins, far_handles_for_curvature(p0, *steps[i], true, c.outs[k], p3, *steps[j], ideal.k_start));
   return c.outs.size() != outs || c.ins.size() != ins;
 }
 

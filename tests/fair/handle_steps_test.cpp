@@ -289,6 +289,45 @@ TEST(HandleSteps, HandlesForCurvatureBracketTheTargetCurvature) {
   EXPECT_TRUE(handles_for_curvature(node, {0, -1}, false, {185, 450}, start, target).empty());
 }
 
+TEST(HandleSteps, FarHandlesForCurvatureBracketTheTargetCurvature) {
+  // Nimbus Sans's j: the stem's line ends at (70, −76), and the cubic from there reaches a
+  // node stepping (−1, −2) with its in-handle 8 steps long; the next cubic leaves that node
+  // with κ·UPM −14.1. The line's end keeps κ = 0 whatever its handle's length along the stem,
+  // so that length sets the curvature at the far node: the whole steps either side of it.
+  const double target = -14.113 / 1000.0;
+  const Vec2 line_end{70, -76}, node{62, -119}, near{70, -103};
+  const std::vector<Vec2> outs = far_handles_for_curvature(node, {-1, -2}, false, near, line_end, {0, -1}, target);
+  ASSERT_EQ(outs.size(), 2u);
+  EXPECT_EQ(outs[1] - outs[0], (Vec2{0, -1}));
+  const double k_short = node_curvature(Cubic{line_end, outs[0], near, node}, SegmentEnd::end);
+  const double k_long = node_curvature(Cubic{line_end, outs[1], near, node}, SegmentEnd::end);
+  EXPECT_GE(std::abs(k_short), std::abs(target));
+  EXPECT_LE(std::abs(k_long), std::abs(target));
+  EXPECT_EQ(node_curvature(Cubic{line_end, outs[0], near, node}, SegmentEnd::start), 0.0);
+  // The far node starting the cubic, at random: its out-handle's whole steps either side of the
+  // place that gives the end node `k`, that node's in-handle fixed.
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int bracketed = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    const Vec2 p0{100, 100}, far_step{2, 1}, p3{400 + 50 * u(rng), 250 + 50 * u(rng)}, step{1, -3};
+    const Vec2 p2 = p3 - step * (10 + 5 * u(rng));
+    const double k = 0.004 * u(rng);
+    const std::vector<Vec2> found = far_handles_for_curvature(p3, step, false, p2, p0, far_step, k);
+    if (found.size() < 2) continue;
+    ++bracketed;
+    const double k0 = node_curvature(Cubic{p0, found[0], p2, p3}, SegmentEnd::end);
+    const double k1 = node_curvature(Cubic{p0, found[1], p2, p3}, SegmentEnd::end);
+    EXPECT_LE(std::min(k0, k1), k * (1 + 1e-12) + 1e-15) << "trial " << trial;
+    EXPECT_GE(std::max(k0, k1), k * (1 - 1e-12) - 1e-15) << "trial " << trial;
+    EXPECT_EQ(found[1] - found[0], far_step);
+    EXPECT_EQ(cross(found[0] - p0, far_step), 0.0);
+  }
+  EXPECT_GT(bracketed, 100);
+  // A far handle stepping along the node's own tangent moves nothing across it: none.
+  EXPECT_TRUE(far_handles_for_curvature(node, {-1, -2}, false, near, line_end, {-1, -2}, target).empty());
+}
+
 TEST(HandleSteps, ACurveLeavingADiagonalLineMeetsItWithoutVisibleCurvature) {
   // As above, along a diagonal line of direction about (3, 1), into a cubic whose far node
   // turns along a diagonal grid step (1, 1): a whole step of that handle moves the cubic's
