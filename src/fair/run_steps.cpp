@@ -132,8 +132,9 @@ bool aim_at_unrounded_curvatures(CubicChoices& c, const std::vector<OutlineNode>
   if (!end_met)  // against the far handles as they were, not those just aimed
     for (std::size_t k = 0; k < outs; ++k)
       add_handles(c.ins, handles_for_curvature(p3, *steps[j], false, c.outs[k], p0, ideal.k_end));
-  // Where the far end meets a line, its handle along the line is free (κ = 0 there whatever
-  // its length): aimed too, against the near handles as they were.
+  // Where the far end meets a line, its handle runs along the line: where the near handle lies
+  // on the line too, κ stays 0 there whatever its length, and elsewhere a longer handle only
+  // flattens it. Aimed too, against the near handles as they were; the choice weighs the rest.
   if (!end_met && line_before && steps[i])
     for (std::size_t k = 0; k < ins; ++k)
       add_handles(c.outs, far_handles_for_curvature(p3, *steps[j], false, c.ins[k], p0, *steps[i], ideal.k_end));
