@@ -153,10 +153,11 @@ std::vector<Vec2> handles_near_line(Vec2 node, Vec2 step, double sign, Vec2 line
 /// has the other sign, or longer than twice the chord to the cubic's `other_end`.
 std::vector<Vec2> handles_for_curvature(Vec2 node, Vec2 step, bool out, Vec2 far, Vec2 other_end, double target);
 
-/// The far handles far_node + sign·m·far_step (m ≥ 1 whole steps; an in-handle when `out`, the
-/// node starting the cubic) on either side of the place that gives the node's end the
-/// curvature `target`, its own handle at `near`: κ = 2d / (3h²) with h fixed and d, the far
-/// handle's offset across the node's tangent, linear in m.
+/// The far handles far_node + sign·m·far_step (m ≥ 1 whole steps; far_node's in-handle where
+/// `node` starts the cubic, `out`, else its out-handle) on either side of the place that gives
+/// `node`'s end the curvature `target`, its own handle at `near`: κ = 2d / (3h²) with h fixed
+/// and d, the far handle's offset across the node's tangent, linear in m. None where the far
+/// handle runs along that tangent, or reaches past twice the chord.
 std::vector<Vec2> far_handles_for_curvature(Vec2 node, Vec2 step, bool out, Vec2 near, Vec2 far_node, Vec2 far_step,
                                             double target);
 

@@ -882,8 +882,8 @@ TEST(ContourFairing, TwoCubicsBetweenALineAndACornerArePlacedAsOnePiece) {
 TEST(ContourFairing, ACurveFromALineTakesTheHandleOnTheLineThatSetsItsFarEnd) {
   // Noto Serif's y: the left arm's line ends at (131, 316) and the curve from it bends into the
   // tail's short cubics, κ·UPM 23.4 against 26.2 and 14.9 against 16.8 at their nodes. The
-  // handle on the line leaves κ = 0 there whatever its length, and that length sets the
-  // curvature at the curve's far node: its whole steps aimed at it (far_handles_for_curvature).
+  // length of the handle on the line, which only flattens the curve where it leaves the line,
+  // sets the curvature at its far node: its whole steps aimed at it (far_handles_for_curvature).
   expect_faired_g2(test::noto_serif, "y");
 }
 
