@@ -221,9 +221,15 @@ std::vector<std::size_t> slide_line_joins(std::vector<OutlineNode>& nodes, std::
   std::vector<std::size_t> slid;
   if (n < 4) return slid;
   for (std::size_t at = 0; at < n; ++at) {
-    if (!joins.meets_line(at) || !steps[at] || join_jump(joins, at, flat) <= target_jump) continue;
+    if (!joins.meets_line(at) || !steps[at]) continue;
     const bool leaves = joins.is_cubic(at);  // the cubic leaves the join, the line arrives
     const std::size_t far = leaves ? (at + 1) % n : (at + n - 1) % n;  // the cubic's other node
+    // The join jumps, or the far node does where the handle's tip lies on its tangent (κ = 0
+    // at that end whatever the near handle's length).
+    const Vec2 tip = *(leaves ? nodes[at].out_handle : nodes[at].in_handle);
+    const std::optional<Vec2> far_near = leaves ? nodes[far].in_handle : nodes[far].out_handle;
+    const bool flat_far = far_near && cross(nodes[far].point - *far_near, tip - nodes[far].point) == 0.0;
+    if (join_jump(joins, at, flat) <= target_jump && !(flat_far && join_jump(joins, far, flat) > target_jump)) continue;
     const std::size_t first = leaves ? at : far;                        // the cubic's first node
     const NodeChange change(nodes, joins, judge, flat, far);
     const Vec2 line_end = nodes[leaves ? (at + n - 1) % n : (at + 1) % n].point;
@@ -232,17 +238,29 @@ std::vector<std::size_t> slide_line_joins(std::vector<OutlineNode>& nodes, std::
     const Vec2 start = entry[at].point;
     const double chord = distance(start, entry[far].point);
     double best_cost = change.cost();
-    std::optional<Vec2> best;
+    // The handle's tip kept (the handle grows), or the handle slid along with the join: where
+    // its tip lies on the far node's tangent (κ = 0 there whatever the handle's length), only
+    // a handle starting farther back lies across it (Gentium Plus's w: a 17-unit curve from a
+    // (3, 11) line to an x-extremum, its one-step handle's tip on the extremum's vertical).
+    std::optional<Vec2>& handle = leaves ? nodes[at].out_handle : nodes[at].in_handle;
+    std::optional<OutlineNode> best;
     for (int k = 1; k <= 3; ++k) {
       const Vec2 p = kept + back * static_cast<double>(k);
       if (distance(p, start) > slide_reach * chord || distance(p, line_end) < 0.5 * line_length ||
           dot(p - line_end, kept - line_end) <= 0.0)
         break;
       nodes[at].point = p;
-      if (const std::optional<double> c = change.cost_under(best_cost)) best_cost = *c, best = p;
+      for (const Vec2 h : {tip, tip + back * static_cast<double>(k)}) {
+        handle = h;
+        if (const std::optional<double> c = change.cost_under(best_cost)) best_cost = *c, best = nodes[at];
+      }
     }
-    nodes[at].point = best ? *best : kept;
-    if (best) slid.push_back(first);
+    if (best) {
+      nodes[at] = *best;
+      slid.push_back(first);
+    } else {
+      nodes[at].point = kept, handle = tip;
+    }
   }
   return slid;
 }

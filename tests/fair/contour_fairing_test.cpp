@@ -887,6 +887,14 @@ TEST(ContourFairing, ACurveFromALineTakesTheHandleOnTheLineThatSetsItsFarEnd) {
   expect_faired_g2(test::noto_serif, "y");
 }
 
+TEST(ContourFairing, ALineJoinSlidesWithItsHandleWhereTheHandlesTipSitsOnTheFarTangent) {
+  // Gentium Plus's w: the right arm's line, step (3, 11), ends where a 17-unit curve turns to
+  // the vertical at the top, (1218, 834). The curve's one-step handle reached (1218, 828), on
+  // that vertical: κ = 0 at the top however long the top's own handle, against κ·UPM 78 on the
+  // curve beyond. Slid back a step with the join, the handle lies 3 units across the vertical.
+  expect_faired_g2(test::gentium_plus, "w");
+}
+
 // No smooth join of `glyph` inside `box` jumps, faired and rounded as text.
 void expect_no_g2_jump_rounded(const std::string& font, const std::string& glyph, std::pair<Vec2, Vec2> box) {
   const FairedGlyph f = fair_named(font, glyph, options_for(FairProfile::text, Rounding::integers));
