@@ -225,7 +225,7 @@ std::vector<std::size_t> slide_line_joins(std::vector<OutlineNode>& nodes, std::
     const bool leaves = joins.is_cubic(at);  // the cubic leaves the join, the line arrives
     const std::size_t far = leaves ? (at + 1) % n : (at + n - 1) % n;  // the cubic's other node
     // The join jumps, or the far node does where the handle's tip lies on its tangent (κ = 0
-    // at that end whatever the near handle's length).
+    // at that end whatever the length of the far node's own handle).
     const Vec2 tip = *(leaves ? nodes[at].out_handle : nodes[at].in_handle);
     const std::optional<Vec2> far_near = leaves ? nodes[far].in_handle : nodes[far].out_handle;
     const bool flat_far = far_near && cross(nodes[far].point - *far_near, tip - nodes[far].point) == 0.0;
@@ -239,7 +239,7 @@ std::vector<std::size_t> slide_line_joins(std::vector<OutlineNode>& nodes, std::
     const double chord = distance(start, entry[far].point);
     double best_cost = change.cost();
     // The handle's tip kept (the handle grows), or the handle slid along with the join: where
-    // its tip lies on the far node's tangent (κ = 0 there whatever the handle's length), only
+    // its tip lies on the far node's tangent (κ = 0 there whatever that node's handle), only
     // a handle starting farther back lies across it (Gentium Plus's w: a 17-unit curve from a
     // (3, 11) line to an x-extremum, its one-step handle's tip on the extremum's vertical).
     std::optional<Vec2>& handle = leaves ? nodes[at].out_handle : nodes[at].in_handle;
