@@ -50,13 +50,15 @@ Contour to_contour(const std::vector<OutlineNode>& nodes, bool closed);
 void drop_empty_cubics(std::vector<OutlineNode>& nodes, bool closed);
 
 /// Merges the two smooth nodes of every cubic whose chord is under `shortest` into one, for
-/// rounding: the grid cannot draw a cubic of a unit or two, and whole steps folded such cubics
-/// into loops with an extremum inside (Because We Create's P and r). The node kept is a line's
-/// end (Comic Neue's i: a curve leaving a line stood upright passed the vertical a unit on, and
-/// the node there rounded to a cubic folded on that unit), which takes an extremum's place only
-/// where the line runs along the extremum's axis; else the one on a horizontal or vertical
-/// extremum, else the first. The handle it takes over from the other node keeps its length,
-/// plus the chord, along the kept node's tangent.
+/// rounding: the grid cannot draw a cubic of a few units, and whole steps folded such cubics
+/// into loops with an extremum inside (Because We Create's P and r) or crossed their handles
+/// (Vollkorn's z). Where both nodes are extrema on different axes, they become one corner
+/// where their tangents cross, each handle where it was (Because We Create's s). Else the node
+/// kept is a line's end (Comic Neue's i: a curve leaving a line stood upright passed the
+/// vertical a unit on, and the node there rounded to a cubic folded on that unit), which takes
+/// an extremum's place only where the line runs along the extremum's axis; else the one on a
+/// horizontal or vertical extremum, else the first. The handle it takes over from the other
+/// node keeps its length, plus the chord, along the kept node's tangent.
 void merge_tiny_cubics(std::vector<OutlineNode>& nodes, bool closed, double shortest);
 
 /// The chord (units) under which the fairing merges a cubic's nodes before rounding. 2 took
