@@ -809,14 +809,15 @@ ContourFairing fair_contour_once(const Contour& source, const FairSettings& requ
 }
 
 // On text, the rounded outline of a contour that keeps a curvature jump or a kink the check
-// counts is faired again, and the version with the fewest faults (fewer_faults) kept: which
-// joins the grid can make G2 depends on where the fairing puts the nodes and how much of the
-// tolerance it leaves rounding. Again leaving rounding a quarter unit more (0.75 units instead
-// of half a unit), then half a unit more, then at 0.9 of the tolerance leaving it half a unit,
-// then a whole unit, each only while faults are left. a–z A–Z, the ten text fonts still
-// jumping: g2-jumps 161 with the first alone, 137 with the first again, 115 with the second,
-// 111 with the third (Carlito 1 → 0), 102 with the fourth; 0.8 of the tolerance after the
-// third, 109 for a third more time on EB Garamond (docs/fairing.md, stops 76 and 77). Last,
+// counts, or (since stop 86) more inflections than its source, is faired again, and the
+// version with the fewest faults (fewer_faults) kept: which joins the grid can make G2 depends
+// on where the fairing puts the nodes and how much of the tolerance it leaves rounding. Again
+// leaving rounding a quarter unit more (0.75 units instead of half a unit), then half a unit
+// more, then at 0.9 of the tolerance leaving it half a unit, then a whole unit, each only while
+// faults are left. a–z A–Z, the ten text fonts still jumping: g2-jumps 161 with the first
+// alone, 137 with the first again, 115 with the second, 111 with the third (Carlito 1 → 0),
+// 102 with the fourth; 0.8 of the tolerance after the third, 109 for a third more time on EB
+// Garamond (docs/fairing.md, stops 76 and 77). Last,
 // with the writeback halving its spans down to twice its rounded shortest (16 units): a
 // stroke's edge bending back and forth by a unit or two, written as cubics of 5 to 7 units,
 // leaves whole steps no curvature to match (a–z A–Z of 27 fonts: EB Garamond's g2-jumps 57 →
@@ -847,7 +848,7 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& requested
   const FaultCounter counter(source, settings.units_per_em);
   OutlineFaults faults = counter.count(out.contour);
   for (const Refairing& r : refairings) {
-    if (faults.at_smooth_joins() == 0) break;
+    if (!faults.mendable()) break;
     FairSettings again_settings = settings;
     again_settings.rounding_reserve_units += r.more_reserve_units;
     again_settings.tolerance_units *= r.tolerance_scale;

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "geom/critical_points.hpp"
+#include "geom/curvature.hpp"
 #include "geom/join.hpp"
 
 namespace gf {
@@ -12,16 +14,60 @@ namespace {
 
 constexpr double corner_reach_em = 0.0025;  // the check's: a corner kept within this of the em
 
-bool is_corner(const Join& j, const JoinThresholds& t) {
-  return j.kind == JoinKind::degenerate || std::abs(j.angle_deg) > t.kink_max_deg;
+constexpr double flat_em = 1e-6;  // the check's: |κ|·UPM under this has no sign
+
+bool is_corner(const Join& j, double kink_max_deg) {
+  return j.kind == JoinKind::degenerate || std::abs(j.angle_deg) > kink_max_deg;
 }
+
+// The signs of κ along a segment, one for each stretch between its inflections (none where
+// |κ|·UPM is under flat_em there: a line's throughout).
+void append_curvature_signs(const Segment& s, double units_per_em, std::vector<int>& signs) {
+  std::vector<double> cuts = inflections(s);
+  cuts.insert(cuts.begin(), 0.0);
+  cuts.push_back(1.0);
+  for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+    const std::optional<double> kappa = curvature(derivatives_at(s, 0.5 * (cuts[k] + cuts[k + 1])));
+    if (kappa && std::abs(*kappa) * units_per_em >= flat_em) signs.push_back(*kappa > 0.0 ? 1 : -1);
+  }
+}
+
+// What a jump or kink mended may cost in inflections beyond the source's (fewer_faults).
+constexpr int inflections_per_mended_join = 2;
 
 }  // namespace
 
-FaultCounter::FaultCounter(const Contour& source, double units_per_em) : units_per_em_(units_per_em) {
+int inflections_along(const Contour& c, double units_per_em, double kink_max_deg) {
+  const std::size_t n = c.segments.size();
+  // Where each stretch starts: at a corner, and an open contour at its first segment.
+  std::vector<bool> starts(n, false);
+  if (!c.closed && n > 0) starts[0] = true;
+  for (const Join& j : joins_of(c)) starts[j.node] = starts[j.node] || is_corner(j, kink_max_deg);
+  const auto first = std::find(starts.begin(), starts.end(), true);
+  const bool round = first == starts.end();
+  const std::size_t from = round ? 0 : static_cast<std::size_t>(first - starts.begin());
+  int count = 0;
+  std::vector<int> signs;
+  const auto count_stretch = [&] {
+    for (std::size_t k = 1; k < signs.size(); ++k) count += signs[k] != signs[k - 1];
+    signs.clear();
+  };
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t i = (from + k) % n;
+    if (starts[i]) count_stretch();
+    append_curvature_signs(c.segments[i], units_per_em, signs);
+  }
+  if (round && c.closed && !signs.empty()) signs.push_back(signs.front());
+  count_stretch();
+  return count;
+}
+
+FaultCounter::FaultCounter(const Contour& source, double units_per_em)
+    : units_per_em_(units_per_em),
+      source_inflections_(inflections_along(source, units_per_em, JoinThresholds{}.kink_max_deg)) {
   const JoinThresholds thresholds;
   for (const Join& j : joins_of(source, thresholds))
-    if (is_corner(j, thresholds) && j.kind != JoinKind::degenerate) source_corners_.push_back(j.point);
+    if (is_corner(j, thresholds.kink_max_deg) && j.kind != JoinKind::degenerate) source_corners_.push_back(j.point);
 }
 
 OutlineFaults FaultCounter::count(const Contour& faired) const {
@@ -29,7 +75,7 @@ OutlineFaults FaultCounter::count(const Contour& faired) const {
   OutlineFaults out;
   std::vector<Vec2> corners;
   for (const Join& j : joins_of(faired, thresholds)) {
-    if (is_corner(j, thresholds)) {
+    if (is_corner(j, thresholds.kink_max_deg)) {
       corners.push_back(j.point);
       continue;
     }
@@ -39,10 +85,8 @@ OutlineFaults FaultCounter::count(const Contour& faired) const {
     }
     const std::optional<CurvatureJump> jump = curvature_jump(j, units_per_em_);
     out.jumps += !jump || jump->exceeds();
-    // κ changing sign across the join.
-    out.inflections += jump && *j.curvature_in * *j.curvature_out < 0.0;
   }
-  for (const Segment& s : faired.segments) out.inflections += static_cast<int>(inflections(s).size());
+  out.inflections = std::max(0, inflections_along(faired, units_per_em_, thresholds.kink_max_deg) - source_inflections_);
   const double reach = corner_reach_em * units_per_em_;
   for (const Vec2 c : source_corners_)
     out.corners_lost += std::none_of(corners.begin(), corners.end(), [&](Vec2 p) { return distance(p, c) <= reach; });
@@ -50,8 +94,10 @@ OutlineFaults FaultCounter::count(const Contour& faired) const {
 }
 
 bool fewer_faults(const OutlineFaults& a, const OutlineFaults& b) {
-  return a.at_smooth_joins() < b.at_smooth_joins() && a.kinks <= b.kinks && a.inflections <= b.inflections &&
-         a.corners_lost <= b.corners_lost;
+  const int mended = b.at_smooth_joins() - a.at_smooth_joins();
+  if (a.kinks > b.kinks || a.corners_lost > b.corners_lost || mended < 0) return false;
+  if (mended > 0 && a.inflections <= b.inflections + inflections_per_mended_join * mended) return true;
+  return a.inflections <= b.inflections && (mended > 0 || a.inflections < b.inflections || a.corners_lost < b.corners_lost);
 }
 
 }  // namespace gf

@@ -1,7 +1,8 @@
 // What the fairing issue's check counts against one faired contour: curvature jumps at smooth
 // joins (CurvatureJumpRule), kinks (joins turning by more than a smooth join may and less than
-// a corner does), inflections, and the source's corners that have no corner near them. Two
-// faired versions of a contour are compared by it (fair_contour's fairings again).
+// a corner does), inflections beyond the source's, and the source's corners that have no
+// corner near them. Two faired versions of a contour are compared by it (fair_contour's
+// fairings again).
 #pragma once
 
 #include <vector>
@@ -11,9 +12,14 @@
 namespace gf {
 
 struct OutlineFaults {
+  /// `inflections`: how many more the faired contour has than its source (the check's bar:
+  /// inflections not increased).
   int jumps = 0, kinks = 0, inflections = 0, corners_lost = 0;
-  /// What a fairing again is for: the jumps and kinks the check counts at smooth joins.
+  /// The jumps and kinks the check counts at smooth joins.
   int at_smooth_joins() const { return jumps + kinks; }
+  /// What a fairing again is for: jumps or kinks at smooth joins, or inflections beyond the
+  /// source's.
+  bool mendable() const { return at_smooth_joins() > 0 || inflections > 0; }
 };
 
 /// The faults of each faired version of one source contour, on an em of `units_per_em`. A
@@ -28,11 +34,23 @@ class FaultCounter {
  private:
   std::vector<Vec2> source_corners_;
   double units_per_em_;
+  int source_inflections_ = 0;
 };
 
-/// Whether `a` has fewer jumps and kinks together than `b`, and no more kinks, inflections or
-/// lost corners: a curvature jump is not traded for a broken tangent, a new inflection or a
-/// corner rounded off.
+/// The sign changes of κ along each stretch of `c` between corners (joins turning by more than
+/// `kink_max_deg`, or without a direction; kinks belong to the stretch), as the check counts
+/// them: |κ|·UPM under 1e-6 is no sign, so κ changing sign across a node where it is 0 on
+/// both sides counts. A closed contour without a corner is one stretch round.
+int inflections_along(const Contour& c, double units_per_em, double kink_max_deg);
+
+/// Whether `a` has fewer faults than `b`. Either none more of any kind (jumps and kinks
+/// together, kinks, inflections beyond the source's, lost corners) and fewer jumps and kinks
+/// together, inflections or lost corners; or fewer jumps and kinks together at the cost of at
+/// most two inflections for each: a jump is not traded for a broken tangent or a corner
+/// rounded off, and an inflection only for a jump, whose bar allows none while the check's
+/// inflection bar is the font's total (Vollkorn's R: a jump mended by a fairing again with two
+/// more inflections than the source's contour, the font's inflections still 0.98× the
+/// source's).
 bool fewer_faults(const OutlineFaults& a, const OutlineFaults& b);
 
 }  // namespace gf

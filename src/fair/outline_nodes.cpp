@@ -83,6 +83,19 @@ void replace_pair(std::vector<OutlineNode>& nodes, std::size_t i, const OutlineN
 
 bool on_axis(const OutlineNode& n) { return n.grid_step && (n.grid_step->x == 0.0 || n.grid_step->y == 0.0); }
 
+// Whether the grid can draw the cubic from a to b: not under `shortest`, nor, under
+// flat_cubic_chord, bending less at both ends than the least curvature whole steps give a
+// cubic that short: κ = (2/3)·d/h² with the far handle d ≥ 1/|s| off the tangent for a grid
+// direction s and the handle h a whole number of steps, so κ ≥ 2/(3c³) for a chord c.
+bool too_short_for_the_grid(const OutlineNode& a, const OutlineNode& b, double shortest) {
+  const double chord = distance(a.point, b.point);
+  if (chord < shortest) return true;
+  if (chord >= flat_cubic_chord) return false;
+  const Cubic c{a.point, *a.out_handle, *b.in_handle, b.point};
+  const double least = 2.0 / (3.0 * chord * chord * chord);
+  return std::abs(node_curvature(c, SegmentEnd::start)) < least && std::abs(node_curvature(c, SegmentEnd::end)) < least;
+}
+
 }  // namespace
 
 void drop_empty_cubics(std::vector<OutlineNode>& nodes, bool closed) {
@@ -114,7 +127,7 @@ void merge_tiny_cubics(std::vector<OutlineNode>& nodes, bool closed, double shor
     // A line's end (no handle on its side) is kept where it is; its tangent runs along the line.
     const bool a_ends_line = !a.in_handle, b_ends_line = !b.out_handle;
     if (!interior || !a.smooth || !b.smooth || !a.out_handle || !b.in_handle || (a_ends_line && b_ends_line) ||
-        distance(a.point, b.point) >= shortest) {
+        !too_short_for_the_grid(a, b, shortest)) {
       ++i;
       continue;
     }

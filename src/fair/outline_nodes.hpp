@@ -49,7 +49,8 @@ Contour to_contour(const std::vector<OutlineNode>& nodes, bool closed);
 /// a–z A–Z and the whole of DejaVu Sans it finds none.
 void drop_empty_cubics(std::vector<OutlineNode>& nodes, bool closed);
 
-/// Merges the two smooth nodes of every cubic whose chord is under `shortest` into one, for
+/// Merges the two smooth nodes of every cubic whose chord is under `shortest` (or under
+/// flat_cubic_chord, bending less than the grid can bend a cubic that short) into one, for
 /// rounding: the grid cannot draw a cubic of a few units, and whole steps folded such cubics
 /// into loops with an extremum inside (Because We Create's P and r) or crossed their handles
 /// (Vollkorn's z). Where both nodes are extrema on different axes, they become one corner
@@ -68,6 +69,13 @@ void merge_tiny_cubics(std::vector<OutlineNode>& nodes, bool closed, double shor
 /// 52 → 50, Junicode 59 → 52 (inflections 1.027× → 0.997×), Because We Create's TV 0.176× →
 /// 0.157× with its missing extrema 2 as before. 4 made four new corners on Gentium Plus.
 constexpr double tiny_cubic_chord = 3.0;
+
+/// Under this chord (units) merge_tiny_cubics also merges a cubic whose curvature at both ends
+/// lies below the least the grid can give a cubic that short (2/(3c³) for a chord c): whole
+/// steps could only draw it straight. Spartan's e: a 5.4-unit cubic from its right side's
+/// x-extremum, κ·UPM 7.0 and 3.4 at its ends (UPM 2,000), rounded straight against the next
+/// cubic's 3.4.
+constexpr double flat_cubic_chord = 8.0;
 
 /// A node whose handles break G1 by less than `limit_rad` made G1: both handles turned onto
 /// their bisector, each by half the break, where that moves neither cubic by more than

@@ -672,6 +672,55 @@ TEST(OutlineNodes, ACubicOfTwoUnitsMergesBeforeTheGridFoldsIt) {
   }
 }
 
+TEST(OutlineNodes, ACubicTooShortForTheGridToBendMergesBeforeRounding) {
+  // Spartan's e (UPM 2,000): its right side from the crossbar's corner up to the top's level
+  // extremum, unrounded. A 5.4-unit cubic leaves the x-extremum at (862, 435.5) with κ·UPM 7.0
+  // and 3.4 at its ends; whole steps bend a cubic that short at least κ·UPM 2/(3·5.4³)·2000 =
+  // 8.5, so rounded it was straight against the 3.4 of the cubic after it. Merged, the
+  // extremum stays and its out-handle reaches on up its tangent, as far as the dropped node's
+  // did plus the chord.
+  const std::vector<OutlineNode> faired{
+      node({859, 379}, std::nullopt, Vec2{860.83888785, 397.38887846}, false),
+      node({861.99133983, 435.53910679}, Vec2{861.99133983, 420.85783001}, Vec2{861.99133983, 435.79837837}, true,
+           Vec2{0, 1}),
+      node({861.95567092, 440.92993849}, Vec2{861.99098041, 437.87102987}, Vec2{861.88890415, 446.71403454}),
+      node({861.51067969, 458.00033283}, Vec2{861.73896472, 452.40403693}, Vec2{861.19968996, 465.62409396}),
+      node({860.14770006, 480.42521425}, Vec2{860.74228650, 473.09890624}, Vec2{858.89448757, 495.86690626}),
+      node({854.60760924, 525.00373677}, Vec2{857.02552560, 510.72681894}, Vec2{851.07423886, 545.86700542}),
+      node({837.81848905, 592.80402112}, Vec2{845.79418470, 568.87693418}, Vec2{817.20567880, 654.64245189}),
+      node({750.13358559, 737.57202875}, Vec2{785.33207884, 702.37353550}, Vec2{683.86587471, 803.83973963}),
+      node({465.28480332, 844.98998617}, Vec2{586.50867238, 844.98998617}, std::nullopt, false)};
+  const Cubic short_one = outline_cubic(faired, 1);
+  const double chord = distance(short_one.p[0], short_one.p[3]);
+  ASSERT_GT(chord, tiny_cubic_chord);
+  ASSERT_LT(chord, flat_cubic_chord);
+  const double least = 2.0 / (3.0 * chord * chord * chord);
+  ASSERT_LT(std::abs(node_curvature(short_one, SegmentEnd::start)), least);
+  ASSERT_LT(std::abs(node_curvature(short_one, SegmentEnd::end)), least);
+  std::vector<OutlineNode> nodes = faired;
+  merge_tiny_cubics(nodes, false, tiny_cubic_chord);
+  ASSERT_EQ(nodes.size(), faired.size() - 1);
+  EXPECT_EQ(nodes[1].point, faired[1].point);  // the extremum stays
+  const double reach = distance(faired[2].point, *faired[2].out_handle) + chord;
+  EXPECT_NEAR(nodes[1].out_handle->x, faired[1].point.x, 1e-9);
+  EXPECT_NEAR(nodes[1].out_handle->y, faired[1].point.y + reach, 1e-9);
+  EXPECT_EQ(nodes[2].point, faired[3].point);
+}
+
+TEST(OutlineNodes, AShortCubicThatBendsAsTheGridCanDrawStays) {
+  // A serif's round end: a quarter circle of radius 4 (chord 5.7, κ = 0.25) between two level
+  // and upright stretches. The grid draws a cubic that bends so, and it is not merged.
+  const double h = 4.0 * 0.5523;
+  const std::vector<OutlineNode> faired{
+      node({0, 0}, std::nullopt, Vec2{20, 0}, false),
+      node({40, 0}, Vec2{30, 0}, Vec2{40 + h, 0}, true, Vec2{1, 0}),
+      node({44, 4}, Vec2{44, 4 - h}, Vec2{44, 14}, true, Vec2{0, 1}),
+      node({44, 40}, Vec2{44, 30}, std::nullopt, false)};
+  std::vector<OutlineNode> nodes = faired;
+  merge_tiny_cubics(nodes, false, tiny_cubic_chord);
+  EXPECT_EQ(nodes.size(), faired.size());
+}
+
 TEST(OutlineNodes, ATinyCubicAfterALineMergesIntoTheLinesEnd) {
   // Comic Neue's i dot: a line stood upright to x = 86 ends at (86, 603), and the curve leaving
   // it passes the vertical 0.8 units on, where a node sat; rounded, that cubic folded on its

@@ -8,6 +8,9 @@
 #include <numbers>
 #include <vector>
 
+#include "geom/critical_points.hpp"
+#include "geom/join.hpp"
+
 namespace gf {
 namespace {
 
@@ -58,16 +61,48 @@ TEST(OutlineFaults, AnSCurveHasAnInflectionAndARoundedCornerIsLost) {
   expect_faults(FaultCounter(square, upm).count(c), {.jumps = 2, .inflections = 1, .corners_lost = 1});
 }
 
+TEST(OutlineFaults, InflectionsCountOnlyBeyondTheSources) {
+  // The S of the test above against itself: its one inflection is the source's.
+  const Contour s_curve = closed({Cubic{{{0, 0}, {50, 20}, {50, -20}, {100, 0}}}, Line{{{100, 0}, {100, 100}}},
+                                  Line{{{100, 100}, {0, 100}}}, Line{{{0, 100}, {0, 0}}}});
+  EXPECT_EQ(inflections_along(s_curve, upm, JoinThresholds{}.kink_max_deg), 1);
+  EXPECT_EQ(FaultCounter(s_curve, upm).count(s_curve).inflections, 0);
+  EXPECT_EQ(FaultCounter(square, upm).count(s_curve).inflections, 1);
+}
+
+TEST(OutlineFaults, CurvatureChangingSignThroughAFlatNodeIsAnInflection) {
+  // Two cubics meet level at (100, 0), each with its handles on one line through the node, so
+  // κ = 0 there from both sides; the first bends right into it, the second left out of it
+  // (Spartan's e rounded: its right side's cubics, handles on one point, wobbling so). The
+  // check sees the sign change across the node; neither cubic has one inside.
+  Contour c;
+  c.closed = false;
+  c.segments = {Cubic{{{0, -10}, {30, 0}, {60, 0}, {100, 0}}}, Cubic{{{100, 0}, {140, 0}, {170, 0}, {200, 10}}}};
+  c.nodes.assign(3, NodeFlags{});
+  for (const Segment& s : c.segments) ASSERT_TRUE(inflections(s).empty());
+  EXPECT_EQ(inflections_along(c, upm, JoinThresholds{}.kink_max_deg), 1);
+  // Cut at a corner there instead, the two bends belong to different stretches.
+  c.segments[1] = Cubic{{{100, 0}, {140, 10}, {170, 30}, {200, 60}}};
+  ASSERT_TRUE(inflections(c.segments[1]).empty());
+  EXPECT_EQ(inflections_along(c, upm, JoinThresholds{}.kink_max_deg), 0);
+}
+
 TEST(OutlineFaults, FewerJumpsAreBetterOnlyWithNoMoreOfTheRest) {
   const OutlineFaults two_jumps{2, 0, 1, 0};
   EXPECT_TRUE(fewer_faults({1, 0, 1, 0}, two_jumps));
   EXPECT_FALSE(fewer_faults(two_jumps, two_jumps));
   EXPECT_FALSE(fewer_faults({0, 1, 1, 0}, two_jumps));  // a jump traded for a kink
-  EXPECT_FALSE(fewer_faults({0, 0, 2, 0}, two_jumps));  // for an inflection
   EXPECT_FALSE(fewer_faults({0, 0, 1, 1}, two_jumps));  // for a corner rounded off
   EXPECT_TRUE(fewer_faults({1, 0, 1, 0}, {1, 1, 1, 0}));  // a kink mended
   EXPECT_FALSE(fewer_faults({2, 0, 1, 0}, {1, 1, 1, 0}));  // a kink traded for a jump: as many
   EXPECT_TRUE(fewer_faults({0, 0, 0, 0}, two_jumps));
+  // A jump may cost up to two inflections beyond the source's, not more.
+  EXPECT_TRUE(fewer_faults({1, 0, 3, 0}, two_jumps));
+  EXPECT_FALSE(fewer_faults({1, 0, 4, 0}, two_jumps));
+  EXPECT_TRUE(fewer_faults({0, 0, 5, 0}, two_jumps));
+  // Fewer inflections beyond the source's are better with as many jumps, not with more.
+  EXPECT_TRUE(fewer_faults({2, 0, 0, 0}, two_jumps));
+  EXPECT_FALSE(fewer_faults({3, 0, 0, 0}, two_jumps));
 }
 
 }  // namespace
