@@ -84,9 +84,10 @@ void replace_pair(std::vector<OutlineNode>& nodes, std::size_t i, const OutlineN
 bool on_axis(const OutlineNode& n) { return n.grid_step && (n.grid_step->x == 0.0 || n.grid_step->y == 0.0); }
 
 // Whether the grid can draw the cubic from a to b: not under `shortest`, nor, under
-// flat_cubic_chord, bending less at both ends than the least curvature whole steps give a
-// cubic that short: κ = (2/3)·d/h² with the far handle d ≥ 1/|s| off the tangent for a grid
-// direction s and the handle h a whole number of steps, so κ ≥ 2/(3c³) for a chord c.
+// flat_cubic_chord, bending less at both ends than the least curvature other than 0 whole
+// steps give a cubic that short: κ = (2/3)·d/h² with the far handle d ≥ 1/|s| off the tangent
+// for a grid direction s and the handle h whole steps, |s| ≤ h ≤ c for a chord c, so
+// κ ≥ (2/3)·(1/c)/c² = 2/(3c³).
 bool too_short_for_the_grid(const OutlineNode& a, const OutlineNode& b, double shortest) {
   const double chord = distance(a.point, b.point);
   if (chord < shortest) return true;

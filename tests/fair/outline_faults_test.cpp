@@ -87,7 +87,7 @@ TEST(OutlineFaults, CurvatureChangingSignThroughAFlatNodeIsAnInflection) {
   EXPECT_EQ(inflections_along(c, upm, JoinThresholds{}.kink_max_deg), 0);
 }
 
-TEST(OutlineFaults, FewerJumpsAreBetterOnlyWithNoMoreOfTheRest) {
+TEST(OutlineFaults, FewerJumpsAreBetterWithNoMoreKinksOrLostCornersAndAtMostTwoInflectionsEach) {
   const OutlineFaults two_jumps{2, 0, 1, 0};
   EXPECT_TRUE(fewer_faults({1, 0, 1, 0}, two_jumps));
   EXPECT_FALSE(fewer_faults(two_jumps, two_jumps));
