@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <span>
+#include <vector>
 
 #include "geom/critical_points.hpp"
 #include "geom/curvature.hpp"
@@ -37,12 +39,12 @@ constexpr int inflections_per_mended_join = 2;
 
 }  // namespace
 
-int inflections_along(const Contour& c, double units_per_em, double kink_max_deg) {
+int inflections_along(const Contour& c, std::span<const Join> joins, double units_per_em, double kink_max_deg) {
   const std::size_t n = c.segments.size();
   // Where each stretch starts: at a corner, and an open contour at its first segment.
   std::vector<bool> starts(n, false);
   if (!c.closed && n > 0) starts[0] = true;
-  for (const Join& j : joins_of(c)) starts[j.node] = starts[j.node] || is_corner(j, kink_max_deg);
+  for (const Join& j : joins) starts[j.node] = starts[j.node] || is_corner(j, kink_max_deg);
   const auto first = std::find(starts.begin(), starts.end(), true);
   const bool round = first == starts.end();
   const std::size_t from = round ? 0 : static_cast<std::size_t>(first - starts.begin());
@@ -62,19 +64,20 @@ int inflections_along(const Contour& c, double units_per_em, double kink_max_deg
   return count;
 }
 
-FaultCounter::FaultCounter(const Contour& source, double units_per_em)
-    : units_per_em_(units_per_em),
-      source_inflections_(inflections_along(source, units_per_em, JoinThresholds{}.kink_max_deg)) {
+FaultCounter::FaultCounter(const Contour& source, double units_per_em) : units_per_em_(units_per_em) {
   const JoinThresholds thresholds;
-  for (const Join& j : joins_of(source, thresholds))
+  const std::vector<Join> joins = joins_of(source, thresholds);
+  for (const Join& j : joins)
     if (is_corner(j, thresholds.kink_max_deg) && j.kind != JoinKind::degenerate) source_corners_.push_back(j.point);
+  source_inflections_ = inflections_along(source, joins, units_per_em, thresholds.kink_max_deg);
 }
 
 OutlineFaults FaultCounter::count(const Contour& faired) const {
   const JoinThresholds thresholds;
   OutlineFaults out;
   std::vector<Vec2> corners;
-  for (const Join& j : joins_of(faired, thresholds)) {
+  const std::vector<Join> joins = joins_of(faired, thresholds);
+  for (const Join& j : joins) {
     if (is_corner(j, thresholds.kink_max_deg)) {
       corners.push_back(j.point);
       continue;
@@ -86,7 +89,7 @@ OutlineFaults FaultCounter::count(const Contour& faired) const {
     const std::optional<CurvatureJump> jump = curvature_jump(j, units_per_em_);
     out.jumps += !jump || jump->exceeds();
   }
-  out.inflections = std::max(0, inflections_along(faired, units_per_em_, thresholds.kink_max_deg) - source_inflections_);
+  out.inflections = std::max(0, inflections_along(faired, joins, units_per_em_, thresholds.kink_max_deg) - source_inflections_);
   const double reach = corner_reach_em * units_per_em_;
   for (const Vec2 c : source_corners_)
     out.corners_lost += std::none_of(corners.begin(), corners.end(), [&](Vec2 p) { return distance(p, c) <= reach; });

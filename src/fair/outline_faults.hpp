@@ -5,9 +5,11 @@
 // fairings again).
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "geom/contour.hpp"
+#include "geom/join.hpp"
 
 namespace gf {
 
@@ -37,11 +39,12 @@ class FaultCounter {
   int source_inflections_ = 0;
 };
 
-/// The sign changes of κ along each stretch of `c` between corners (joins turning by more than
-/// `kink_max_deg`, or without a direction; kinks belong to the stretch), as the check counts
-/// them: |κ|·UPM under 1e-6 is no sign, so κ changing sign across a node where it is 0 on
-/// both sides counts. A closed contour without a corner is one stretch round.
-int inflections_along(const Contour& c, double units_per_em, double kink_max_deg);
+/// The sign changes of κ along each stretch of `c` between corners (of its `joins`, joins_of(c),
+/// those turning by more than `kink_max_deg` or without a direction; kinks belong to the
+/// stretch), as the check counts them: |κ|·UPM under 1e-6 is no sign, so κ changing sign across
+/// a node where it is 0 on both sides counts. A closed contour without a corner is one stretch
+/// round.
+int inflections_along(const Contour& c, std::span<const Join> joins, double units_per_em, double kink_max_deg);
 
 /// Whether `a` has fewer faults than `b`. Either none more of any kind (jumps and kinks
 /// together, kinks, inflections beyond the source's, lost corners) and fewer jumps and kinks

@@ -65,7 +65,7 @@ TEST(OutlineFaults, InflectionsCountOnlyBeyondTheSources) {
   // The S of the test above against itself: its one inflection is the source's.
   const Contour s_curve = closed({Cubic{{{0, 0}, {50, 20}, {50, -20}, {100, 0}}}, Line{{{100, 0}, {100, 100}}},
                                   Line{{{100, 100}, {0, 100}}}, Line{{{0, 100}, {0, 0}}}});
-  EXPECT_EQ(inflections_along(s_curve, upm, JoinThresholds{}.kink_max_deg), 1);
+  EXPECT_EQ(inflections_along(s_curve, joins_of(s_curve), upm, JoinThresholds{}.kink_max_deg), 1);
   EXPECT_EQ(FaultCounter(s_curve, upm).count(s_curve).inflections, 0);
   EXPECT_EQ(FaultCounter(square, upm).count(s_curve).inflections, 1);
 }
@@ -80,11 +80,11 @@ TEST(OutlineFaults, CurvatureChangingSignThroughAFlatNodeIsAnInflection) {
   c.segments = {Cubic{{{0, -10}, {30, 0}, {60, 0}, {100, 0}}}, Cubic{{{100, 0}, {140, 0}, {170, 0}, {200, 10}}}};
   c.nodes.assign(3, NodeFlags{});
   for (const Segment& s : c.segments) ASSERT_TRUE(inflections(s).empty());
-  EXPECT_EQ(inflections_along(c, upm, JoinThresholds{}.kink_max_deg), 1);
+  EXPECT_EQ(inflections_along(c, joins_of(c), upm, JoinThresholds{}.kink_max_deg), 1);
   // Cut at a corner there instead, the two bends belong to different stretches.
   c.segments[1] = Cubic{{{100, 0}, {140, 10}, {170, 30}, {200, 60}}};
   ASSERT_TRUE(inflections(c.segments[1]).empty());
-  EXPECT_EQ(inflections_along(c, upm, JoinThresholds{}.kink_max_deg), 0);
+  EXPECT_EQ(inflections_along(c, joins_of(c), upm, JoinThresholds{}.kink_max_deg), 0);
 }
 
 TEST(OutlineFaults, FewerJumpsAreBetterWithNoMoreKinksOrLostCornersAndAtMostTwoInflectionsEach) {
