@@ -817,16 +817,15 @@ ContourFairing fair_contour_once(const Contour& source, const FairSettings& requ
 // faults are left. a–z A–Z, the ten text fonts still jumping: g2-jumps 161 with the first
 // alone, 137 with the first again, 115 with the second, 111 with the third (Carlito 1 → 0),
 // 102 with the fourth; 0.8 of the tolerance after the third, 109 for a third more time on EB
-// Garamond (docs/fairing.md, stops 76 and 77). Last,
-// with the writeback halving its spans down to twice its rounded shortest (16 units): a
-// stroke's edge bending back and forth by a unit or two, written as cubics of 5 to 7 units,
-// leaves whole steps no curvature to match (a–z A–Z of 27 fonts: EB Garamond's g2-jumps 57 →
-// 53, its W; Caladea's 3 → 1, its y; no other font changed; at 24 units 54 and 1; halving so
-// in every first fairing, EB Garamond 85; stop 80). Only a contour its first fairing took at
-// most two tries (fair_within_budgets) to fair, and each fairing again stops there: of whole
-// DejaVu Sans's contours that took more (another basis, a kink pass), none came out better,
-// and they took most of the time. Not on handwriting, whose bar is a share of its joins, which
-// it meets.
+// Garamond (docs/fairing.md, stops 76 and 77). Last, with the writeback halving its spans
+// down to twice its rounded shortest (16 units): a stroke's edge bending back and forth by a
+// unit or two, written as cubics of 5 to 7 units, leaves whole steps no curvature to match
+// (a–z A–Z of 27 fonts: EB Garamond's g2-jumps 57 → 53, its W; Caladea's 3 → 1, its y; no
+// other font changed; at 24 units 54 and 1; halving so in every first fairing, EB Garamond 85;
+// stop 80). Only a contour its first fairing took at most two tries (fair_within_budgets) to
+// fair, and each fairing again stops there: of whole DejaVu Sans's contours that took more
+// (another basis, a kink pass), none came out better, and they took most of the time. Not on
+// handwriting, whose bar is a share of its joins, which it meets.
 struct Refairing {
   double more_reserve_units = 0.0;  ///< added to FairSettings::rounding_reserve_units
   double tolerance_scale = 1.0;     ///< of FairSettings::tolerance_units

@@ -99,8 +99,8 @@ OutlineFaults FaultCounter::count(const Contour& faired) const {
 bool fewer_faults(const OutlineFaults& a, const OutlineFaults& b) {
   const int mended = b.at_smooth_joins() - a.at_smooth_joins();
   if (a.kinks > b.kinks || a.corners_lost > b.corners_lost || mended < 0) return false;
-  if (mended > 0 && a.inflections <= b.inflections + inflections_per_mended_join * mended) return true;
-  return a.inflections <= b.inflections && (mended > 0 || a.inflections < b.inflections || a.corners_lost < b.corners_lost);
+  return a.inflections <= b.inflections + inflections_per_mended_join * mended &&
+         (mended > 0 || a.inflections < b.inflections || a.corners_lost < b.corners_lost);
 }
 
 }  // namespace gf
