@@ -207,7 +207,7 @@ void record_chain(const FairedChain& chain, bool smooth_start, FairedPieces& out
 }
 
 // Where a piece starts and ends once faired: a run may have slid its ends along the lines it
-// meets (fair/g3_run.hpp; leave_line_earlier in fair/run_fairing.cpp), and the lines follow.
+// meets (fair/g3_run.hpp; leave_line_earlier in fair/chain_fairing.cpp), and the lines follow.
 LacPoint faired_start(const FairedRun& run) { return run.chains.front().start_frame(); }
 LacPoint faired_end(const FairedRun& run) { return run.chains.back().end_frame(); }
 

@@ -11,8 +11,8 @@
 #include <optional>
 #include <vector>
 
+#include "fair/faired_run.hpp"
 #include "fair/outline_nodes.hpp"
-#include "fair/run_fairing.hpp"
 
 namespace gf {
 

@@ -15,7 +15,7 @@
 //   inflection       tangent angle, slide along    κ = 0
 //                    its normal
 //   held             tangent angle, slide along    κ, the G2 solve's (a smooth node the
-//                    its normal                    solve would carry across 0, run_fairing)
+//                    its normal                    solve would carry across 0, g3_reexpression)
 //   corner (end)     κ                             point, tangent; κ′ the end secant
 //   corner, held     tangent angle                 point, κ (the G2 solve's); κ′ the end secant
 //   line (end)       slide along the line          tangent, κ = κ′ = 0 (G3 with the line)
@@ -24,9 +24,9 @@
 //
 // A G3 line join needs κ to rise from 0 with zero slope, which a curve leaving a short line (a
 // straight stretch in the spine of an 's') may only do by sliding off more line than there is:
-// such a run is solved again with its line joins held to G2, and then (fair/run_fairing) once
-// more at G3 with the segments at those joins cut in two, a shorter first spiral leaving its
-// line with the room the whole one lacked.
+// such a run is solved again with its line joins held to G2, and then (fair/g3_reexpression)
+// once more at G3 with the segments at those joins cut in two, a shorter first spiral leaving
+// its line with the room the whole one lacked.
 //
 // Why the junctions move rather than only κ′ being forced on G2 frames: with point, tangent and
 // κ held, a forced κ′ leaves each segment three unknowns for three end conditions, and on
@@ -41,8 +41,8 @@
 
 #include "aesthetic/polynomial_spiral.hpp"
 #include "fair/contour_plan.hpp"
+#include "fair/faired_run.hpp"
 #include "fair/path_piece.hpp"
-#include "fair/run_fairing.hpp"
 
 namespace gf {
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "aesthetic/log_aesthetic_segment.hpp"
-#include "fair/run_fairing.hpp"
+#include "fair/faired_run.hpp"
 
 namespace gf {
 

@@ -1144,7 +1144,7 @@ TEST(ContourFairing, CurvesMeetTheirLinesWithZeroCurvatureBeforeRounding) {
 // smoothing guide, another kept its stalled chain with a relative curvature jump of 0.17, and
 // in the whole w the stalls were cut down to 2-unit segments. Each fillet now leaves its lines
 // earlier, by half the clothoid that shifts it by a quarter of the budget
-// (fair/run_fairing.cpp, transition_slide): a G2 log-aesthetic chain, κ = 0 at both lines,
+// (fair/chain_fairing.cpp, transition_slide): a G2 log-aesthetic chain, κ = 0 at both lines,
 // each line on its source line and no longer.
 TEST(ContourFairing, ACornerRoundedBetweenTwoLinesLeavesTheLinesEarlier) {
   struct Fillet {

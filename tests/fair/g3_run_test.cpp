@@ -156,7 +156,7 @@ TEST(G3Run, ASineWaveBetweenCornersKeepsItsInflectionAtZeroCurvature) {
 
 TEST(G3Run, HeldNodesKeepTheirCurvatureAndTheRunStaysG3) {
   // The sine wave, its first corner and the smooth node after it held at the sine's κ (what
-  // run_fairing does to nodes the solve would carry across 0): each keeps its κ exactly, the
+  // g3_reexpression does to nodes the solve would carry across 0): each keeps its κ exactly, the
   // corner its point, and every junction is G3.
   SineWave w = sine_wave();
   w.nodes[0].kind = G3NodeKind::corner_held;
