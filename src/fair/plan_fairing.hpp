@@ -1,0 +1,99 @@
+// A contour's plan (fair/contour_plan) faired run by run and written back as one outline of
+// nodes, not yet rounded: each smooth run faired on its basis (fair/run_fairing) within the
+// chain's budget, its chains written as cubics (fair/cubic_writeback) within the cubics' budget,
+// lines kept between them, and the pieces recorded for the segments' export.
+#pragma once
+
+#include <deque>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "fair/contour_plan.hpp"
+#include "fair/fair_options.hpp"
+#include "fair/faired_piece.hpp"
+#include "fair/g3_cubics.hpp"
+#include "fair/kinked_corners.hpp"
+#include "fair/outline_nodes.hpp"
+#include "fair/run_fairing.hpp"
+
+namespace gf {
+
+/// How the tolerance is shared: the chains' budget against the source, the cubics' against the
+/// chains.
+struct Budgets {
+  double chain, cubic;
+};
+
+/// Runs already faired for this contour: a plan made again with a corner smoothed keeps every
+/// run away from that corner as it was, and those need not be faired twice. Where the budgets
+/// were halved because a run failed (not because the outline strayed), a run faired within a
+/// larger budget stands too.
+class FairedRuns {
+ public:
+  /// `basis`: what a run that failed on its own outline is faired on next (text); one faired
+  /// on its own outline stands.
+  const FairedRun& get(const SmoothRun& run, const FairSettings& settings, double budget, bool larger_stands,
+                       RunBasis basis) {
+    // A contour's first run to fail on its own outline ends that attempt, so on the guides the
+    // runs after it come untried on their own. Where a guide fails, the run's own outline serves
+    // rather than the contour falling to the last basis and its stalled chains (Lato's W: one
+    // cap's guide failed, and a flank kept a chain with κ·UPM −34 and 19 across a junction).
+    // Their own outline first for all of them moved more rounded joins than it mended (Lato's
+    // a–z A–Z g2-jumps 17 → 23, FreeSerif's 12 → 15).
+    if (basis == RunBasis::guide) {
+      const FairedRun& guided = find_or_fair(run, settings, budget, larger_stands, basis);
+      if (guided.ok) return guided;
+      const FairedRun& own = find_or_fair(run, settings, budget, larger_stands, RunBasis::own);
+      return own.ok ? own : guided;
+    }
+    return find_or_fair(run, settings, budget, larger_stands, basis);
+  }
+
+ private:
+  const FairedRun& find_or_fair(const SmoothRun& run, const FairSettings& settings, double budget, bool larger_stands,
+                                RunBasis basis) {
+    for (const Entry& e : entries_)
+      if (e.run == run && (e.budget == budget || (larger_stands && e.faired.ok && e.budget > budget)) &&
+          (e.basis == basis || (e.basis == RunBasis::own && e.faired.ok)))
+        return e.faired;
+    entries_.push_back({run, budget, basis, fair_run(run, settings, budget, basis)});
+    return entries_.back().faired;
+  }
+
+  struct Entry {
+    SmoothRun run;
+    double budget;
+    RunBasis basis;
+    FairedRun faired;
+  };
+  std::deque<Entry> entries_;  // stable references
+};
+
+/// A plan faired: its nodes, or why not, with what the fairing counted on the way.
+struct FairedPlan {
+  std::vector<OutlineNode> nodes;
+  std::string failure;
+  double mismatch = 0.0;
+  int g1_nodes = 0;
+  int guide_stretches = 0;
+  int g3_runs = 0, g2_line_joins = 0;
+  std::vector<std::string> g3_shortfalls;
+  G3CubicReport g3_cubics;
+  std::vector<std::string> runs_as_drawn;
+  FairedPieces pieces;
+  std::vector<CornerJoin> corners;
+};
+
+/// A line from a to b as an exported piece.
+FairedPiece line_piece(Vec2 a, Vec2 b, bool smooth_start);
+
+/// The plan's runs faired (through `cache`) on `basis` within `budgets.chain`, their chains
+/// written as cubics within `budgets.cubic`, and the lines between them; the first run that
+/// fails ends it with its reason, unless `as_drawn`, where an open run that fails is kept as the
+/// source draws it instead of failing the contour. `after_run_failure`: the budgets were halved
+/// because a run failed, so a run faired within a larger budget stands (FairedRuns::get).
+FairedPlan fair_plan(const ContourPlan& plan, const FairSettings& settings, Budgets budgets, FairedRuns& cache,
+                     bool after_run_failure, RunBasis basis, bool as_drawn = false);
+
+}  // namespace gf
