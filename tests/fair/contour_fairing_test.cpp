@@ -1310,35 +1310,68 @@ TEST(ContourFairing, ATextRunWithSeveralJumpsIsPolishedToo) {
 
 // EB Garamond's d (Georg Duffner, OFL; Debian fonts-ebgaramond; UPM 1000, tolerance 1.25):
 // the counter is a bowl that leaves the stem's inner line and comes back to it, tangent both
-// times, turning a whole turn between. No chain leaves the line with κ = 0 and comes back so
-// within the budget, on any basis (its guide comes nowhere within it), and the whole contour
-// was kept unfaired. Such a run is kept as drawn (ContourFairing::runs_as_drawn), the rest of
-// the glyph faired. (The t's crossbar cap this test took before is faired on its guide since a
-// run whose guide fails may be faired on its own outline: the contour no longer falls through.)
-TEST(ContourFairing, ARunNoChainFairsIsKeptAsDrawnAndTheRestFaired) {
+// times, turning a whole turn between, with two sharp corners on its left. No chain on its own
+// outline comes within the budget, and its smoothing guide came 0.2521 units from it, against
+// 0.2520 allowed (the guide's share of a budget of 0.30, and a twentieth): no guide, the run
+// kept as drawn, with a κ·UPM jump of 11.3 where it leaves the stem and a 1° kink where it
+// comes back. A guide within the budget serves; the chains on it come within, and the whole d
+// is faired G2.
+TEST(ContourFairing, AGuideWithinTheBudgetServesThoughPastItsShare) {
   const FairedGlyph f = fair_named(test::eb_garamond, "d", FairOptions{});
   const GlyphFairing& r = f.result;
   ASSERT_TRUE(r.kept.empty()) << r.kept.front();
-  ASSERT_EQ(r.runs_as_drawn.size(), 1u);
-  EXPECT_NE(r.runs_as_drawn.front().find("(352, 120)"), std::string::npos) << r.runs_as_drawn.front();
+  EXPECT_TRUE(r.runs_as_drawn.empty()) << r.runs_as_drawn.front();
   ASSERT_EQ(r.glyph.outline.contours.size(), 2u);
-  for (std::size_t i = 0; i < 2; ++i) {
-    const Contour& source = f.source.outline.contours[i];
-    const Contour& faired = r.glyph.outline.contours[i];
-    EXPECT_LE(brute_force_hausdorff(source, faired), 1.01 * f.settings.tolerance_units) << "contour " << i;
-    // The counter's curves recorded as drawn, at the source's nodes but for what rounding
-    // moves within the tolerance (its nudges towards G2, as anywhere); no curve of the other
-    // contour left as the source draws it.
-    const bool counter = r.runs_as_drawn.front().starts_with("contour " + std::to_string(i));
-    const auto is_as_drawn = [](const FairedPiece& p) { return p.kind == FairedPieceKind::as_drawn; };
-    EXPECT_EQ(std::count_if(r.pieces[i].begin(), r.pieces[i].end(), is_as_drawn), counter ? 4 : 0) << "contour " << i;
-    if (counter) continue;
-    for (const Segment& s : faired.segments) {
-      if (is_line(s)) continue;
-      EXPECT_EQ(std::find(source.segments.begin(), source.segments.end(), s), source.segments.end())
-          << "a source curve left unfaired";
-    }
+  for (std::size_t i = 0; i < 2; ++i)
+    EXPECT_LE(brute_force_hausdorff(f.source.outline.contours[i], r.glyph.outline.contours[i]),
+              1.01 * f.settings.tolerance_units)
+        << "contour " << i;
+  EXPECT_EQ(g2_jumps(r.glyph.outline, f.upm), 0);
+  EXPECT_EQ(kinks(r.glyph.outline), 0);
+}
+
+// EB Garamond's G: its longest run, 3,643 units with its serifs, sampled a point every 3 units
+// (1,200 in all), had its smoothing guide's spans stop doubling at 320, the guide still 0.39
+// units from it against a budget of 0.30, and two runs of the G (from (631, 89) and from
+// (672, 256)) were kept as drawn. Sampled again at four points a span, the spans double on to
+// 640, the guide comes within 0.23, and nothing is kept as drawn.
+TEST(ContourFairing, AGuideThatNeedsMorePointsIsSampledMoreDensely) {
+  const FairedGlyph f = fair_named(test::eb_garamond, "G", FairOptions{});
+  const GlyphFairing& r = f.result;
+  ASSERT_TRUE(r.kept.empty()) << r.kept.front();
+  EXPECT_TRUE(r.runs_as_drawn.empty()) << r.runs_as_drawn.front();
+  ASSERT_EQ(r.glyph.outline.contours.size(), f.source.outline.contours.size());
+  for (std::size_t i = 0; i < r.glyph.outline.contours.size(); ++i) {
+    EXPECT_LE(brute_force_hausdorff(f.source.outline.contours[i], r.glyph.outline.contours[i]),
+              1.01 * f.settings.tolerance_units)
+        << "contour " << i;
+    for (const FairedPiece& p : r.pieces[i]) EXPECT_NE(p.kind, FairedPieceKind::as_drawn) << "contour " << i;
   }
+}
+
+// Lato's W (Łukasz Dziedzic, OFL; Debian fonts-lato; UPM 2000, tolerance 2.5): the right notch
+// leaves its corner at (1502, 273) in two quadratics and meets the stem's line tangentially. No
+// chain fairs that run on any basis (its G2 solve leaves no feasible angles), and the whole
+// contour was kept unfaired. Such a run is kept as drawn (ContourFairing::runs_as_drawn), the
+// rest of the glyph faired. (EB Garamond's d, which this test took before, is faired on its
+// guide since a guide within the budget serves.)
+TEST(ContourFairing, ARunNoChainFairsIsKeptAsDrawnAndTheRestFaired) {
+  const FairedGlyph f = fair_named(test::lato, "W", FairOptions{});
+  const GlyphFairing& r = f.result;
+  ASSERT_TRUE(r.kept.empty()) << r.kept.front();
+  ASSERT_EQ(r.runs_as_drawn.size(), 1u);
+  EXPECT_NE(r.runs_as_drawn.front().find("(1502, 273)"), std::string::npos) << r.runs_as_drawn.front();
+  ASSERT_EQ(r.glyph.outline.contours.size(), 1u);
+  const Contour& source = f.source.outline.contours[0];
+  const Contour& faired = r.glyph.outline.contours[0];
+  EXPECT_LE(brute_force_hausdorff(source, faired), 1.01 * f.settings.tolerance_units);
+  // The run's two quadratics recorded as drawn, every other curve faired: its four other
+  // curved runs as log-aesthetic chains.
+  const auto count = [&](FairedPieceKind kind) {
+    return std::count_if(r.pieces[0].begin(), r.pieces[0].end(), [&](const FairedPiece& p) { return p.kind == kind; });
+  };
+  EXPECT_EQ(count(FairedPieceKind::as_drawn), 2);
+  EXPECT_GE(count(FairedPieceKind::log_aesthetic), 4);
 }
 
 // Kristi's H (Birgit Pulk, OFL; Debian fonts-kristi; UPM 2048, handwriting, tolerance 24.6):
