@@ -93,6 +93,33 @@ std::vector<OutlineNode> drawn_nodes(const SmoothRun& run, double most_move, Fai
 
 }  // namespace
 
+const FairedRun& FairedRuns::get(const SmoothRun& run, const FairSettings& settings, double budget, bool larger_stands,
+                                 RunBasis basis) {
+  // A contour's first run to fail on its own outline ends that attempt, so on the guides the
+  // runs after it come untried on their own. Where a guide fails, the run's own outline serves
+  // rather than the contour falling to the last basis and its stalled chains (Lato's W: one
+  // cap's guide failed, and a flank kept a chain with κ·UPM −34 and 19 across a junction).
+  // Their own outline first for all of them moved more rounded joins than it mended (Lato's
+  // a–z A–Z g2-jumps 17 → 23, FreeSerif's 12 → 15).
+  if (basis == RunBasis::guide) {
+    const FairedRun& guided = find_or_fair(run, settings, budget, larger_stands, basis);
+    if (guided.ok) return guided;
+    const FairedRun& own = find_or_fair(run, settings, budget, larger_stands, RunBasis::own);
+    return own.ok ? own : guided;
+  }
+  return find_or_fair(run, settings, budget, larger_stands, basis);
+}
+
+const FairedRun& FairedRuns::find_or_fair(const SmoothRun& run, const FairSettings& settings, double budget,
+                                          bool larger_stands, RunBasis basis) {
+  for (const Entry& e : entries_)
+    if (e.run == run && (e.budget == budget || (larger_stands && e.faired.ok && e.budget > budget)) &&
+        (e.basis == basis || (e.basis == RunBasis::own && e.faired.ok)))
+      return e.faired;
+  entries_.push_back({run, budget, basis, fair_run(run, settings, budget, basis)});
+  return entries_.back().faired;
+}
+
 FairedPiece line_piece(Vec2 a, Vec2 b, bool smooth_start) {
   const Vec2 t = (b - a) / distance(a, b);
   return {.kind = FairedPieceKind::line, .length = distance(a, b), .start = {a, t, 0.0, 0.0}, .end = {b, t, 0.0, 0.0},
