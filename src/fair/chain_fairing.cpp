@@ -25,69 +25,6 @@ constexpr double max_relative_mismatch = 1e-9;  // |Δκ| / max|κ| the G2 solve
 constexpr double max_kept_mismatch = 1.0;
 constexpr double transition_shift_share = 0.25;  // of the budget, spent where a κ = 0 end leaves its line earlier
 
-}  // namespace
-
-double PieceAlphas::operator()(double s0, double s1) {
-  const auto [at, added] = known_.try_emplace({s0, s1}, 0.0);
-  if (added) {
-    const std::vector<Cubic> cubics = ref_.cubics_between(s0, s1);
-    const std::vector<Segment> segments(cubics.begin(), cubics.end());
-    const LcgSlope slope = estimate_lcg_slope(segments);
-    at->second = slope.kind == LcgSlope::Kind::slope ? std::clamp(slope.alpha, -2.0, 4.0) : default_alpha;
-  }
-  return at->second;
-}
-
-std::vector<ChainSpan> chain_spans(const std::vector<Junction>& junctions, const RunReference& ref, const SmoothRun& run) {
-  std::vector<ChainSpan> spans;
-  const double L = ref.length();
-  if (ref.closed()) {
-    std::size_t first = junctions.size();
-    for (std::size_t i = 0; i < junctions.size(); ++i)
-      if (junctions[i].kind == JunctionKind::inflection) {
-        first = i;
-        break;
-      }
-    if (first == junctions.size()) {
-      ChainSpan c;
-      c.closed = true;
-      for (const Junction& j : junctions) c.s.push_back(j.s);
-      spans.push_back(std::move(c));
-      return spans;
-    }
-    const std::size_t n = junctions.size();
-    ChainSpan c;
-    for (std::size_t k = 0; k <= n; ++k) {
-      const std::size_t i = (first + k) % n;
-      const double s = junctions[i].s + (first + k >= n ? L : 0.0);
-      c.s.push_back(s);
-      if (k > 0 && junctions[i].kind == JunctionKind::inflection) {
-        c.zero_start = c.zero_end = true;
-        spans.push_back(c);
-        c = ChainSpan{};
-        c.s.push_back(s);
-      }
-    }
-    return spans;
-  }
-  ChainSpan c;
-  c.zero_start = run.start.kind == RunEndKind::line;
-  for (std::size_t i = 0; i < junctions.size(); ++i) {
-    c.s.push_back(junctions[i].s);
-    const bool last = i + 1 == junctions.size();
-    if (i > 0 && (last || junctions[i].kind == JunctionKind::inflection)) {
-      c.zero_end = last ? run.end.kind == RunEndKind::line : true;
-      spans.push_back(c);
-      c = ChainSpan{};
-      c.zero_start = true;
-      c.s.push_back(junctions[i].s);
-    }
-  }
-  return spans;
-}
-
-namespace {
-
 // Segment i's chord direction and its end tangents' angles from it, in (−π, π].
 struct ChordAngles {
   double chord, at_start, at_end;
@@ -121,37 +58,6 @@ std::vector<double> missing_junctions(const ChainSpan& span, double L) {
     if (span.s[i + 1] - span.s[i] > span.s[longest + 1] - span.s[longest]) longest = i;
   return {0.5 * (span.s[longest] + span.s[longest + 1])};
 }
-
-}  // namespace
-
-Vec2 end_tangent_of(double s, const RunReference& ref, const SmoothRun& run, double w) {
-  if (!ref.closed() && s == 0.0) return run.start.tangent;
-  if (!ref.closed() && s == ref.length()) return run.end.tangent;
-  const Vec2 t = ref.mean_tangent(s, w);
-  return t / norm(t);
-}
-
-std::optional<double> kept_corner_angle(const RunEnd& end, bool at_start, double current, double wanted) {
-  if (end.opened) return std::nullopt;
-  if (end.beyond == Vec2{}) return wanted;
-  const double beyond = angle_of(end.beyond);
-  // Signed turn at the corner along the contour: from the piece beyond to the run at its start,
-  // from the run to the piece beyond at its end.
-  const auto turn = [&](double a) { return at_start ? wrapped_angle(a - beyond) : wrapped_angle(beyond - a); };
-  const double drawn = turn(angle_of(end.tangent));
-  if (std::abs(drawn) < radians(kink_limit_deg)) return wanted;
-  // A curve beyond turns its own tangent within the same rule: each side takes half the room.
-  const double least = std::min(std::abs(drawn), radians(corner_floor_deg));
-  const double floor = end.beyond_line ? least : 0.5 * (least + std::abs(drawn));
-  const double t = turn(wanted);
-  if (t * drawn > 0.0 && std::abs(t) >= floor) return wanted;
-  const double now = turn(current);
-  if (now * drawn <= 0.0 || std::abs(now) <= floor) return std::nullopt;
-  const double kept = std::copysign(floor, drawn);
-  return current + wrapped_angle((at_start ? beyond + kept : beyond - kept) - current);
-}
-
-namespace {
 
 // The run's end that junction p of an open span is, where that end is a corner: only a corner's
 // tangent is the chain's own to turn (an inflection's is shared with the next chain, a line's
@@ -424,6 +330,92 @@ void check_fidelity(const std::vector<std::vector<Vec2>>& lac, const ChainSpan& 
 }
 
 }  // namespace
+
+double PieceAlphas::operator()(double s0, double s1) {
+  const auto [at, added] = known_.try_emplace({s0, s1}, 0.0);
+  if (added) {
+    const std::vector<Cubic> cubics = ref_.cubics_between(s0, s1);
+    const std::vector<Segment> segments(cubics.begin(), cubics.end());
+    const LcgSlope slope = estimate_lcg_slope(segments);
+    at->second = slope.kind == LcgSlope::Kind::slope ? std::clamp(slope.alpha, -2.0, 4.0) : default_alpha;
+  }
+  return at->second;
+}
+
+std::vector<ChainSpan> chain_spans(const std::vector<Junction>& junctions, const RunReference& ref, const SmoothRun& run) {
+  std::vector<ChainSpan> spans;
+  const double L = ref.length();
+  if (ref.closed()) {
+    std::size_t first = junctions.size();
+    for (std::size_t i = 0; i < junctions.size(); ++i)
+      if (junctions[i].kind == JunctionKind::inflection) {
+        first = i;
+        break;
+      }
+    if (first == junctions.size()) {
+      ChainSpan c;
+      c.closed = true;
+      for (const Junction& j : junctions) c.s.push_back(j.s);
+      spans.push_back(std::move(c));
+      return spans;
+    }
+    const std::size_t n = junctions.size();
+    ChainSpan c;
+    for (std::size_t k = 0; k <= n; ++k) {
+      const std::size_t i = (first + k) % n;
+      const double s = junctions[i].s + (first + k >= n ? L : 0.0);
+      c.s.push_back(s);
+      if (k > 0 && junctions[i].kind == JunctionKind::inflection) {
+        c.zero_start = c.zero_end = true;
+        spans.push_back(c);
+        c = ChainSpan{};
+        c.s.push_back(s);
+      }
+    }
+    return spans;
+  }
+  ChainSpan c;
+  c.zero_start = run.start.kind == RunEndKind::line;
+  for (std::size_t i = 0; i < junctions.size(); ++i) {
+    c.s.push_back(junctions[i].s);
+    const bool last = i + 1 == junctions.size();
+    if (i > 0 && (last || junctions[i].kind == JunctionKind::inflection)) {
+      c.zero_end = last ? run.end.kind == RunEndKind::line : true;
+      spans.push_back(c);
+      c = ChainSpan{};
+      c.zero_start = true;
+      c.s.push_back(junctions[i].s);
+    }
+  }
+  return spans;
+}
+
+Vec2 end_tangent_of(double s, const RunReference& ref, const SmoothRun& run, double w) {
+  if (!ref.closed() && s == 0.0) return run.start.tangent;
+  if (!ref.closed() && s == ref.length()) return run.end.tangent;
+  const Vec2 t = ref.mean_tangent(s, w);
+  return t / norm(t);
+}
+
+std::optional<double> kept_corner_angle(const RunEnd& end, bool at_start, double current, double wanted) {
+  if (end.opened) return std::nullopt;
+  if (end.beyond == Vec2{}) return wanted;
+  const double beyond = angle_of(end.beyond);
+  // Signed turn at the corner along the contour: from the piece beyond to the run at its start,
+  // from the run to the piece beyond at its end.
+  const auto turn = [&](double a) { return at_start ? wrapped_angle(a - beyond) : wrapped_angle(beyond - a); };
+  const double drawn = turn(angle_of(end.tangent));
+  if (std::abs(drawn) < radians(kink_limit_deg)) return wanted;
+  // A curve beyond turns its own tangent within the same rule: each side takes half the room.
+  const double least = std::min(std::abs(drawn), radians(corner_floor_deg));
+  const double floor = end.beyond_line ? least : 0.5 * (least + std::abs(drawn));
+  const double t = turn(wanted);
+  if (t * drawn > 0.0 && std::abs(t) >= floor) return wanted;
+  const double now = turn(current);
+  if (now * drawn <= 0.0 || std::abs(now) <= floor) return std::nullopt;
+  const double kept = std::copysign(floor, drawn);
+  return current + wrapped_angle((at_start ? beyond + kept : beyond - kept) - current);
+}
 
 ChainOutcome fair_chain(const ChainSpan& span, const RunReference& ref, PieceAlphas& alphas, const RunReference& source,
                         bool guided, const SmoothRun& run, const FairSettings& settings, double budget,

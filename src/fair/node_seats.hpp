@@ -67,9 +67,9 @@ std::vector<std::size_t> seat_line_joins(std::vector<OutlineNode>& nodes, const 
 /// flat enough (slide_reach). The line keeps half its length at least. Since stop 85 the near
 /// handle may also slide along with the join, as long as it was, and a join slides too where
 /// not it but its cubic's far node jumps with κ = 0 on the cubic's side, the near handle's tip
-/// on that node's tangent, which no length of that node's handle changes (Gentium Plus's w: a 17-unit
-/// curve from a (3, 11) line to an x-extremum, κ·UPM 0 against 78). Returns the first node of
-/// each cubic it changed.
+/// on that node's tangent, which no length of that node's handle changes (Gentium Plus's w: a
+/// 17-unit curve from a (3, 11) line to an x-extremum, κ·UPM 0 against 78). Returns the first
+/// node of each cubic it changed.
 std::vector<std::size_t> slide_line_joins(std::vector<OutlineNode>& nodes, std::span<const OutlineNode> entry,
                                           std::span<const std::optional<Vec2>> steps, const OutlineJoins& joins,
                                           CubicJudge& judge, double flat);
