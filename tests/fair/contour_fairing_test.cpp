@@ -1317,17 +1317,11 @@ TEST(ContourFairing, ATextRunWithSeveralJumpsIsPolishedToo) {
 // comes back. A guide within the budget serves; the chains on it come within, and the whole d
 // is faired G2.
 TEST(ContourFairing, AGuideWithinTheBudgetServesThoughPastItsShare) {
-  const FairedGlyph f = fair_named(test::eb_garamond, "d", FairOptions{});
-  const GlyphFairing& r = f.result;
-  ASSERT_TRUE(r.kept.empty()) << r.kept.front();
-  EXPECT_TRUE(r.runs_as_drawn.empty()) << r.runs_as_drawn.front();
-  ASSERT_EQ(r.glyph.outline.contours.size(), 2u);
-  for (std::size_t i = 0; i < 2; ++i)
-    EXPECT_LE(brute_force_hausdorff(f.source.outline.contours[i], r.glyph.outline.contours[i]),
-              1.01 * f.settings.tolerance_units)
-        << "contour " << i;
-  EXPECT_EQ(g2_jumps(r.glyph.outline, f.upm), 0);
-  EXPECT_EQ(kinks(r.glyph.outline), 0);
+  FairedGlyph f;
+  expect_faired(test::eb_garamond, "d", FairProfile::text, &f);
+  EXPECT_TRUE(f.result.runs_as_drawn.empty()) << f.result.runs_as_drawn.front();
+  EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm), 0);
+  EXPECT_EQ(kinks(f.result.glyph.outline), 0);
 }
 
 // EB Garamond's G: its longest run, 3,643 units with its serifs, sampled a point every 3 units
@@ -1336,24 +1330,18 @@ TEST(ContourFairing, AGuideWithinTheBudgetServesThoughPastItsShare) {
 // (672, 256)) were kept as drawn. Sampled again at four points a span, the spans double on to
 // 640, the guide comes within 0.23, and nothing is kept as drawn.
 TEST(ContourFairing, AGuideThatNeedsMorePointsIsSampledMoreDensely) {
-  const FairedGlyph f = fair_named(test::eb_garamond, "G", FairOptions{});
-  const GlyphFairing& r = f.result;
-  ASSERT_TRUE(r.kept.empty()) << r.kept.front();
-  EXPECT_TRUE(r.runs_as_drawn.empty()) << r.runs_as_drawn.front();
-  ASSERT_EQ(r.glyph.outline.contours.size(), f.source.outline.contours.size());
-  for (std::size_t i = 0; i < r.glyph.outline.contours.size(); ++i) {
-    EXPECT_LE(brute_force_hausdorff(f.source.outline.contours[i], r.glyph.outline.contours[i]),
-              1.01 * f.settings.tolerance_units)
-        << "contour " << i;
-    for (const FairedPiece& p : r.pieces[i]) EXPECT_NE(p.kind, FairedPieceKind::as_drawn) << "contour " << i;
-  }
+  FairedGlyph f;
+  expect_faired(test::eb_garamond, "G", FairProfile::text, &f);
+  EXPECT_TRUE(f.result.runs_as_drawn.empty()) << f.result.runs_as_drawn.front();
+  for (std::size_t i = 0; i < f.result.pieces.size(); ++i)
+    for (const FairedPiece& p : f.result.pieces[i]) EXPECT_NE(p.kind, FairedPieceKind::as_drawn) << "contour " << i;
 }
 
 // Lato's W (Łukasz Dziedzic, OFL; Debian fonts-lato; UPM 2000, tolerance 2.5): the right notch
 // leaves its corner at (1502, 273) in two quadratics and meets the stem's line tangentially. No
-// chain fairs that run on any basis (its G2 solve leaves no feasible angles), and the whole
-// contour was kept unfaired. Such a run is kept as drawn (ContourFairing::runs_as_drawn), the
-// rest of the glyph faired. (EB Garamond's d, which this test took before, is faired on its
+// chain fairs that run on any basis (its G2 solve leaves no feasible angles), and a run that
+// fails would leave its whole contour unfaired. Such a run is kept as drawn
+// (ContourFairing::runs_as_drawn), the rest of the glyph faired. (EB Garamond's d, which this test took before, is faired on its
 // guide since a guide within the budget serves.)
 TEST(ContourFairing, ARunNoChainFairsIsKeptAsDrawnAndTheRestFaired) {
   const FairedGlyph f = fair_named(test::lato, "W", FairOptions{});
@@ -1365,8 +1353,7 @@ TEST(ContourFairing, ARunNoChainFairsIsKeptAsDrawnAndTheRestFaired) {
   const Contour& source = f.source.outline.contours[0];
   const Contour& faired = r.glyph.outline.contours[0];
   EXPECT_LE(brute_force_hausdorff(source, faired), 1.01 * f.settings.tolerance_units);
-  // The run's two quadratics recorded as drawn, every other curve faired: its four other
-  // curved runs as log-aesthetic chains.
+  // The run's two quadratics recorded as drawn, the other curves faired (log-aesthetic pieces).
   const auto count = [&](FairedPieceKind kind) {
     return std::count_if(r.pieces[0].begin(), r.pieces[0].end(), [&](const FairedPiece& p) { return p.kind == kind; });
   };
