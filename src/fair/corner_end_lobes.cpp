@@ -87,7 +87,7 @@ std::optional<Replacement> one_way_cubic(Vec2 c, Vec2 drawn, Vec2 arriving, cons
       const std::optional<Cubic> cubic =
           far.curvature == 0.0 ? g2_hermite_cubic_from_flat_end({c, t0, 0.0}, far, SegmentEnd::start, handle)
                                : g2_hermite_cubic_with_free_end({c, t0, 0.0}, far, SegmentEnd::start, handle);
-      if (!cubic || bend_of(*cubic) != way || !pieces_long_enough(*cubic)) continue;
+      if (!cubic || bend_of(*cubic) != way || !pieces_long_enough(*cubic) || crowds_a_node(*cubic)) continue;
       // Curvature monotone where any candidate has it: a peak inside is an extremum more.
       const bool monotone = critical_points(*cubic).curvature_extrema.empty();
       std::optional<Replacement>& slot = monotone ? best_monotone : best;

@@ -75,6 +75,11 @@ double overreach_length(const Cubic& c) {
   return std::max({0.0, distance(c.p[0], c.p[1]) - reach, distance(c.p[3], c.p[2]) - reach});
 }
 
+bool crowds_a_node(const Cubic& c) {
+  constexpr double shortest_handle_share = 0.03;
+  return std::min(distance(c.p[0], c.p[1]), distance(c.p[2], c.p[3])) < shortest_handle_share * distance(c.p[0], c.p[3]);
+}
+
 double cubic_turning(const Cubic& c) {
   const std::optional<Vec2> start = end_tangent(c, SegmentEnd::start), end = end_tangent(c, SegmentEnd::end);
   if (!start || !end) return 0.0;

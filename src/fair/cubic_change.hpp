@@ -40,6 +40,12 @@ int inner_axis_extrema(const Cubic& c);
 /// stay within its chord unless it turns through more than 180°).
 double overreach_length(const Cubic& c);
 
+/// Whether a handle is shorter than 3 % of the chord: it crowds the cubic's turn into its node,
+/// where whole grid steps cannot hold it (the writeback takes no such cubic; a corner's handle of
+/// 0.5 units on a 173-unit stroke rounded onto a 2-unit step back along the line before the
+/// corner, a cusp of κ·UPM 19,800: Steve Hand's A).
+bool crowds_a_node(const Cubic& c);
+
 /// How far a cubic turns, every bend counted by its size (geom/turning, at 24ths of its
 /// parameter between its end tangents): a loop or a cusp turns a half turn or more beyond its
 /// end tangents' angle.

@@ -22,7 +22,6 @@ namespace {
 
 constexpr int max_depth = 6;
 constexpr int cubic_samples = 48;
-constexpr double min_handle_fraction = 0.03;
 constexpr double fine_enough = 0.03;  // of κ per grid step at a node
 constexpr double infeasible = std::numeric_limits<double>::infinity();
 constexpr double no_cubic = 1e300;    // the deviation of a span no G2 Hermite cubic spans
@@ -33,7 +32,7 @@ constexpr double snap_turn = radians(10.0);  // a corner's tangent may turn onto
 constexpr double snap_reach = 64.0;   // units along the chain: farther, the cubic between is long enough for the grid
 constexpr int even_cut_count = 15;   // places evenly along a span no chain of grid nodes fits
 // A corner's handle lengths tried for a span from it (or, from a flat end to a corner, the flat
-// end's), as shares of the span's chord: from just over min_handle_fraction to the whole
+// end's), as shares of the span's chord: from just over crowds_a_node's 3 % to the whole
 // chord, evenly in their logarithm.
 constexpr int corner_handles = 24;
 constexpr double shortest_corner_handle = 0.04, longest_corner_handle = 1.0;
@@ -260,13 +259,11 @@ class SpanWriter {
                     double cap = std::numeric_limits<double>::infinity()) const {
     const LacPoint pa = path_.at(a), pb = path_.at(b);
     const std::vector<Vec2> lac = path_.points(a, b);
-    const double chord = distance(pa.point, pb.point);
     const double turning = absolute_turning(pa.tangent, lac, pb.tangent);
     Fitted best;
     double finest = infeasible;
     const auto consider = [&](const Cubic& c) {
-      // A handle much shorter than the chord crowds the curvature into the node.
-      if (std::min(distance(c.p[0], c.p[1]), distance(c.p[2], c.p[3])) < min_handle_fraction * chord) return;
+      if (crowds_a_node(c)) return;
       // Handles that overreach fold the cubic back on itself (a loop or a cusp), which may
       // stay within the budget of the path yet turns by half a turn more than it.
       const bool have_within = best.within(budget_);

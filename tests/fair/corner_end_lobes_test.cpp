@@ -161,5 +161,34 @@ TEST(CornerEndLobes, ALobeFartherFromAOneWayCurveThanTheAllowanceStays) {
   EXPECT_EQ(allowance, std::vector<double>(before.size(), 1.0));
 }
 
+// Steve Hand's A (sjfonts, GPL with the font exception; handwriting, tolerance 14), float,
+// before the pass: from the corner at (568, 47), where the foot's line ends, the right stroke's
+// edge bends left for 90 units and then right into its line at (499, 206), κ = 0 there. The
+// cubic from the corner that meets that line flat starts almost on the line's extension: its
+// corner handle came out 0.55 units long on a 173-unit chord, and rounding set it on a 2-unit
+// step back along the foot, a cusp of κ·UPM 19,800. No cubic the pass writes has a handle
+// under 3 % of its chord, which whole grid steps cannot hold.
+TEST(CornerEndLobes, NoCubicFromTheCornerHasAHandleTooShortForTheGrid) {
+  // The curve's last cubic, from B, has its handles crossed and meets the line at E flat: B's
+  // out-handle lies on the line through its far handle F and E.
+  const Vec2 b{529.1927, 136.4397}, f{524.1110, 148.1269}, e{499, 206};
+  std::vector<OutlineNode> nodes{test::node({568, 47}, std::nullopt, Vec2{552.0385, 83.8087}, false),
+                                 test::node(b, Vec2{539.2325, 113.3123}, e + (f - e) * 0.33345),
+                                 test::node(e, f, std::nullopt),
+                                 test::node({403, 427.25}, std::nullopt, std::nullopt, false),
+                                 test::node({516, 47}, std::nullopt, std::nullopt, false)};
+  const std::vector<OutlineNode> before = nodes;
+  std::vector<double> allowance(nodes.size(), 11.7);
+  drop_corner_end_lobes(nodes, true, allowance);
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    if (!nodes[i].out_handle) continue;
+    const Cubic c = outline_cubic(nodes, i);
+    const double chord = distance(c.p[0], c.p[3]);
+    EXPECT_GE(distance(c.p[0], c.p[1]), 0.03 * chord) << "cubic " << i;
+    EXPECT_GE(distance(c.p[2], c.p[3]), 0.03 * chord) << "cubic " << i;
+  }
+  EXPECT_LE(test::polyline_hausdorff(dense(before), dense(nodes)), 11.7 + 1e-9);
+}
+
 }  // namespace
 }  // namespace gf
