@@ -1337,6 +1337,22 @@ TEST(ContourFairing, AGuideThatNeedsMorePointsIsSampledMoreDensely) {
     for (const FairedPiece& p : f.result.pieces[i]) EXPECT_NE(p.kind, FairedPieceKind::as_drawn) << "contour " << i;
 }
 
+// Quicksand's A (The Quicksand Project Authors, OFL; Debian fonts-quicksand; UPM 1000, tolerance
+// 1.25): its left stem ends in a 10-unit curve that turns 18° into the corner where the
+// diagonal starts. The writeback had cut it where its tangent runs along (1, 9), whose whole
+// step is 9 units against handles of 2, and rounding bent the cubic to the corner back on
+// itself, κ·UPM 95,000. The source's sharpest turn has a radius of 10.5 units; the faired
+// glyph has none under one unit.
+TEST(ContourFairing, AShortCurveIntoACornerDoesNotFoldOnTheGrid) {
+  FairedGlyph f;
+  expect_faired(test::quicksand, "A", FairProfile::text, &f);
+  for (const Contour& c : f.result.glyph.outline.contours)
+    for (std::size_t k = 0; k < c.segments.size(); ++k)
+      for (int step = 0; step <= 256; ++step)
+        EXPECT_LE(std::abs(curvature(derivatives_at(c.segments[k], step / 256.0)).value_or(0.0)), 1.0)
+            << "segment " << k << " at " << step / 256.0;
+}
+
 // Lato's W (Łukasz Dziedzic, OFL; Debian fonts-lato; UPM 2000, tolerance 2.5): the right notch
 // leaves its corner at (1502, 273) in two quadratics and meets the stem's line tangentially. No
 // chain fairs that run on any basis (its G2 solve leaves no feasible angles), and a run that
