@@ -313,7 +313,8 @@ std::vector<Vec2> handle_candidates(const OutlineNode& node, std::optional<Vec2>
   } else if (!node.smooth) {
     for (int dx = -corner_reach; dx <= corner_reach; ++dx)
       for (int dy = -corner_reach; dy <= corner_reach; ++dy)
-        if (dx != 0 || dy != 0) c.push_back(h + Vec2{double(dx), double(dy)});
+        if ((dx != 0 || dy != 0) && h + Vec2{double(dx), double(dy)} != node.point)  // not onto its node
+          c.push_back(h + Vec2{double(dx), double(dy)});
   }
   return c;
 }

@@ -16,8 +16,8 @@
 namespace gf {
 
 /// Where one handle of a node may go: whole steps along the node's grid direction, up to
-/// `corner_reach` units either way for a corner's handle, else where it is. The rounded
-/// position comes first.
+/// `corner_reach` units either way for a corner's handle (none on the node itself, where the
+/// cubic has no direction), else where it is. The rounded position comes first.
 std::vector<Vec2> handle_candidates(const OutlineNode& node, std::optional<Vec2> step, bool out, int corner_reach = 1);
 
 /// One cubic of the outline and every choice of its two handles (state = out·ins + in).

@@ -81,6 +81,30 @@ TEST(GridRounding, CornersRoundFreelyAndLinesKeepTheirHandleOnTheLine) {
   for (const OutlineNode& n : r) EXPECT_TRUE(on_grid(n.point));
 }
 
+// EB Garamond's t, unrounded: the bar's right end rises to its y-extremum B and falls 2.9
+// units to the corner C, whose handle is 0.4 units long. Its nearest grid point is C itself,
+// and a handle on its node leaves the cubic no direction there: κ·UPM 15,000 at the corner.
+// Rounded, the handle stays off its node, and the cubic's curvature stays within a radius of
+// a unit.
+TEST(GridRounding, ACornersShortHandleStaysOffItsNode) {
+  const std::vector<OutlineNode> nodes{
+      node(Vec2{305.9027, 48.9368}, Vec2{305.9027, 43.9488}, Vec2{305.9027, 53.3938}, true, Vec2{0, 1}),
+      node(Vec2{298.7977, 60.5886}, Vec2{303.9954, 60.5886}, Vec2{297.5093, 60.5886}, true, Vec2{-1, 0}),
+      node(Vec2{296, 60}, Vec2{296.3754, 60.1464}, Vec2{281.2798, 48.9598}, false),
+      node(Vec2{228.3502, 40.9255}, Vec2{258.1743, 40.9255}, std::nullopt, false),
+      node(Vec2{305.9027, 20}, std::nullopt, Vec2{305.9027, 30}, false),
+  };
+  HandleStepLimits limits;
+  limits.allowance = 0.7;
+  const std::vector<OutlineNode> r = round_to_grid(nodes, true, limits);
+  ASSERT_EQ(r.size(), nodes.size());
+  ASSERT_TRUE(r[2].in_handle);
+  EXPECT_NE(*r[2].in_handle, r[2].point);
+  const Cubic c = outline_cubic(r, 1);
+  for (int k = 0; k <= 64; ++k)
+    EXPECT_LE(std::abs(curvature(derivatives_at(c, k / 64.0)).value_or(1e9)), 1.0) << "at " << k / 64.0;
+}
+
 // Because We Build's v, unrounded: a line falling 2° to the bowl's foot, a 2.4-unit cubic to
 // the horizontal extremum, the bowl rising to a corner. The line's grid directions near 2° have
 // primitive steps of 17 units and more, and a handle of whole steps on the line folded the
