@@ -11,6 +11,7 @@
 #include <optional>
 #include <vector>
 
+#include "fair/contour_plan.hpp"
 #include "fair/faired_run.hpp"
 #include "fair/outline_nodes.hpp"
 
@@ -31,6 +32,9 @@ struct ChainCubics {
 /// extremum is the corner (where that takes no more cubics).
 struct ChainEnds {
   bool start_corner = false, end_corner = false;
+  /// At a corner end, the run's end as planned (its drawn tangent and the piece beyond): a
+  /// corner drawn turning by snap_turn or more keeps the turn kept_corner_angle keeps.
+  RunEnd start_run_end{}, end_run_end{};
   /// An end at an inflection turned onto this axis (flat_inflection_axis): its tangent along
   /// it, κ = 0, and the axis extremum next to it dropped.
   std::optional<Vec2> start_axis, end_axis;

@@ -213,6 +213,8 @@ FairedPlan fair_plan(const ContourPlan& plan, const FairSettings& settings, Budg
       ChainEnds ends;
       ends.start_corner = k == 0 && !run.closed && run.start.kind == RunEndKind::corner;
       ends.end_corner = k + 1 == chains && !run.closed && run.end.kind == RunEndKind::corner;
+      if (ends.start_corner) ends.start_run_end = run.start;
+      if (ends.end_corner) ends.end_run_end = run.end;
       ends.end_axis = flat_axis[k];
       if (k > 0 || (run.closed && chains > 1)) ends.start_axis = flat_axis[(k + chains - 1) % chains];
       ChainCubics cubics = write_chain_as_cubics(chain, budgets.cubic, settings.flat_curvature(), ends, cutting);

@@ -16,10 +16,10 @@
 namespace gf {
 namespace {
 
-// A chain leaving a corner 2° right of the vertical and turning left by 60°: its vertical
-// extremum lies about 10 units from the corner.
-FairedChain stroke_leaving_a_corner() {
-  const double lean = radians(2.0), turn = radians(60.0);
+// A chain leaving a corner `lean_deg` right of the vertical and turning left by 60°: at 2°, its
+// vertical extremum lies about 10 units from the corner.
+FairedChain stroke_leaving_a_corner(double lean_deg = 2.0) {
+  const double lean = radians(lean_deg), turn = radians(60.0);
   const Vec2 p0{100, 0}, p1 = p0 + Vec2{std::sin(lean), std::cos(lean)} * 100.0;
   const Vec2 p2 = p1 + Vec2{std::sin(lean - turn), std::cos(lean - turn)} * 100.0;
   const SegmentFit fit = fit_three_point(p0, p1, p2, 1.0);
@@ -29,7 +29,7 @@ FairedChain stroke_leaving_a_corner() {
 }
 
 TEST(CubicWriteback, AnExtremumNextToACornerIsTheCorner) {
-  const FairedChain chain = stroke_leaving_a_corner();
+  const FairedChain chain = stroke_leaving_a_corner(5.0);
   ASSERT_EQ(chain.segments.size(), 1u);
   const double budget = 2.0, flat = 5e-4;
   // As a smooth end (or a corner left alone): a node at the extremum, a few units up.
@@ -53,12 +53,39 @@ TEST(CubicWriteback, AnExtremumNextToACornerIsTheCorner) {
   EXPECT_EQ(snapped.nodes.back().point, kept.nodes.back().point);
 }
 
+// A corner drawn turning by 14° (arriving up the vertical, leaving 14° right of it), faired to
+// leave 5° right of it, its vertical extremum 15 units on: as Accanthis's serif tips (drawn
+// 14°, faired 9°). Turned onto the vertical, as a corner with no drawn turn is, it would turn
+// by nothing, and the kink pass would make it smooth. A corner drawn turning by the snap's 10°
+// or more is turned only as far as its floor allows (kept_corner_angle), here not at all, and
+// the extremum keeps its node.
+TEST(CubicWriteback, ACornerDrawnWideIsNotTurnedOntoTheAxis) {
+  const FairedChain chain = stroke_leaving_a_corner(5.0);
+  ASSERT_EQ(chain.segments.size(), 1u);
+  const double budget = 2.0, flat = 5e-4;
+  const ChainCubics snapped = write_chain_as_cubics(chain, budget, flat, {.start_corner = true, .start_axis = {}, .end_axis = {}});
+  ASSERT_EQ(snapped.nodes.size(), 2u);  // turned onto the vertical, the extremum's node gone
+  RunEnd drawn;
+  drawn.tangent = direction_of(radians(90.0 - 14.0));
+  drawn.beyond = Vec2{0, 1};
+  ChainEnds ends{.start_corner = true, .start_axis = {}, .end_axis = {}};
+  ends.start_run_end = drawn;
+  const ChainCubics kept = write_chain_as_cubics(chain, budget, flat, ends);
+  EXPECT_EQ(kept.nodes.size(), snapped.nodes.size() + 1);
+  const OutlineNode& corner = kept.nodes.front();
+  ASSERT_TRUE(corner.out_handle);
+  const Vec2 leaves = *corner.out_handle - corner.point;
+  EXPECT_NEAR(turning_angle(Vec2{0, 1}, leaves), radians(-5.0), 1e-6);
+  ASSERT_TRUE(kept.nodes[1].grid_step);
+  EXPECT_EQ(*kept.nodes[1].grid_step, (Vec2{0, 1}));
+}
+
 // Halving a span that misses the budget stops short of `shortest_span_units`: cubics of two to
 // four units, as the default allows, round onto a few grid points whose whole steps cannot set
 // their curvature (Lato's W had two of four units at its middle apex, κ·UPM 1,333 and 4,000
 // once rounded), so a rounded outline asks for eight (fair/contour_fairing.cpp).
 TEST(CubicWriteback, NoHalfOfASpanIsShorterThanHalfTheShortestSpan) {
-  const FairedChain chain = stroke_leaving_a_corner();
+  const FairedChain chain = stroke_leaving_a_corner(5.0);
   ASSERT_EQ(chain.segments.size(), 1u);
   const double unreachable = 1e-9, flat = 5e-4;
   const auto shortest_cubic = [](const ChainCubics& c) {
