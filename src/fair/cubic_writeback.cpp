@@ -470,8 +470,8 @@ class SpanWriter {
     for (const Vec2 d : directions) {
       // A whole step longer than a third of the span is longer than a node's handles there can
       // be: rounding sets them to none or far past their cubics (Quicksand's A: a node on (1, 9)
-      // 6 units from a corner, its 2-unit handles set 9 units long, and the cubic to the corner
-      // folded back 3 units, κ·UPM 95,000).
+      // 4 units before a corner, its 2-unit handles set 9 units long, and the cubic to the
+      // corner folded back 3 units, κ·UPM 95,000).
       if (norm(d) > (b - a) / 3.0) continue;
       const double rel = turning_angle(ta, d / norm(d));
       const double f = rel / turn;

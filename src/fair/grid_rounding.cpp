@@ -23,13 +23,13 @@ Vec2 corner_handle_on_grid(Vec2 node, Vec2 handle, Vec2 grid_node) {
   if (nearest != grid_node || handle == node) return nearest;
   const Vec2 d = handle - node;
   Vec2 best = nearest;
-  double closest = -2.0;
+  double nearest_cosine = -2.0;
   for (int dx = -1; dx <= 1; ++dx)
     for (int dy = -1; dy <= 1; ++dy) {
       const Vec2 step{double(dx), double(dy)};
       if (step == Vec2{}) continue;
-      const double c = dot(step, d) / (norm(step) * norm(d));
-      if (c > closest) closest = c, best = grid_node + step;
+      const double cosine = dot(step, d) / (norm(step) * norm(d));
+      if (cosine > nearest_cosine) nearest_cosine = cosine, best = grid_node + step;
     }
   return best;
 }

@@ -312,9 +312,10 @@ std::vector<Vec2> handle_candidates(const OutlineNode& node, std::optional<Vec2>
       if (k != 0 && m0 + k >= 1.0) c.push_back(node.point + *step * (sign * (m0 + k)));
   } else if (!node.smooth) {
     for (int dx = -corner_reach; dx <= corner_reach; ++dx)
-      for (int dy = -corner_reach; dy <= corner_reach; ++dy)
-        if ((dx != 0 || dy != 0) && h + Vec2{double(dx), double(dy)} != node.point)  // not onto its node
-          c.push_back(h + Vec2{double(dx), double(dy)});
+      for (int dy = -corner_reach; dy <= corner_reach; ++dy) {
+        const Vec2 moved = h + Vec2{double(dx), double(dy)};
+        if (moved != h && moved != node.point) c.push_back(moved);  // never onto its node
+      }
   }
   return c;
 }
