@@ -29,7 +29,7 @@ FairedChain stroke_leaving_a_corner(double lean_deg = 2.0) {
 }
 
 TEST(CubicWriteback, AnExtremumNextToACornerIsTheCorner) {
-  const FairedChain chain = stroke_leaving_a_corner(5.0);
+  const FairedChain chain = stroke_leaving_a_corner();
   ASSERT_EQ(chain.segments.size(), 1u);
   const double budget = 2.0, flat = 5e-4;
   // As a smooth end (or a corner left alone): a node at the extremum, a few units up.
@@ -85,7 +85,7 @@ TEST(CubicWriteback, ACornerDrawnWideIsNotTurnedOntoTheAxis) {
 // their curvature (Lato's W had two of four units at its middle apex, κ·UPM 1,333 and 4,000
 // once rounded), so a rounded outline asks for eight (fair/contour_fairing.cpp).
 TEST(CubicWriteback, NoHalfOfASpanIsShorterThanHalfTheShortestSpan) {
-  const FairedChain chain = stroke_leaving_a_corner(5.0);
+  const FairedChain chain = stroke_leaving_a_corner();
   ASSERT_EQ(chain.segments.size(), 1u);
   const double unreachable = 1e-9, flat = 5e-4;
   const auto shortest_cubic = [](const ChainCubics& c) {
