@@ -58,16 +58,6 @@ struct ChainOutcome {
 /// the guide's at a corner), else an inflection's, averaged over the window.
 Vec2 end_tangent_of(double s, const RunReference& ref, const SmoothRun& run, double w);
 
-/// The angle a corner's tangent (now `current`) may be turned to on the way to `wanted`: all
-/// the way, or as far as the corner still turns by the floor against the piece beyond it, the
-/// way the source turns; nullopt where the floor leaves no turn at all, and at a corner opened
-/// to the floor (RunEnd::opened), whose tangent was set to turn so. The floor: a corner the
-/// source turns by the kink limit or more keeps turning by corner_floor_deg (or by what the
-/// source turns, if less); turned further, the kink pass would make it smooth, and the corner
-/// the source drew would be lost (Carlito's X: a terminal's curve met its diagonal at 6.6°, and
-/// the symmetric arc at 2.4°). corner_floor_deg leaves room for rounding.
-std::optional<double> kept_corner_angle(const RunEnd& end, bool at_start, double current, double wanted);
-
 /// The chain on `span` of `ref` within `budget` of `source`: `guided` where ref is the run's
 /// smoothing guide, source the run itself (else both are the source). Once `accept_mismatch`, a
 /// chain whose G2 solve stalls is kept with its best angles where `keep_stalled`, else gives

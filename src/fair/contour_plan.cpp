@@ -266,4 +266,24 @@ std::size_t opened_corners(const ContourPlan& plan) {
   return count;
 }
 
+std::optional<double> kept_corner_angle(const RunEnd& end, bool at_start, double current, double wanted) {
+  if (end.opened) return std::nullopt;
+  if (end.beyond == Vec2{}) return wanted;
+  const double beyond = angle_of(end.beyond);
+  // Signed turn at the corner along the contour: from the piece beyond to the run at its start,
+  // from the run to the piece beyond at its end.
+  const auto turn = [&](double a) { return at_start ? wrapped_angle(a - beyond) : wrapped_angle(beyond - a); };
+  const double drawn = turn(angle_of(end.tangent));
+  if (std::abs(drawn) < radians(kink_limit_deg)) return wanted;
+  // A curve beyond turns its own tangent within the same rule: each side takes half the room.
+  const double least = std::min(std::abs(drawn), radians(corner_floor_deg));
+  const double floor = end.beyond_line ? least : 0.5 * (least + std::abs(drawn));
+  const double t = turn(wanted);
+  if (t * drawn > 0.0 && std::abs(t) >= floor) return wanted;
+  const double now = turn(current);
+  if (now * drawn <= 0.0 || std::abs(now) <= floor) return std::nullopt;
+  const double kept = std::copysign(floor, drawn);
+  return current + wrapped_angle((at_start ? beyond + kept : beyond - kept) - current);
+}
+
 }  // namespace gf

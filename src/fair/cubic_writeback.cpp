@@ -8,7 +8,6 @@
 #include <numbers>
 #include <span>
 
-#include "fair/chain_fairing.hpp"
 #include "fair/cubic_change.hpp"
 #include "fair/path_piece.hpp"
 #include "geom/curvature.hpp"
