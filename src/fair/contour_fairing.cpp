@@ -198,6 +198,8 @@ struct Tries {
   /// Whether a rounding that strays is rounded again on halved allowances (false: the plan is
   /// given up after the rounding with its lines' ends kept within their allowance).
   bool halving_allowances = true;
+  /// Nodes whose curvature the tries' writebacks moved off the faired path's (ChainCubics::freed_nodes).
+  int freed_nodes = 0;
 };
 
 // The contour faired on one plan: the budgets halved once when the first try strays, the
@@ -223,6 +225,7 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
   for (int attempt = 0; attempt < attempts; ++attempt, available *= 0.5) {
     FairedPlan a = fair_plan(plan, settings, {settings.chain_share * available, (1.0 - settings.chain_share) * available},
                                   cache, run_failed, basis, as_drawn);
+    tries.freed_nodes += a.freed_nodes;
     run_failed = !a.failure.empty();
     if (run_failed) {
       out.reason = a.failure;
@@ -572,11 +575,32 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& requested
   settings.rounding = resolve_rounding(requested.rounding, {&source, 1});
   Tries first;
   ContourFairing out = fair_contour_once(source, settings, first);
-  if (!out.faired || first.made > most_tries_faired_again || settings.profile != FairProfile::text ||
-      settings.rounding != Rounding::integers)
-    return out;
+  if (settings.profile != FairProfile::text || settings.rounding != Rounding::integers) return out;
   const FaultCounter counter(source, settings.units_per_em);
-  OutlineFaults faults = counter.count(out.contour);
+  OutlineFaults faults = out.faired ? counter.count(out.contour) : OutlineFaults{};
+  // With the nodes' curvatures free the writeback's cubics are fewer and differently long, and
+  // the grid matches a join's curvature at some that it missed before and misses others (Comic
+  // Neue's V: two kinks where its arms' lines meet the serifs; Accanthis's M, a jump where a
+  // refairing had found none). So the refairings fair as before, with the nodes as the path
+  // has them, and where the first fairing freed a node's curvature and fails, takes more tries
+  // than the refairings allow or leaves faults, so does a fairing at the first settings: the
+  // one with fewer faults kept (that one where the first did not come within those tries).
+  bool refair = out.faired && first.made <= most_tries_faired_again;
+  const bool freed = settings.free_node_curvatures && (!out.faired || first.freed_nodes > 0);
+  settings.free_node_curvatures = false;
+  if (freed && (!refair || faults.mendable())) {
+    Tries fixed_tries;
+    ContourFairing again = fair_contour_once(source, settings, fixed_tries);
+    const bool again_within = again.faired && fixed_tries.made <= most_tries_faired_again;
+    if (again.faired) {
+      const OutlineFaults again_faults = counter.count(again.contour);
+      if (!out.faired || (!refair && again_within) || fewer_faults(again_faults, faults))
+        out = std::move(again), faults = again_faults;
+    }
+    refair = again_within;
+    first = fixed_tries;
+  }
+  if (!refair) return out;
   for (const Refairing& r : refairings) {
     if (!faults.mendable()) break;
     FairSettings again_settings = settings;

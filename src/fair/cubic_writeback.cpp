@@ -9,6 +9,7 @@
 #include <span>
 
 #include "fair/cubic_change.hpp"
+#include "fair/node_curvatures.hpp"
 #include "fair/path_piece.hpp"
 #include "geom/curvature.hpp"
 #include "geom/g2_hermite.hpp"
@@ -229,10 +230,11 @@ class SpanWriter {
 
   void fit(double a, double b, std::optional<Vec2> start_step, std::optional<Vec2> end_step, int depth,
            std::vector<Piece>& pieces) {
-    Fitted f = best_cubic(a, b, start_step, end_step);
+    const std::optional<Fitted> known = fitted_as_path_has_it(a, b);
+    Fitted f = known ? *known : best_cubic(a, b, start_step, end_step);
     if (f.within(budget_) || depth >= max_depth || distance(path_.at(a).point, path_.at(b).point) < cutting_.shortest_span) {
       if (!f.cubic) {  // no G2 cubic at all: the nearest to G2, else G1 with third-chord handles
-        const LacPoint pa = path_.at(a), pb = path_.at(b);
+        const LacPoint pa = frame(a), pb = frame(b);
         const double h = distance(pa.point, pb.point) / 3.0;
         f.cubic = nearest_to_g2(pa, pb).value_or(
             Cubic{pa.point, pa.point + pa.tangent * h, pb.point - pb.tangent * h, pb.point});
@@ -248,7 +250,78 @@ class SpanWriter {
     fit(cut.sigma, b, cut.step, end_step, depth + 1, pieces);
   }
 
+  /// The curvature at each of the chain's nodes (`nodes`, in order; a closed chain's last span
+  /// returns to the first) chosen so that as many spans as may fit as one cubic
+  /// (fair/node_curvatures); fit() then meets it.
+  void free_node_curvatures(std::span<const RequiredNode> nodes, bool closed) {
+    const std::size_t n = nodes.size();
+    if (n < 2) return;
+    const auto end_of = [&](std::size_t i) { return i + 1 < n ? nodes[i + 1].sigma : nodes[0].sigma + path_.total(); };
+    std::vector<NodeCurvature> known(n);
+    for (std::size_t k = 0; k < n; ++k) {
+      known[k].path = path_.at(nodes[k].sigma).curvature;
+      known[k].free = (closed || (k > 0 && k + 1 < n)) && std::abs(known[k].path) >= flat_;
+    }
+    // Each span is first asked as the path has it, and fit() keeps that answer where no node of
+    // the span then moves.
+    const SpanFits fits = [&](std::size_t i, double k_start, double k_end) {
+      const std::size_t j = (i + 1) % n;
+      const bool as_path = k_start == known[i].path && k_end == known[j].path;
+      if (!as_path) chosen_ = {{nodes[i].sigma, k_start}, {nodes[j].sigma, k_end}};
+      const Fitted f = best_cubic(nodes[i].sigma, end_of(i), nodes[i].grid_step, nodes[j].grid_step);
+      chosen_.clear();
+      if (as_path) path_fits_.push_back({nodes[i].sigma, end_of(i), f});
+      return f.within((as_path ? 1.0 : cutting_.freed_span_budget_share) * budget_);
+    };
+    const SpanSeeds seeds = [&](std::size_t i) -> std::optional<std::array<double, 2>> {
+      const LacPoint pa = path_.at(nodes[i].sigma), pb = path_.at(end_of(i));
+      const std::vector<Vec2> lac = path_.points(nodes[i].sigma, end_of(i));
+      const std::optional<Cubic> c = fit_cubic_with_end_tangents(pa.point, pa.tangent, pb.point, pb.tangent, lac);
+      if (!c) return std::nullopt;
+      return std::array{node_curvature(*c, SegmentEnd::start), node_curvature(*c, SegmentEnd::end)};
+    };
+    const std::vector<double> kappa = choose_node_curvatures(known, closed, fits, seeds);
+    for (std::size_t k = 0; k < n; ++k)
+      if (kappa[k] != known[k].path) chosen_.push_back({nodes[k].sigma, kappa[k]});
+    out_.freed_nodes += static_cast<int>(chosen_.size());
+    std::erase_if(path_fits_, [&](const PathFit& p) { return frame_moved(p.a) || frame_moved(p.b); });
+  }
+
  private:
+  struct ChosenCurvature {
+    double sigma, kappa;
+  };
+
+  // A span as the path has it, fitted while the nodes' curvatures were chosen.
+  struct PathFit {
+    double a, b;
+    Fitted fitted;
+  };
+
+  // Whether arc length s is the node at `sigma` (s past the end of a closed chain: its first node).
+  bool at_node(double sigma, double s) const { return sigma == s || sigma + path_.total() == s; }
+
+  // Whether the node at arc length s has a chosen curvature.
+  bool frame_moved(double s) const {
+    return std::any_of(chosen_.begin(), chosen_.end(), [&](const ChosenCurvature& c) { return at_node(c.sigma, s); });
+  }
+
+  // The path's frame at arc length s, with the curvature chosen for a node there
+  // (free_node_curvatures).
+  LacPoint frame(double s) const {
+    LacPoint p = path_.at(s);
+    for (const ChosenCurvature& c : chosen_)
+      if (at_node(c.sigma, s)) p.curvature = c.kappa;
+    return p;
+  }
+
+  // What free_node_curvatures found for [a, b] as the path has it, where it asked.
+  std::optional<Fitted> fitted_as_path_has_it(double a, double b) const {
+    for (const PathFit& p : path_fits_)
+      if (p.a == a && p.b == b) return p.fitted;
+    return std::nullopt;
+  }
+
   // The G2 Hermite cubic of [a, b] for the writeback: of those within the budget, the one whose
   // ends the grid sets finest (node_coarseness; a span often has a lopsided solution nearest
   // the path, whose short handle leaves whole steps too coarse to keep G2, and a balanced one
@@ -257,7 +330,7 @@ class SpanWriter {
   // (span_cubics).
   Fitted best_cubic(double a, double b, std::optional<Vec2> start_step, std::optional<Vec2> end_step,
                     double cap = std::numeric_limits<double>::infinity()) const {
-    const LacPoint pa = path_.at(a), pb = path_.at(b);
+    const LacPoint pa = frame(a), pb = frame(b);
     const std::vector<Vec2> lac = path_.points(a, b);
     const double turning = absolute_turning(pa.tangent, lac, pb.tangent);
     Fitted best;
@@ -519,6 +592,8 @@ class SpanWriter {
   ChainEnds corners_;
   ChainCubics& out_;
   std::vector<Vec2> fine_ = grid_directions(5), all_ = grid_directions(13), long_ = grid_directions(100);
+  std::vector<ChosenCurvature> chosen_;  ///< the nodes whose curvature is not the path's
+  std::vector<PathFit> path_fits_;       ///< spans whose nodes keep the path's curvature
 };
 
 // The cubics of the spans between consecutive required nodes, in order (a closed chain's last
@@ -652,6 +727,7 @@ ChainCubics write_chain_as_cubics(const FairedChain& chain, double budget, doubl
     snap_extremum_to_corner(path, budget, flat_curvature, cutting, ends, distinct, SegmentEnd::end);
   }
   SpanWriter writer(path, budget, flat_curvature, cutting, chain.closed ? ChainEnds{} : ends, out);
+  if (cutting.free_node_curvatures) writer.free_node_curvatures(distinct, chain.closed);
   const std::vector<Piece> pieces = write_spans(writer, distinct, chain.closed, total);
   // Nodes: the start of every cubic (and an open chain's last end); a node's grid step is the
   // end step of the cubic before it.

@@ -22,6 +22,8 @@ struct ChainCubics {
   /// Spans where no G2 Hermite cubic existed within the depth limit: written meeting one end's
   /// curvature and nearest the other's where a cubic bending one way can, else with G1 handles.
   int g1_fallbacks = 0;
+  /// Nodes whose curvature the writeback moved off the path's (SpanCutting::free_node_curvatures).
+  int freed_nodes = 0;
 };
 
 /// Which ends of an open chain are corners. A corner's curvature binds nothing, so a span from
@@ -74,6 +76,15 @@ struct SpanCutting {
   /// an extremum onto its node or off the cubic; turned away there, Gentium Plus's M took a
   /// node more and a g2-jump.
   bool no_inner_extrema = false;
+  /// The curvature at an extremum inside the chain may move off the path's where the two spans
+  /// beside it then fit whole, so a span whose G2 cubic strays is not cut at all
+  /// (fair/node_curvatures).
+  bool free_node_curvatures = false;
+  /// Of the budget, what a span whose end curvatures were so moved may use. A G3 chain's
+  /// cubics are solved again for G3 within what each leaves of the tolerance
+  /// (fair/g3_cubics): fitted to the edge of the budget, Cantarell's S (1,000 units to the em,
+  /// rounded) had none of its runs come out G3; at half, each did.
+  double freed_span_budget_share = 1.0;
 };
 
 /// `flat_curvature`: below it a node's curvature counts as zero (a line join), not as a

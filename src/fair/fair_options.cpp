@@ -18,6 +18,7 @@ FairSettings resolve_settings(const FairOptions& options, double units_per_em) {
   s.feature_window_units = hand ? 0.03 * units_per_em : 0.004 * units_per_em;
   if (hand) s.guide_lobes = {std::numbers::pi / 6.0, 0.3 / units_per_em};
   s.tangents_between_chords = hand;
+  s.free_node_curvatures = !hand;
   if (hand) {
     s.stub_line_units = 2.0 * s.tolerance_units;
     s.stub_turn_deg = 0.5 * s.corner_angle_deg;

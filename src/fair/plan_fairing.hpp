@@ -55,6 +55,7 @@ struct FairedPlan {
   std::string failure;
   double mismatch = 0.0;
   int g1_nodes = 0;
+  int freed_nodes = 0;  ///< ChainCubics::freed_nodes, over the plan
   int guide_stretches = 0;
   int g3_runs = 0, g2_line_joins = 0;
   std::vector<std::string> g3_shortfalls;

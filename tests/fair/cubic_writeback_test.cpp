@@ -1,6 +1,7 @@
 // The cubic writeback of a faired chain: an extremum a few units from a corner; the shortest
 // span it halves; a corner's free curvature; a nearly straight stroke cut where it runs along
-// a longer grid direction, or evenly along it; a cubic crossing an axis inside.
+// a longer grid direction, or evenly along it; a cubic crossing an axis inside; an extremum's
+// curvature moved so that its spans fit whole.
 #include "fair/cubic_writeback.hpp"
 
 #include <gtest/gtest.h>
@@ -261,6 +262,42 @@ TEST(CubicWriteback, ACubicCrossingAnAxisInsideIsCut) {
     for (int k = 0; k <= 400; ++k) points.push_back(c.point_at(k / 400.0));
     EXPECT_LE(test::directed_to_polyline(points, path), budget) << "cubic " << i;
   }
+}
+
+// A stroke leaving at 60° that turns right through the level to run straight down, 300 units
+// from its turn: its horizontal extremum is a node. Within a budget of 0.2 units the G2 Hermite
+// cubic of one of its spans, with the curvatures the path has at the nodes, strays, and the
+// span is cut in two. With the extremum's curvature free (SpanCutting::free_node_curvatures)
+// each span is one cubic, within the budget, and the node stays G2: both cubics meet there
+// with one curvature, another than the path's.
+TEST(CubicWriteback, AnExtremumsCurvatureMovesSoThatItsSpansFitWhole) {
+  const auto heading = [](double deg) { return Vec2{std::cos(radians(deg)), std::sin(radians(deg))}; };
+  const Vec2 p0{0, 0}, p1 = p0 + heading(60.0) * 200.0, p2 = p1 + heading(-90.0) * 300.0;
+  const SegmentFit fit = fit_three_point(p0, p1, p2, 1.0);
+  ASSERT_TRUE(fit.ok());
+  FairedChain chain;
+  chain.segments.push_back(*fit.segment);
+  const double budget = 0.2, flat = 5e-4;
+  const ChainCubics fixed = write_chain_as_cubics(chain, budget, flat, {}, {.shortest_span = 8.0});
+  const ChainCubics freed = write_chain_as_cubics(chain, budget, flat, {}, {.shortest_span = 8.0, .free_node_curvatures = true});
+  EXPECT_EQ(fixed.nodes.size(), 4u);
+  ASSERT_EQ(freed.nodes.size(), 3u);
+  const OutlineNode& extremum = freed.nodes[1];
+  ASSERT_TRUE(extremum.in_handle && extremum.out_handle);
+  EXPECT_NEAR(extremum.out_handle->y, extremum.point.y, 1e-9);
+  EXPECT_NEAR(extremum.in_handle->y, extremum.point.y, 1e-9);
+  const double arriving = node_curvature(outline_cubic(freed.nodes, 0), SegmentEnd::end);
+  const double leaving = node_curvature(outline_cubic(freed.nodes, 1), SegmentEnd::start);
+  EXPECT_NEAR(arriving, leaving, 1e-9 * std::abs(leaving));
+  // The path's curvature where it runs level: the sample whose tangent is nearest the level.
+  double path_kappa = 0.0, least = 1.0;
+  for (const LacPoint& p : chain.segments.front().sample(20000))
+    if (std::abs(p.tangent.y) < least) least = std::abs(p.tangent.y), path_kappa = p.curvature;
+  EXPECT_GT(std::abs(leaving - path_kappa), 1e-2 * std::abs(path_kappa));
+  // The chain's ends keep the path's curvature: they bind the runs beside it.
+  EXPECT_NEAR(node_curvature(outline_cubic(freed.nodes, 0), SegmentEnd::start), chain.segments.front().start().curvature, 1e-9);
+  EXPECT_NEAR(node_curvature(outline_cubic(freed.nodes, 1), SegmentEnd::end), chain.segments.front().end().curvature, 1e-9);
+  expect_faithful_cubics(chain, freed, budget, 0.01);
 }
 
 }  // namespace
