@@ -585,6 +585,9 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& requested
   // has them, and where the first fairing freed a node's curvature and fails, takes more tries
   // than the refairings allow or leaves faults, so does a fairing at the first settings: the
   // one with fewer faults kept (that one where the first did not come within those tries).
+  // There each refairing is also tried with the curvatures free: a–z A–Z, g2-jumps EB
+  // Garamond 31 → 26, Junicode 32 → 26, Quicksand 13 → 12 (and a lost corner fewer); no other
+  // text font changed; whole DejaVu Sans 33.5 → 36.8 s.
   bool refair = out.faired && first.made <= most_tries_faired_again;
   const bool freed = settings.free_node_curvatures && (!out.faired || first.freed_nodes > 0);
   settings.free_node_curvatures = false;
@@ -602,16 +605,20 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& requested
   }
   if (!refair) return out;
   for (const Refairing& r : refairings) {
-    if (!faults.mendable()) break;
-    FairSettings again_settings = settings;
-    again_settings.rounding_reserve_units += r.more_reserve_units;
-    again_settings.tolerance_units *= r.tolerance_scale;
-    again_settings.shortest_rounded_span_units *= r.span_scale;
-    Tries again_tries{0, first.made, false};
-    ContourFairing again = fair_contour_once(source, again_settings, again_tries);
-    if (!again.faired) continue;
-    const OutlineFaults again_faults = counter.count(again.contour);
-    if (fewer_faults(again_faults, faults)) out = std::move(again), faults = again_faults;
+    for (const bool free : {false, true}) {
+      if (!faults.mendable()) break;
+      if (free && !freed) continue;
+      FairSettings again_settings = settings;
+      again_settings.free_node_curvatures = free;
+      again_settings.rounding_reserve_units += r.more_reserve_units;
+      again_settings.tolerance_units *= r.tolerance_scale;
+      again_settings.shortest_rounded_span_units *= r.span_scale;
+      Tries again_tries{0, first.made, false};
+      ContourFairing again = fair_contour_once(source, again_settings, again_tries);
+      if (!again.faired) continue;
+      const OutlineFaults again_faults = counter.count(again.contour);
+      if (fewer_faults(again_faults, faults)) out = std::move(again), faults = again_faults;
+    }
   }
   return out;
 }
