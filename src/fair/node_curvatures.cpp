@@ -62,8 +62,8 @@ std::vector<double> choose_node_curvatures(std::span<const NodeCurvature> nodes,
   const std::size_t n = nodes.size();
   std::vector<double> out(n);
   for (std::size_t k = 0; k < n; ++k) out[k] = nodes[k].path;
-  const std::size_t spans = closed ? n : n - 1;
   if (n < 2) return out;
+  const std::size_t spans = closed ? n : n - 1;
   // The spans that fit whole as the path has it; where all do, nothing to gain.
   std::vector<bool> whole(spans);
   for (std::size_t i = 0; i < spans; ++i) whole[i] = fits(i, out[i], out[(i + 1) % n]);
