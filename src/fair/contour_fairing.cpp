@@ -394,7 +394,8 @@ void fillet_kinks(ContourFairing& out, const Contour& source, const FairSettings
 // and corners that came out as kinks made smooth. Its distances are measured from
 // `reference`: `curve` itself, or the source where anything was straightened.
 ContourFairing fair_curve(const Contour& source, const Contour& curve, const Contour& reference,
-                          std::span<const TightTurn> turns, const FairSettings& settings, Tries& tries) {
+                          std::span<const TightTurn> turns, const FairSettings& settings, Tries& tries,
+                          RunFairings& memo) {
   ContourFairing out;
   out.contour = source;
   PlanOptions options{settings.corner_angle_deg, settings.profile == FairProfile::text};
@@ -423,7 +424,7 @@ ContourFairing fair_curve(const Contour& source, const Contour& curve, const Con
   }
   const SampledContour sampled_source(reference);
   std::vector<std::size_t> kinked, smooth_nodes;
-  FairedRuns cache;
+  FairedRuns cache(memo);
   // The contour faired on `p`, planned with `smooth` made smooth, and, where it has kinks
   // against lines to open (text), on the same plan with those opened after its own outlines fail.
   const auto fair_plans = [&](const ContourPlan& p, std::span<const std::size_t> smooth,
@@ -483,7 +484,7 @@ double contour_distance(const Contour& a, const Contour& b) {
 namespace {
 
 // `settings.rounding` resolved on the contour.
-ContourFairing fair_contour_once(const Contour& source, const FairSettings& requested, Tries& tries) {
+ContourFairing fair_contour_once(const Contour& source, const FairSettings& requested, Tries& tries, RunFairings& memo) {
   FairSettings settings = requested;
   ContourFairing out;
   out.contour = source;
@@ -526,9 +527,9 @@ ContourFairing fair_contour_once(const Contour& source, const FairSettings& requ
   }
   // What the fairing of `curve` measures its distances from.
   const auto reference_for = [&](const Contour& curve) -> const Contour& { return any_stood ? source : curve; };
-  if (turned) out = fair_curve(source, turned->contour, reference_for(turned->contour), turned->turns, settings, tries);
+  if (turned) out = fair_curve(source, turned->contour, reference_for(turned->contour), turned->turns, settings, tries, memo);
   if (!turned || !out.faired || !out.runs_as_drawn.empty()) {
-    ContourFairing plain = fair_curve(source, stood, reference_for(stood), {}, settings, tries);
+    ContourFairing plain = fair_curve(source, stood, reference_for(stood), {}, settings, tries, memo);
     if (!out.faired || (plain.faired && plain.runs_as_drawn.size() < out.runs_as_drawn.size())) out = std::move(plain);
   }
   if (out.faired) fillet_kinks(out, source, settings);
@@ -574,7 +575,8 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& requested
   FairSettings settings = requested;
   settings.rounding = resolve_rounding(requested.rounding, {&source, 1});
   Tries first;
-  ContourFairing out = fair_contour_once(source, settings, first);
+  RunFairings memo;  // the runs every fairing below asks for, faired once
+  ContourFairing out = fair_contour_once(source, settings, first, memo);
   if (settings.profile != FairProfile::text || settings.rounding != Rounding::integers) return out;
   const FaultCounter counter(source, settings.units_per_em);
   OutlineFaults faults = out.faired ? counter.count(out.contour) : OutlineFaults{};
@@ -593,7 +595,7 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& requested
   settings.free_node_curvatures = false;
   if (freed && (!refair || faults.mendable())) {
     Tries fixed_tries;
-    ContourFairing again = fair_contour_once(source, settings, fixed_tries);
+    ContourFairing again = fair_contour_once(source, settings, fixed_tries, memo);
     const bool again_within = again.faired && fixed_tries.made <= most_tries_faired_again;
     if (again.faired) {
       const OutlineFaults again_faults = counter.count(again.contour);
@@ -614,7 +616,7 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& requested
       again_settings.tolerance_units *= r.tolerance_scale;
       again_settings.shortest_rounded_span_units *= r.span_scale;
       Tries again_tries{0, first.made, false};
-      ContourFairing again = fair_contour_once(source, again_settings, again_tries);
+      ContourFairing again = fair_contour_once(source, again_settings, again_tries, memo);
       if (!again.faired) continue;
       const OutlineFaults again_faults = counter.count(again.contour);
       if (fewer_faults(again_faults, faults)) out = std::move(again), faults = again_faults;

@@ -263,15 +263,23 @@ class SpanWriter {
       known[k].free = (closed || (k > 0 && k + 1 < n)) && std::abs(known[k].path) >= flat_;
     }
     // Each span is first asked as the path has it, and fit() keeps that answer where no node of
-    // the span then moves.
+    // the span then moves. Its stretch of the path is sampled once for all it is asked.
+    std::vector<std::optional<Stretch>> stretches(n);
     const SpanFits fits = [&](std::size_t i, double k_start, double k_end) {
       const std::size_t j = (i + 1) % n;
       const bool as_path = k_start == known[i].path && k_end == known[j].path;
       if (!as_path) chosen_ = {{nodes[i].sigma, k_start}, {nodes[j].sigma, k_end}};
+      const double share = as_path ? 1.0 : cutting_.freed_span_budget_share;
+      if (share == 1.0 && !as_path) {
+        if (!stretches[i]) stretches[i] = stretch_of(nodes[i].sigma, end_of(i));
+        const bool fits = any_cubic_within(*stretches[i]);
+        chosen_.clear();
+        return fits;
+      }
       const Fitted f = best_cubic(nodes[i].sigma, end_of(i), nodes[i].grid_step, nodes[j].grid_step);
       chosen_.clear();
       if (as_path) path_fits_.push_back({nodes[i].sigma, end_of(i), f});
-      return f.within((as_path ? 1.0 : cutting_.freed_span_budget_share) * budget_);
+      return f.within(share * budget_);
     };
     const SpanSeeds seeds = [&](std::size_t i) -> std::optional<std::array<double, 2>> {
       const LacPoint pa = path_.at(nodes[i].sigma), pb = path_.at(end_of(i));
@@ -308,11 +316,26 @@ class SpanWriter {
 
   // The path's frame at arc length s, with the curvature chosen for a node there
   // (free_node_curvatures).
-  LacPoint frame(double s) const {
-    LacPoint p = path_.at(s);
+  LacPoint frame(double s) const { return with_chosen_curvature(path_.at(s), s); }
+
+  LacPoint with_chosen_curvature(LacPoint p, double s) const {
     for (const ChosenCurvature& c : chosen_)
       if (at_node(c.sigma, s)) p.curvature = c.kappa;
     return p;
+  }
+
+  // The path over [a, b] as a span's fits read it: its end frames (the path's curvatures), its
+  // points and how far its tangent turns.
+  struct Stretch {
+    double a, b;
+    LacPoint start, end;
+    std::vector<Vec2> points;
+    double turning;
+  };
+  Stretch stretch_of(double a, double b) const {
+    Stretch s{a, b, path_.at(a), path_.at(b), path_.points(a, b), 0.0};
+    s.turning = absolute_turning(s.start.tangent, s.points, s.end.tangent);
+    return s;
   }
 
   // What free_node_curvatures found for [a, b] as the path has it, where it asked.
@@ -337,14 +360,11 @@ class SpanWriter {
     double finest = infeasible;
     const auto consider = [&](const Cubic& c) {
       if (crowds_a_node(c)) return;
-      // Handles that overreach fold the cubic back on itself (a loop or a cusp), which may
-      // stay within the budget of the path yet turns by half a turn more than it.
       const bool have_within = best.within(budget_);
       const double q = std::max(node_coarseness(c, SegmentEnd::start, start_step), node_coarseness(c, SegmentEnd::end, end_step));
       if (have_within && q > finest) return;  // coarser than one already within: not measured
       const std::vector<Vec2> pts = cubic_points(c);
-      if (absolute_turning(pa.tangent, pts, pb.tangent) > turning + fold_margin) return;
-      if (cutting_.no_inner_extrema && inner_axis_extrema_of(c).off_node > 0) return;
+      if (!keeps_the_span_shape(c, pts, pa, pb, turning)) return;
       const double d = cubic_deviation(pts, lac, have_within ? budget_ : std::min(cap, std::max(best.deviation, budget_)));
       if (d <= budget_) {
         if (!have_within || q < finest || d < best.deviation) best = {c, d}, finest = q;
@@ -360,6 +380,36 @@ class SpanWriter {
     if (!best.within(budget_))
       for (const Cubic& c : flat_to_corner_cubics(pa, pb, at_start, at_end)) consider(c);
     return best;
+  }
+
+  // Whether any cubic best_cubic weighs for [a, b] is within the budget: all the choice of
+  // node curvatures asks of a pair it tries, measured no farther than the budget and no
+  // further than the first that is.
+  bool any_cubic_within(const Stretch& stretch) const {
+    const double a = stretch.a, b = stretch.b;
+    const LacPoint pa = with_chosen_curvature(stretch.start, a), pb = with_chosen_curvature(stretch.end, b);
+    const std::vector<Vec2>& lac = stretch.points;
+    const double turning = stretch.turning;
+    const auto fits = [&](const Cubic& c) {
+      if (crowds_a_node(c)) return false;
+      const std::vector<Vec2> pts = cubic_points(c);
+      return keeps_the_span_shape(c, pts, pa, pb, turning) && cubic_deviation(pts, lac, budget_) <= budget_;
+    };
+    const bool at_start = a <= 0.0, at_end = b >= path_.total();
+    for (const Cubic& c : span_cubics(pa, pb, at_start, at_end, lac))
+      if (fits(c)) return true;
+    for (const Cubic& c : flat_to_corner_cubics(pa, pb, at_start, at_end))
+      if (fits(c)) return true;
+    return false;
+  }
+
+  // Whether a cubic (sampled `pts`) draws the span from pa to pb, which turns by `turning`, as a
+  // node-to-node span may. Handles that overreach fold the cubic back on itself (a loop or a
+  // cusp), which may stay within the budget of the path yet turns by half a turn more than it.
+  bool keeps_the_span_shape(const Cubic& c, std::span<const Vec2> pts, const LacPoint& pa, const LacPoint& pb,
+                            double turning) const {
+    if (absolute_turning(pa.tangent, pts, pb.tangent) > turning + fold_margin) return false;
+    return !cutting_.no_inner_extrema || inner_axis_extrema_of(c).off_node == 0;
   }
 
   // A span from a flat end (κ = 0: a line join) to a corner: κ = 0 fixes the corner's handle,

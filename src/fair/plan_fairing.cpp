@@ -118,12 +118,33 @@ const FairedRun& FairedRuns::get(const SmoothRun& run, const FairSettings& setti
 
 const FairedRun& FairedRuns::find_or_fair(const SmoothRun& run, const FairSettings& settings, double budget,
                                           bool larger_stands, RunBasis basis) {
+  for (const RunFairings::Entry* e : entries_)
+    if (e->run == run && (e->budget == budget || (larger_stands && e->faired.ok && e->budget > budget)) &&
+        (e->basis == basis || (e->basis == RunBasis::own && e->faired.ok)))
+      return e->faired;
+  entries_.push_back(&memo_.fair(run, settings, budget, basis));
+  return entries_.back()->faired;
+}
+
+namespace {
+
+// The settings as fair_run reads them: what only the writeback and rounding read set aside.
+FairSettings runs_settings(FairSettings s) {
+  s.free_node_curvatures = false;
+  s.rounding_reserve_units = 0.0;
+  s.shortest_rounded_span_units = 0.0;
+  return s;
+}
+
+}  // namespace
+
+const RunFairings::Entry& RunFairings::fair(const SmoothRun& run, const FairSettings& settings, double budget,
+                                            RunBasis basis) {
+  const FairSettings read = runs_settings(settings);
   for (const Entry& e : entries_)
-    if (e.run == run && (e.budget == budget || (larger_stands && e.faired.ok && e.budget > budget)) &&
-        (e.basis == basis || (e.basis == RunBasis::own && e.faired.ok)))
-      return e.faired;
-  entries_.push_back({run, budget, basis, fair_run(run, settings, budget, basis)});
-  return entries_.back().faired;
+    if (e.budget == budget && e.basis == basis && e.settings == read && e.run == run) return e;
+  entries_.push_back({run, read, budget, basis, fair_run(run, settings, budget, basis)});
+  return entries_.back();
 }
 
 FairedPiece line_piece(Vec2 a, Vec2 b, bool smooth_start) {

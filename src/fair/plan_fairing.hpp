@@ -25,12 +25,35 @@ struct Budgets {
   double chain, cubic;
 };
 
-/// Runs already faired for this contour: a plan made again with a corner smoothed keeps every
-/// run away from that corner as it was, and those need not be faired twice. Where the budgets
-/// were halved because a run failed (not because the outline strayed), a run faired within a
-/// larger budget stands too.
+/// What fair_run gives, each run faired once for all of a contour's fairings: those differ in
+/// what only the writeback and rounding read (FairSettings::free_node_curvatures,
+/// rounding_reserve_units, shortest_rounded_span_units), and ask for the same runs on the same
+/// budgets again. A memo of fair_run itself, so a fairing that finds a run here gets what it
+/// would have faired.
+class RunFairings {
+ public:
+  struct Entry {
+    SmoothRun run;
+    FairSettings settings;  ///< as the run fairing reads them (runs_settings)
+    double budget;
+    RunBasis basis;
+    FairedRun faired;
+  };
+  const Entry& fair(const SmoothRun& run, const FairSettings& settings, double budget, RunBasis basis);
+
+ private:
+  std::deque<Entry> entries_;  // stable references
+};
+
+/// Runs already faired by one fairing of a contour: a plan made again with a corner smoothed
+/// keeps every run away from that corner as it was, and those need not be faired twice. Where
+/// the budgets were halved because a run failed (not because the outline strayed), a run
+/// faired within a larger budget stands too. Those it found are its own, not another
+/// fairing's (RunFairings serves those only as asked).
 class FairedRuns {
  public:
+  explicit FairedRuns(RunFairings& memo) : memo_(memo) {}
+
   /// `basis`: what a run that failed on its own outline is faired on next (text); one faired
   /// on its own outline stands.
   const FairedRun& get(const SmoothRun& run, const FairSettings& settings, double budget, bool larger_stands,
@@ -40,13 +63,8 @@ class FairedRuns {
   const FairedRun& find_or_fair(const SmoothRun& run, const FairSettings& settings, double budget, bool larger_stands,
                                 RunBasis basis);
 
-  struct Entry {
-    SmoothRun run;
-    double budget;
-    RunBasis basis;
-    FairedRun faired;
-  };
-  std::deque<Entry> entries_;  // stable references
+  RunFairings& memo_;
+  std::vector<const RunFairings::Entry*> entries_;  // in the order this fairing asked for them
 };
 
 /// A plan faired: its nodes, or why not, with what the fairing counted on the way.
