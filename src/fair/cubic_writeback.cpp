@@ -269,12 +269,13 @@ class SpanWriter {
       const std::size_t j = (i + 1) % n;
       const bool as_path = k_start == known[i].path && k_end == known[j].path;
       if (!as_path) chosen_ = {{nodes[i].sigma, k_start}, {nodes[j].sigma, k_end}};
+      // A share of the budget is asked of the cubic best_cubic would write, not of any.
       const double share = as_path ? 1.0 : cutting_.freed_span_budget_share;
       if (share == 1.0 && !as_path) {
         if (!stretches[i]) stretches[i] = stretch_of(nodes[i].sigma, end_of(i));
-        const bool fits = any_cubic_within(*stretches[i]);
+        const bool found = any_cubic_within(*stretches[i]);
         chosen_.clear();
-        return fits;
+        return found;
       }
       const Fitted f = best_cubic(nodes[i].sigma, end_of(i), nodes[i].grid_step, nodes[j].grid_step);
       chosen_.clear();
@@ -318,6 +319,7 @@ class SpanWriter {
   // (free_node_curvatures).
   LacPoint frame(double s) const { return with_chosen_curvature(path_.at(s), s); }
 
+  // A frame of the path at arc length s with the curvature chosen for a node there, if any.
   LacPoint with_chosen_curvature(LacPoint p, double s) const {
     for (const ChosenCurvature& c : chosen_)
       if (at_node(c.sigma, s)) p.curvature = c.kappa;
