@@ -1,4 +1,5 @@
-// The cubic writeback of a faired chain: an extremum a few units from a corner; the shortest
+// The cubic writeback of a faired chain: an extremum a few units from a corner, and one a
+// corner drawn keeps; the shortest
 // span it halves; a corner's free curvature; a nearly straight stroke cut where it runs along
 // a longer grid direction, or evenly along it; a cubic crossing an axis inside; an extremum's
 // curvature moved so that its spans fit whole.
@@ -57,9 +58,9 @@ TEST(CubicWriteback, AnExtremumNextToACornerIsTheCorner) {
 // A corner drawn turning by 14° (arriving up the vertical, leaving 14° right of it), faired to
 // leave 5° right of it, its vertical extremum 15 units on: as Accanthis's serif tips (drawn
 // 14°, faired 9°). Turned onto the vertical, as a corner with no drawn turn is, it would turn
-// by nothing, and the kink pass would make it smooth. A corner drawn turning by the snap's 10°
+// by nothing, and the kink pass would make it smooth. A corner drawn turning by the kink limit
 // or more is turned only as far as its floor allows (kept_corner_angle), here not at all, and
-// the extremum keeps its node.
+// the extremum, more than one grid place across, keeps its node.
 TEST(CubicWriteback, ACornerDrawnWideIsNotTurnedOntoTheAxis) {
   const FairedChain chain = stroke_leaving_a_corner(5.0);
   ASSERT_EQ(chain.segments.size(), 1u);
@@ -79,6 +80,46 @@ TEST(CubicWriteback, ACornerDrawnWideIsNotTurnedOntoTheAxis) {
   EXPECT_NEAR(turning_angle(Vec2{0, 1}, leaves), radians(-5.0), 1e-6);
   ASSERT_TRUE(kept.nodes[1].grid_step);
   EXPECT_EQ(*kept.nodes[1].grid_step, (Vec2{0, 1}));
+}
+
+// A corner drawn turning by 4.6° (over the check's 3°), faired to leave 4.2° right of the
+// vertical and turning left round within 60 units, so that its vertical extremum lies a few
+// units on and about a tenth of a unit across (TeX Gyre Bonum's e: 4 units on, 0.15 across).
+// Turned onto the vertical it would turn by nothing and be lost; kept, the extremum's node
+// would leave a cubic of a few units between them, which the grid can only straighten. So
+// the corner keeps its tangent, the extremum's node goes, and the cubic from the corner
+// carries the extremum within one grid place of the corner.
+TEST(CubicWriteback, ACornerDrawnPastTheKinkLimitKeepsItsTurnAndAnExtremumOneGridPlaceAcrossGoes) {
+  const double lean = radians(4.2);
+  const Vec2 p0{100, 0}, p1 = p0 + Vec2{std::sin(lean), std::cos(lean)} * 30.0;
+  const Vec2 p2 = p1 + Vec2{std::sin(lean - radians(90.0)), std::cos(lean - radians(90.0))} * 30.0;
+  const SegmentFit fit = fit_three_point(p0, p1, p2, 1.0);
+  ASSERT_TRUE(fit.ok());
+  FairedChain chain;
+  chain.segments.push_back(*fit.segment);
+  const double budget = 2.0, flat = 5e-4;
+  ChainEnds ends{.start_corner = true, .start_axis = {}, .end_axis = {}};
+  // Drawn without a turn of its own: onto the vertical, the extremum's node gone.
+  const ChainCubics snapped = write_chain_as_cubics(chain, budget, flat, ends);
+  ASSERT_TRUE(snapped.nodes.front().out_handle);
+  EXPECT_NEAR(turning_angle(Vec2{0, 1}, *snapped.nodes.front().out_handle - p0), 0.0, 1e-9);
+  RunEnd drawn;
+  drawn.tangent = direction_of(radians(90.0 - 4.6));
+  drawn.beyond = Vec2{0, 1};
+  ends.start_run_end = drawn;
+  const ChainCubics kept = write_chain_as_cubics(chain, budget, flat, ends);
+  ASSERT_GE(kept.nodes.size(), 2u);
+  const OutlineNode& corner = kept.nodes.front();
+  ASSERT_TRUE(corner.out_handle);
+  EXPECT_NEAR(turning_angle(Vec2{0, 1}, *corner.out_handle - corner.point), -lean, 1e-6);
+  EXPECT_EQ(kept.nodes.size(), snapped.nodes.size());
+  for (std::size_t k = 1; k < kept.nodes.size(); ++k) EXPECT_GT(distance(kept.nodes[k].point, corner.point), 20.0);
+  // The first cubic reaches past the corner's vertical by less than one grid place.
+  const Cubic first{corner.point, *corner.out_handle, *kept.nodes[1].in_handle, kept.nodes[1].point};
+  double reach = 0.0;
+  for (int i = 0; i <= 1000; ++i) reach = std::max(reach, first.point_at(i / 1000.0).x - corner.point.x);
+  EXPECT_GT(reach, 0.0);
+  EXPECT_LT(reach, 0.5);
 }
 
 // Halving a span that misses the budget stops short of `shortest_span_units`: cubics of two to
