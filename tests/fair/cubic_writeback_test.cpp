@@ -1,8 +1,7 @@
-// The cubic writeback of a faired chain: an extremum a few units from a corner, and one a
-// corner drawn keeps; the shortest
-// span it halves; a corner's free curvature; a nearly straight stroke cut where it runs along
-// a longer grid direction, or evenly along it; a cubic crossing an axis inside; an extremum's
-// curvature moved so that its spans fit whole.
+// The cubic writeback of a faired chain: an extremum a few units from a corner, and one beside
+// a corner drawn; the shortest span it halves; a corner's free curvature; a nearly straight
+// stroke cut where it runs along a longer grid direction, or evenly along it; a cubic crossing
+// an axis inside; an extremum's curvature moved so that its spans fit whole.
 #include "fair/cubic_writeback.hpp"
 
 #include <gtest/gtest.h>
@@ -84,7 +83,7 @@ TEST(CubicWriteback, ACornerDrawnWideIsNotTurnedOntoTheAxis) {
 
 // A corner drawn turning by 4.6° (over the check's 3°), faired to leave 4.2° right of the
 // vertical and turning left round within 60 units, so that its vertical extremum lies a few
-// units on and about a tenth of a unit across (TeX Gyre Bonum's e: 4 units on, 0.15 across).
+// units on and 0.08 units across (TeX Gyre Bonum's e: 4 units on, 0.15 across).
 // Turned onto the vertical it would turn by nothing and be lost; kept, the extremum's node
 // would leave a cubic of a few units between them, which the grid can only straighten. So
 // the corner keeps its tangent, the extremum's node goes, and the cubic from the corner
@@ -115,6 +114,7 @@ TEST(CubicWriteback, ACornerDrawnPastTheKinkLimitKeepsItsTurnAndAnExtremumOneGri
   EXPECT_EQ(kept.nodes.size(), snapped.nodes.size());
   for (std::size_t k = 1; k < kept.nodes.size(); ++k) EXPECT_GT(distance(kept.nodes[k].point, corner.point), 20.0);
   // The first cubic reaches past the corner's vertical by less than one grid place.
+  ASSERT_TRUE(kept.nodes[1].in_handle);
   const Cubic first{corner.point, *corner.out_handle, *kept.nodes[1].in_handle, kept.nodes[1].point};
   double reach = 0.0;
   for (int i = 0; i <= 1000; ++i) reach = std::max(reach, first.point_at(i / 1000.0).x - corner.point.x);
