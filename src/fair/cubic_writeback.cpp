@@ -697,7 +697,7 @@ void snap_extremum_to_corner(ChainPath& path, double budget, double flat_curvatu
       // There an extremum within half a unit of the corner across its axis is the corner's on
       // the grid: its node goes, and the cubic to the corner carries it, as the source draws it.
       // As a node it left a cubic of a few units the grid could only straighten, a jump against
-      // the curve before (Bonum's e: 4 units, 0.15 across; Quicksand's v 0.3 under its baseline).
+      // the curve before (Bonum's e: 4 units, 0.15 across; Quicksand's v 0.16 under its baseline).
       const double across = std::abs(cross(axis / norm(axis), path.at(nodes[e].sigma).point - path.at(nodes[at].sigma).point));
       if (across < same_grid_place) nodes.erase(nodes.begin() + static_cast<std::ptrdiff_t>(e));
       return;
