@@ -263,9 +263,13 @@ class SpanWriter {
       known[k].path = path_.at(nodes[k].sigma).curvature;
       known[k].free = (closed || (k > 0 && k + 1 < n)) && std::abs(known[k].path) >= flat_;
     }
-    // Each span is first asked as the path has it, and fit() keeps that answer where no node of
-    // the span then moves. Its stretch of the path is sampled once for all it is asked.
+    // Each span's stretch of the path is sampled once for all it is asked. Each span is first
+    // asked as the path has it, and fit() keeps that answer where no node of the span then moves.
     std::vector<std::optional<Stretch>> stretches(n);
+    const auto stretch = [&](std::size_t i) -> const Stretch& {
+      if (!stretches[i]) stretches[i] = stretch_of(nodes[i].sigma, end_of(i));
+      return *stretches[i];
+    };
     const SpanFits fits = [&](std::size_t i, double k_start, double k_end) {
       const std::size_t j = (i + 1) % n;
       const bool as_path = k_start == known[i].path && k_end == known[j].path;
@@ -273,20 +277,19 @@ class SpanWriter {
       // A share of the budget is asked of the cubic best_cubic would write, not of any.
       const double share = as_path ? 1.0 : cutting_.freed_span_budget_share;
       if (share == 1.0 && !as_path) {
-        if (!stretches[i]) stretches[i] = stretch_of(nodes[i].sigma, end_of(i));
-        const bool found = any_cubic_within(*stretches[i]);
+        const bool found = any_cubic_within(stretch(i));
         chosen_.clear();
         return found;
       }
-      const Fitted f = best_cubic(nodes[i].sigma, end_of(i), nodes[i].grid_step, nodes[j].grid_step);
+      const Fitted f = best_cubic(stretch(i), nodes[i].grid_step, nodes[j].grid_step);
       chosen_.clear();
       if (as_path) path_fits_.push_back({nodes[i].sigma, end_of(i), f});
       return f.within(share * budget_);
     };
     const SpanSeeds seeds = [&](std::size_t i) -> std::optional<std::array<double, 2>> {
-      const LacPoint pa = path_.at(nodes[i].sigma), pb = path_.at(end_of(i));
-      const std::vector<Vec2> lac = path_.points(nodes[i].sigma, end_of(i));
-      const std::optional<Cubic> c = fit_cubic_with_end_tangents(pa.point, pa.tangent, pb.point, pb.tangent, lac);
+      const Stretch& s = stretch(i);
+      const LacPoint &pa = s.start, &pb = s.end;
+      const std::optional<Cubic> c = fit_cubic_with_end_tangents(pa.point, pa.tangent, pb.point, pb.tangent, s.points);
       if (!c) return std::nullopt;
       return std::array{node_curvature(*c, SegmentEnd::start), node_curvature(*c, SegmentEnd::end)};
     };
@@ -356,9 +359,14 @@ class SpanWriter {
   // (span_cubics).
   Fitted best_cubic(double a, double b, std::optional<Vec2> start_step, std::optional<Vec2> end_step,
                     double cap = std::numeric_limits<double>::infinity()) const {
-    const LacPoint pa = frame(a), pb = frame(b);
-    const std::vector<Vec2> lac = path_.points(a, b);
-    const double turning = absolute_turning(pa.tangent, lac, pb.tangent);
+    return best_cubic(stretch_of(a, b), start_step, end_step, cap);
+  }
+  Fitted best_cubic(const Stretch& stretch, std::optional<Vec2> start_step, std::optional<Vec2> end_step,
+                    double cap = std::numeric_limits<double>::infinity()) const {
+    const double a = stretch.a, b = stretch.b;
+    const LacPoint pa = with_chosen_curvature(stretch.start, a), pb = with_chosen_curvature(stretch.end, b);
+    const std::vector<Vec2>& lac = stretch.points;
+    const double turning = stretch.turning;
     Fitted best;
     double finest = infeasible;
     const auto consider = [&](const Cubic& c) {
