@@ -676,7 +676,8 @@ std::vector<Piece> write_spans(SpanWriter& writer, std::span<const RequiredNode>
 // (its handle along the axis) and the extremum's node goes. Corner and extremum a few units
 // apart left a cubic so short that whole grid steps could only make it straight, against the
 // curvature beyond it. A corner drawn that may not turn so keeps its tangent, and loses the
-// extremum's node only where the two are one grid place across the axis.
+// extremum's node only where the two are one grid place across the axis; one too far off the
+// axis to turn, only where they are also within a unit of each other.
 void snap_extremum_to_corner(ChainPath& path, double budget, double flat_curvature, SpanCutting cutting,
                              ChainEnds corners, std::vector<RequiredNode>& nodes, SegmentEnd end) {
   const std::size_t n = nodes.size();
@@ -688,7 +689,25 @@ void snap_extremum_to_corner(ChainPath& path, double budget, double flat_curvatu
   if (!nodes[e].grid_step || std::abs(nodes[e].sigma - nodes[at].sigma) > snap_reach) return;
   const Vec2 axis = *nodes[e].grid_step;
   const Vec2 tangent = path.at(nodes[at].sigma).tangent;
-  if (std::abs(turning_angle(tangent, axis)) > snap_turn) return;
+  const Vec2 from_corner = path.at(nodes[e].sigma).point - path.at(nodes[at].sigma).point;
+  // An extremum within half a unit of the corner across its axis is the corner's on the grid:
+  // where the corner keeps its tangent, its node goes, and the cubic to the corner carries it,
+  // as the source draws it. As a node it left a cubic of a few units the grid could only
+  // straighten, a jump against the curve before (Bonum's e: 4 units, 0.15 across; Quicksand's
+  // v 0.16 under its baseline).
+  const auto drop_within_one_grid_place = [&] {
+    if (std::abs(cross(axis / norm(axis), from_corner)) < same_grid_place)
+      nodes.erase(nodes.begin() + static_cast<std::ptrdiff_t>(e));
+  };
+  if (std::abs(turning_angle(tangent, axis)) > snap_turn) {
+    // Too far off the axis to turn onto it, the corner keeps its tangent; an extremum within a
+    // unit of it goes too, where rounding would put the two on one or neighbouring grid points
+    // (Junicode's u: the bowl's extremum 0.68 units from the serif's corner, 12° off the level,
+    // rounded into a 1-unit cubic whose handles zigzagged, κ·UPM 292 against 0 beyond it).
+    // Farther, the cubic carrying it would leave it more than half a unit off its nodes.
+    if (norm(from_corner) < 1.0) drop_within_one_grid_place();
+    return;
+  }
   // Nor a corner drawn turning by the kink limit or more (one the check counts) past its floor
   // (kept_corner_angle): a designed corner, not a stroke's end a degree off the axis.
   // Accanthis's serif tips turn by 14°, faired by 9°, and turned onto the axis were left a kink
@@ -702,12 +721,7 @@ void snap_extremum_to_corner(ChainPath& path, double budget, double flat_curvatu
     const double onto = angle_of(axis);
     const std::optional<double> kept = kept_corner_angle(end_as_planned, start, angle_of(tangent), onto);
     if (!kept || std::abs(wrapped_angle(*kept - onto)) > 1e-12) {
-      // There an extremum within half a unit of the corner across its axis is the corner's on
-      // the grid: its node goes, and the cubic to the corner carries it, as the source draws it.
-      // As a node it left a cubic of a few units the grid could only straighten, a jump against
-      // the curve before (Bonum's e: 4 units, 0.15 across; Quicksand's v 0.16 under its baseline).
-      const double across = std::abs(cross(axis / norm(axis), path.at(nodes[e].sigma).point - path.at(nodes[at].sigma).point));
-      if (across < same_grid_place) nodes.erase(nodes.begin() + static_cast<std::ptrdiff_t>(e));
+      drop_within_one_grid_place();
       return;
     }
   }

@@ -122,6 +122,47 @@ TEST(CubicWriteback, ACornerDrawnPastTheKinkLimitKeepsItsTurnAndAnExtremumOneGri
   EXPECT_LT(reach, 0.5);
 }
 
+// A corner leaving 12.5° right of the vertical and turning left round, so that its vertical
+// extremum lies 0.64 units on and 0.06 across (Junicode's u: the bowl's extremum 0.68 units from
+// the serif's corner, 12° off the level). Too far off the axis to turn onto it, the corner keeps
+// its tangent; as a node, the extremum left a cubic under a unit long, which rounding folded
+// into a zigzag. So its node goes, and the cubic from the corner carries it within a unit of
+// the corner.
+TEST(CubicWriteback, AnExtremumWithinAUnitOfACornerTooFarOffItsAxisGoes) {
+  const double lean = radians(12.5);
+  const Vec2 p0{100, 0}, p1 = p0 + Vec2{std::sin(lean), std::cos(lean)} * 4.0;
+  const Vec2 p2 = p1 + Vec2{std::sin(lean - radians(40.0)), std::cos(lean - radians(40.0))} * 40.0;
+  const SegmentFit fit = fit_three_point(p0, p1, p2, 0.5);
+  ASSERT_TRUE(fit.ok());
+  FairedChain chain;
+  chain.segments.push_back(*fit.segment);
+  const double budget = 2.0, flat = 5e-4;
+  // As a smooth end: a node at the extremum, within a unit of the chain's start.
+  const ChainCubics smooth = write_chain_as_cubics(chain, budget, flat);
+  ASSERT_GE(smooth.nodes.size(), 3u);
+  EXPECT_LT(distance(smooth.nodes[1].point, p0), 1.0);
+  ASSERT_TRUE(smooth.nodes[1].grid_step);
+  EXPECT_EQ(*smooth.nodes[1].grid_step, (Vec2{0, 1}));
+  // At a corner: its tangent kept, no node within 20 units of it.
+  const ChainCubics corner = write_chain_as_cubics(chain, budget, flat, {.start_corner = true, .start_axis = {}, .end_axis = {}});
+  ASSERT_EQ(corner.nodes.size(), smooth.nodes.size() - 1);
+  const OutlineNode& c = corner.nodes.front();
+  EXPECT_EQ(c.point, p0);
+  ASSERT_TRUE(c.out_handle);
+  EXPECT_NEAR(turning_angle(Vec2{0, 1}, *c.out_handle - c.point), -lean, 1e-6);
+  for (std::size_t k = 1; k < corner.nodes.size(); ++k) EXPECT_GT(distance(corner.nodes[k].point, p0), 20.0);
+  // The first cubic reaches past the corner's vertical by less than a grid place, within a
+  // unit of the corner.
+  ASSERT_TRUE(corner.nodes[1].in_handle);
+  const Cubic first{c.point, *c.out_handle, *corner.nodes[1].in_handle, corner.nodes[1].point};
+  Vec2 rightmost = p0;
+  for (int i = 0; i <= 4000; ++i)
+    if (const Vec2 q = first.point_at(i / 4000.0); q.x > rightmost.x) rightmost = q;
+  EXPECT_GT(rightmost.x - p0.x, 0.0);
+  EXPECT_LT(rightmost.x - p0.x, 0.5);
+  EXPECT_LT(distance(rightmost, p0), 1.0);
+}
+
 // Halving a span that misses the budget stops short of `shortest_span_units`: cubics of two to
 // four units, as the default allows, round onto a few grid points whose whole steps cannot set
 // their curvature (Lato's W had two of four units at its middle apex, κ·UPM 1,333 and 4,000
