@@ -945,6 +945,13 @@ TEST(ContourFairing, ASpanWithNoG2CubicMeetsOneEndsCurvature) {
   EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm), 0);
 }
 
+TEST(ContourFairing, AContourLeftWithAJumpIsFairedAgainWithOtherChainShares) {
+  // Linux Libertine's g, rounded: its ear's flat top came out of every refairing with a 7-unit
+  // cubic the grid laid flat beside a 69-unit one leaving with κ·UPM 1.97, a jump. Faired again
+  // with the chain taking another share of the budget, the writeback cuts the ear elsewhere.
+  expect_faired_g2(test::linux_libertine, "g");
+}
+
 // A smooth node a unit off a nearly straight stroke, its tangent a degree off the axis: rounded
 // along the axis, the cubic from the stroke has to come back to it and turns into an S (Inter's
 // b and p: one inflection the source lacks; its g: κ −31 per em against +0.25 there). The
