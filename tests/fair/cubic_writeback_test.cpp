@@ -19,14 +19,29 @@ namespace {
 
 // A chain leaving a corner `lean_deg` right of the vertical and turning left by 60°: at 2°, its
 // vertical extremum lies about 10 units from the corner.
-FairedChain stroke_leaving_a_corner(double lean_deg = 2.0) {
-  const double lean = radians(lean_deg), turn = radians(60.0);
-  const Vec2 p0{100, 0}, p1 = p0 + Vec2{std::sin(lean), std::cos(lean)} * 100.0;
-  const Vec2 p2 = p1 + Vec2{std::sin(lean - turn), std::cos(lean - turn)} * 100.0;
-  const SegmentFit fit = fit_three_point(p0, p1, p2, 1.0);
+// The chain as one log-aesthetic segment (α `alpha`) from (100, 0), leaving `lean_deg` right
+// of the vertical along a first leg of its control triangle and turning left by `turn_deg`
+// along the second; no segment where none fits.
+struct Stroke {
+  double lean_deg = 2.0, turn_deg = 60.0, first_leg = 100.0, second_leg = 100.0, alpha = 1.0;
+};
+FairedChain stroke_leaving_a_corner(const Stroke& s) {
+  const double lean = radians(s.lean_deg), turn = radians(s.turn_deg);
+  const Vec2 p0{100, 0}, p1 = p0 + Vec2{std::sin(lean), std::cos(lean)} * s.first_leg;
+  const Vec2 p2 = p1 + Vec2{std::sin(lean - turn), std::cos(lean - turn)} * s.second_leg;
+  const SegmentFit fit = fit_three_point(p0, p1, p2, s.alpha);
   FairedChain chain;
   if (fit.ok()) chain.segments.push_back(*fit.segment);
   return chain;
+}
+FairedChain stroke_leaving_a_corner(double lean_deg = 2.0) { return stroke_leaving_a_corner(Stroke{.lean_deg = lean_deg}); }
+
+// The point of `c` farthest right (of 4001 samples).
+Vec2 rightmost_point(const Cubic& c) {
+  Vec2 out = c.p[0];
+  for (int i = 0; i <= 4000; ++i)
+    if (const Vec2 q = c.point_at(i / 4000.0); q.x > out.x) out = q;
+  return out;
 }
 
 TEST(CubicWriteback, AnExtremumNextToACornerIsTheCorner) {
@@ -90,12 +105,9 @@ TEST(CubicWriteback, ACornerDrawnWideIsNotTurnedOntoTheAxis) {
 // carries the extremum within one grid place of the corner.
 TEST(CubicWriteback, ACornerDrawnPastTheKinkLimitKeepsItsTurnAndAnExtremumOneGridPlaceAcrossGoes) {
   const double lean = radians(4.2);
-  const Vec2 p0{100, 0}, p1 = p0 + Vec2{std::sin(lean), std::cos(lean)} * 30.0;
-  const Vec2 p2 = p1 + Vec2{std::sin(lean - radians(90.0)), std::cos(lean - radians(90.0))} * 30.0;
-  const SegmentFit fit = fit_three_point(p0, p1, p2, 1.0);
-  ASSERT_TRUE(fit.ok());
-  FairedChain chain;
-  chain.segments.push_back(*fit.segment);
+  const Vec2 p0{100, 0};
+  const FairedChain chain = stroke_leaving_a_corner({.lean_deg = 4.2, .turn_deg = 90.0, .first_leg = 30.0, .second_leg = 30.0});
+  ASSERT_EQ(chain.segments.size(), 1u);
   const double budget = 2.0, flat = 5e-4;
   ChainEnds ends{.start_corner = true, .start_axis = {}, .end_axis = {}};
   // Drawn without a turn of its own: onto the vertical, the extremum's node gone.
@@ -116,8 +128,7 @@ TEST(CubicWriteback, ACornerDrawnPastTheKinkLimitKeepsItsTurnAndAnExtremumOneGri
   // The first cubic reaches past the corner's vertical by less than one grid place.
   ASSERT_TRUE(kept.nodes[1].in_handle);
   const Cubic first{corner.point, *corner.out_handle, *kept.nodes[1].in_handle, kept.nodes[1].point};
-  double reach = 0.0;
-  for (int i = 0; i <= 1000; ++i) reach = std::max(reach, first.point_at(i / 1000.0).x - corner.point.x);
+  const double reach = rightmost_point(first).x - corner.point.x;
   EXPECT_GT(reach, 0.0);
   EXPECT_LT(reach, 0.5);
 }
@@ -130,12 +141,10 @@ TEST(CubicWriteback, ACornerDrawnPastTheKinkLimitKeepsItsTurnAndAnExtremumOneGri
 // the corner.
 TEST(CubicWriteback, AnExtremumWithinAUnitOfACornerTooFarOffItsAxisGoes) {
   const double lean = radians(12.5);
-  const Vec2 p0{100, 0}, p1 = p0 + Vec2{std::sin(lean), std::cos(lean)} * 4.0;
-  const Vec2 p2 = p1 + Vec2{std::sin(lean - radians(40.0)), std::cos(lean - radians(40.0))} * 40.0;
-  const SegmentFit fit = fit_three_point(p0, p1, p2, 0.5);
-  ASSERT_TRUE(fit.ok());
-  FairedChain chain;
-  chain.segments.push_back(*fit.segment);
+  const Vec2 p0{100, 0};
+  const FairedChain chain =
+      stroke_leaving_a_corner({.lean_deg = 12.5, .turn_deg = 40.0, .first_leg = 4.0, .second_leg = 40.0, .alpha = 0.5});
+  ASSERT_EQ(chain.segments.size(), 1u);
   const double budget = 2.0, flat = 5e-4;
   // As a smooth end: a node at the extremum, within a unit of the chain's start.
   const ChainCubics smooth = write_chain_as_cubics(chain, budget, flat);
@@ -154,10 +163,7 @@ TEST(CubicWriteback, AnExtremumWithinAUnitOfACornerTooFarOffItsAxisGoes) {
   // The first cubic reaches past the corner's vertical by less than a grid place, within a
   // unit of the corner.
   ASSERT_TRUE(corner.nodes[1].in_handle);
-  const Cubic first{c.point, *c.out_handle, *corner.nodes[1].in_handle, corner.nodes[1].point};
-  Vec2 rightmost = p0;
-  for (int i = 0; i <= 4000; ++i)
-    if (const Vec2 q = first.point_at(i / 4000.0); q.x > rightmost.x) rightmost = q;
+  const Vec2 rightmost = rightmost_point({c.point, *c.out_handle, *corner.nodes[1].in_handle, corner.nodes[1].point});
   EXPECT_GT(rightmost.x - p0.x, 0.0);
   EXPECT_LT(rightmost.x - p0.x, 0.5);
   EXPECT_LT(distance(rightmost, p0), 1.0);
