@@ -568,11 +568,13 @@ struct Refairing {
 };
 constexpr std::array<Refairing, 5> refairings{{{0.25, 1.0}, {0.5, 1.0}, {0.0, 0.9}, {0.5, 0.9}, {0.0, 1.0, 2.0}}};
 constexpr int most_tries_faired_again = 2;
-// Then with other splits of the budget between the chain and its cubics (FairSettings::
-// chain_share, text 0.4), the nodes' curvatures the path's: the split sets where the writeback
-// cuts its spans and how long their handles are, so which joins whole grid steps can match
-// (a–z A–Z rounded, 44 text fonts: g2-jumps 89 → 69, Nimbus Sans 1 → 0, Linux Libertine's g;
-// whole DejaVu Sans 35 → 22). Ten splits (also 0.1, 0.2, 0.33, 0.5, 0.67 and 0.85) took
+// Then, while jumps or kinks are left, with other splits of the budget between the chain and
+// its cubics (FairSettings::chain_share, text 0.4), the nodes' curvatures the path's, each kept
+// only where it has fewer of those: the split sets where the writeback cuts its spans and how
+// long their handles are, so which joins whole grid steps can match (a–z A–Z rounded, 44 text
+// fonts: g2-jumps 89 → 69, Nimbus Sans 1 → 0, Linux Libertine's g; whole DejaVu Sans 35 → 22).
+// Kept for fewer inflections alone, EB Garamond's W traded two beyond its source for a jump at
+// a cap serif's flat top moved there from its leg. Ten splits (also 0.1, 0.2, 0.33, 0.5, 0.67 and 0.85) took
 // a–z A–Z to about 50, but whole DejaVu Sans past the 60 s bar on two cores (53 → 67 s); with
 // the curvatures free too, no fewer jumps, and 9 s more.
 constexpr std::array<double, 4> other_chain_shares{0.25, 0.6, 0.15, 0.75};
@@ -615,12 +617,13 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& requested
   }
   if (!refair) return out;
   // Each fairing again stops at as many tries as the first took, and is kept where it leaves
-  // fewer faults.
-  const auto fair_again = [&](const FairSettings& again_settings) {
+  // fewer faults (`mending_joins`: and fewer jumps and kinks).
+  const auto fair_again = [&](const FairSettings& again_settings, bool mending_joins) {
     Tries again_tries{0, first.made, false};
     ContourFairing again = fair_contour_once(source, again_settings, again_tries, memo);
     if (!again.faired) return;
     const OutlineFaults again_faults = counter.count(again.contour);
+    if (mending_joins && again_faults.at_smooth_joins() >= faults.at_smooth_joins()) return;
     if (fewer_faults(again_faults, faults)) out = std::move(again), faults = again_faults;
   };
   for (const Refairing& r : refairings) {
@@ -632,14 +635,14 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& requested
       again_settings.rounding_reserve_units += r.more_reserve_units;
       again_settings.tolerance_units *= r.tolerance_scale;
       again_settings.shortest_rounded_span_units *= r.span_scale;
-      fair_again(again_settings);
+      fair_again(again_settings, false);
     }
   }
   for (const double share : other_chain_shares) {
-    if (!faults.mendable()) break;
+    if (faults.at_smooth_joins() == 0) break;
     FairSettings again_settings = settings;  // its nodes' curvatures the path's
     again_settings.chain_share = share;
-    fair_again(again_settings);
+    fair_again(again_settings, true);
   }
   return out;
 }
