@@ -574,9 +574,9 @@ constexpr int most_tries_faired_again = 2;
 // long their handles are, so which joins whole grid steps can match (a–z A–Z rounded, 44 text
 // fonts: g2-jumps 89 → 69, Nimbus Sans 1 → 0, Linux Libertine's g; whole DejaVu Sans 35 → 22).
 // Kept for fewer inflections alone, EB Garamond's W traded two beyond its source for a jump at
-// a cap serif's flat top moved there from its leg. Ten splits (also 0.1, 0.2, 0.33, 0.5, 0.67 and 0.85) took
-// a–z A–Z to about 50, but whole DejaVu Sans past the 60 s bar on two cores (53 → 67 s); with
-// the curvatures free too, no fewer jumps, and 9 s more.
+// a cap serif's flat top moved there from its leg. Ten splits (also 0.1, 0.2, 0.33, 0.5, 0.67
+// and 0.85) took a–z A–Z to about 50, but whole DejaVu Sans past the 60 s bar on two cores
+// (53 → 67 s); with the curvatures free too, no fewer jumps, and 9 s more.
 constexpr std::array<double, 4> other_chain_shares{0.25, 0.6, 0.15, 0.75};
 
 }  // namespace

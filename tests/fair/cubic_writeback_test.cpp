@@ -17,8 +17,6 @@
 namespace gf {
 namespace {
 
-// A chain leaving a corner `lean_deg` right of the vertical and turning left by 60°: at 2°, its
-// vertical extremum lies about 10 units from the corner.
 // The chain as one log-aesthetic segment (α `alpha`) from (100, 0), leaving `lean_deg` right
 // of the vertical along a first leg of its control triangle and turning left by `turn_deg`
 // along the second; no segment where none fits.
@@ -34,6 +32,8 @@ FairedChain stroke_leaving_a_corner(const Stroke& s) {
   if (fit.ok()) chain.segments.push_back(*fit.segment);
   return chain;
 }
+// Turning left by 60° over legs of 100 units: at 2°, its vertical extremum lies about 10 units
+// from the corner.
 FairedChain stroke_leaving_a_corner(double lean_deg = 2.0) { return stroke_leaving_a_corner(Stroke{.lean_deg = lean_deg}); }
 
 // The point of `c` farthest right (of 4001 samples).
@@ -104,9 +104,10 @@ TEST(CubicWriteback, ACornerDrawnWideIsNotTurnedOntoTheAxis) {
 // the corner keeps its tangent, the extremum's node goes, and the cubic from the corner
 // carries the extremum within one grid place of the corner.
 TEST(CubicWriteback, ACornerDrawnPastTheKinkLimitKeepsItsTurnAndAnExtremumOneGridPlaceAcrossGoes) {
-  const double lean = radians(4.2);
+  const Stroke stroke{.lean_deg = 4.2, .turn_deg = 90.0, .first_leg = 30.0, .second_leg = 30.0};
+  const double lean = radians(stroke.lean_deg);
   const Vec2 p0{100, 0};
-  const FairedChain chain = stroke_leaving_a_corner({.lean_deg = 4.2, .turn_deg = 90.0, .first_leg = 30.0, .second_leg = 30.0});
+  const FairedChain chain = stroke_leaving_a_corner(stroke);
   ASSERT_EQ(chain.segments.size(), 1u);
   const double budget = 2.0, flat = 5e-4;
   ChainEnds ends{.start_corner = true, .start_axis = {}, .end_axis = {}};
@@ -140,10 +141,10 @@ TEST(CubicWriteback, ACornerDrawnPastTheKinkLimitKeepsItsTurnAndAnExtremumOneGri
 // into a zigzag. So its node goes, and the cubic from the corner carries it within a unit of
 // the corner.
 TEST(CubicWriteback, AnExtremumWithinAUnitOfACornerTooFarOffItsAxisGoes) {
-  const double lean = radians(12.5);
+  const Stroke stroke{.lean_deg = 12.5, .turn_deg = 40.0, .first_leg = 4.0, .second_leg = 40.0, .alpha = 0.5};
+  const double lean = radians(stroke.lean_deg);
   const Vec2 p0{100, 0};
-  const FairedChain chain =
-      stroke_leaving_a_corner({.lean_deg = 12.5, .turn_deg = 40.0, .first_leg = 4.0, .second_leg = 40.0, .alpha = 0.5});
+  const FairedChain chain = stroke_leaving_a_corner(stroke);
   ASSERT_EQ(chain.segments.size(), 1u);
   const double budget = 2.0, flat = 5e-4;
   // As a smooth end: a node at the extremum, within a unit of the chain's start.
