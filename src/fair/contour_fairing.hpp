@@ -22,6 +22,7 @@ struct ContourFairing {
   double max_curvature_mismatch = 0.0;  ///< of the log-aesthetic chains, relative
   int g1_nodes = 0;        ///< smooth nodes with G1 only: no G2 Hermite cubic was found for a span
   int guide_stretches = 0; ///< spans written from the smoothing guide: no G2 log-aesthetic chain within the budget
+  int split_nodes = 0;     ///< nodes added where cubics beside a jump rounding left were split (fair/jump_splits.hpp)
   int g3_runs = 0;         ///< --continuity g3: smooth runs that came out G3
   int g2_line_joins = 0;   ///< and their line joins held to G2 (no room on the line for G3)
   std::vector<std::string> g3_shortfalls;  ///< and why each other run stayed G2

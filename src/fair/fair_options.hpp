@@ -65,7 +65,8 @@ struct FairSettings {
   /// whole steps cannot set their curvature (Breip's W and E, Because We Create's d, t and X
   /// kept jumps there; halving from eight units leaves no cubic under four).
   double shortest_rounded_span_units = 8.0;
-  // rounding_reserve_units, shortest_rounded_span_units and free_node_curvatures are read by
+  // rounding_reserve_units, shortest_rounded_span_units, free_node_curvatures and
+  // split_beside_jumps are read by
   // the budgets, the writeback and rounding, never by fair_run: a contour's fairings that
   // differ only in them share their faired runs (fair/plan_fairing's RunFairings).
   /// The writeback may give an extremum inside a chain another curvature than the faired
@@ -74,6 +75,10 @@ struct FairSettings {
   /// humps added curvature extrema (a–z A–Z, Because We Learn 0.439× → 0.486× of its
   /// source's, against the bar's 0.5×) for 7 % fewer nodes.
   bool free_node_curvatures = false;
+  /// Text under G2 on the grid: where rounding leaves a curvature jump, the float cubics beside
+  /// it are split in two and rounded again, kept where that leaves fewer faults
+  /// (fair/jump_splits.hpp).
+  bool split_beside_jumps = true;
   /// The share of the tolerance (after rounding's reserve) the log-aesthetic chain may use;
   /// the cubics get the rest. Text 0.4; handwriting 0.7, where the chain follows a smoothed
   /// guide and the cubics follow the chain closely.

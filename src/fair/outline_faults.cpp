@@ -34,6 +34,12 @@ void append_curvature_signs(const Segment& s, double units_per_em, std::vector<i
   }
 }
 
+// A join the check counts as smooth, and its curvature jump as it counts it.
+bool smooth_join_jumps(const Join& j, double units_per_em) {
+  const std::optional<CurvatureJump> jump = curvature_jump(j, units_per_em);
+  return !jump || jump->exceeds();
+}
+
 // What a jump or kink mended may cost in inflections beyond the source's (fewer_faults).
 constexpr int inflections_per_mended_join = 2;
 
@@ -86,13 +92,22 @@ OutlineFaults FaultCounter::count(const Contour& faired) const {
       ++out.kinks;
       continue;
     }
-    const std::optional<CurvatureJump> jump = curvature_jump(j, units_per_em_);
-    out.jumps += !jump || jump->exceeds();
+    out.jumps += smooth_join_jumps(j, units_per_em_);
   }
   out.inflections = std::max(0, inflections_along(faired, joins, units_per_em_, thresholds.kink_max_deg) - source_inflections_);
   const double reach = corner_reach_em * units_per_em_;
   for (const Vec2 c : source_corners_)
     out.corners_lost += std::none_of(corners.begin(), corners.end(), [&](Vec2 p) { return distance(p, c) <= reach; });
+  return out;
+}
+
+std::vector<Vec2> jumping_joins(const Contour& faired, double units_per_em) {
+  const JoinThresholds thresholds;
+  std::vector<Vec2> out;
+  for (const Join& j : joins_of(faired, thresholds))
+    if (!is_corner(j, thresholds.kink_max_deg) && std::abs(j.angle_deg) <= thresholds.smooth_max_deg &&
+        smooth_join_jumps(j, units_per_em))
+      out.push_back(j.point);
   return out;
 }
 

@@ -39,6 +39,10 @@ class FaultCounter {
   int source_inflections_ = 0;
 };
 
+/// Where `faired` has a smooth join whose curvature jumps as the check counts it (an unbounded
+/// side counts), on an em of `units_per_em`.
+std::vector<Vec2> jumping_joins(const Contour& faired, double units_per_em);
+
 /// The sign changes of κ along each stretch of `c` between corners (of its `joins`, joins_of(c),
 /// those turning by more than `kink_max_deg` or without a direction; kinks belong to the
 /// stretch), as the check counts them: |κ|·UPM under 1e-6 is no sign, so κ changing sign across

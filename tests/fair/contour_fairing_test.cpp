@@ -752,6 +752,21 @@ TEST(ContourFairing, AContourStillJumpingIsFairedAgainWithLongerShortestSpans) {
   EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm, std::pair{Vec2{620.0, -20.0}, Vec2{720.0, 260.0}}), 0);
 }
 
+TEST(ContourFairing, TheCubicsBesideAJumpRoundingLeftAreSplitAndRoundedAgain) {
+  // EB Garamond's W, rounded: every fairing again left two joins jumping, where whole steps of
+  // the far nodes' directions set κ too coarsely: (366, 142) at the foot of the middle apex,
+  // κ·UPM −133 against −125 beside a 4-unit handle, and (853, 597) on the right arm, −7.8
+  // against −8.3. With the cubics beside each split where the tangent runs along a short grid
+  // direction (fair/jump_splits), the new nodes' handles set κ finely and the glyph has none.
+  // The oracle that the splits mend them: the same glyph faired without them still jumps.
+  FairedGlyph f;
+  expect_faired(test::eb_garamond, "W", FairProfile::text, &f);
+  EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm), 0);
+  FairSettings unsplit = f.settings;
+  unsplit.split_beside_jumps = false;
+  EXPECT_GT(g2_jumps(fair_glyph(f.source, unsplit).glyph.outline, f.upm), 0);
+}
+
 TEST(ContourFairing, ACurveSlidesDownItsDiagonalLineUntilItLeavesItFlat) {
   // Lato's M: the right leg's line, step (16, 29), into a curve to the cap whose far handle,
   // whole steps of (2, 1), lies a quarter of a unit off the line at best: κ·UPM 0.073 at the

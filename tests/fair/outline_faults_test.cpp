@@ -43,6 +43,15 @@ TEST(OutlineFaults, ACurveLeavingALineBentHasAJump) {
   expect_faults(FaultCounter(c, upm).count(c), {.jumps = 1});
 }
 
+TEST(OutlineFaults, JumpingJoinsAreWhereTheJumpsAre) {
+  // The same contour: its one jump at (100, 0), where the cubic leaves the line; the square's
+  // joins are corners and have none.
+  const Contour c = closed({Line{{{0, 0}, {100, 0}}}, Cubic{{{100, 0}, {130, 0}, {150, 10}, {160, 30}}},
+                            Line{{{160, 30}, {0, 100}}}, Line{{{0, 100}, {0, 0}}}});
+  EXPECT_EQ(jumping_joins(c, upm), std::vector<Vec2>{Vec2(100, 0)});
+  EXPECT_TRUE(jumping_joins(square, upm).empty());
+}
+
 TEST(OutlineFaults, ATangentBrokenByADegreeIsAKink) {
   const double rise = 100.0 * std::tan(std::numbers::pi / 180.0);
   const Contour c = closed({Line{{{0, 0}, {100, 0}}}, Line{{{100, 0}, {200, rise}}}, Line{{{200, rise}, {200, 100}}},
