@@ -330,15 +330,16 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
     // 32 for 45 % more.
     if (round && d <= settings.tolerance_units && settings.profile == FairProfile::text &&
         settings.continuity == Continuity::g2 && settings.split_beside_jumps) {
-      const FaultCounter counter(source, settings.units_per_em);
-      const OutlineFaults faults = counter.count(faired);
+      const std::vector<Vec2> jumps = jumping_joins(faired, settings.units_per_em);
       const std::vector<OutlineNode> split =
-          faults.jumps == 0 ? std::vector<OutlineNode>{}
-                            : split_cubics_beside(a.nodes, source.closed, jumping_joins(faired, settings.units_per_em),
-                                                  2.0 * settings.shortest_rounded_span_units, split_reach);
+          jumps.empty() ? std::vector<OutlineNode>{}
+                        : split_cubics_beside(a.nodes, source.closed, jumps, 2.0 * settings.shortest_rounded_span_units,
+                                              split_reach);
       if (split.size() > a.nodes.size()) {
         const OutlineOnGrid again = settle_on_grid(split, source.closed, sampled_source, settings, round, tries);
-        if (again.deviation <= settings.tolerance_units && fewer_faults(counter.count(again.contour), faults)) {
+        const FaultCounter counter(source, settings.units_per_em);
+        if (again.deviation <= settings.tolerance_units &&
+            fewer_faults(counter.count(again.contour), counter.count(faired))) {
           split_nodes = static_cast<int>(again.contour.segments.size()) - static_cast<int>(faired.segments.size());
           faired = again.contour, d = again.deviation;
         }
