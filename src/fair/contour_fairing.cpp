@@ -651,8 +651,8 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& requested
   // nodes and a jump, and a split mended that, against 23 nodes and a jump before it, and 21
   // and none at 0.9 of the tolerance after it).
   const auto better = [&](const ContourFairing& again, const OutlineFaults& again_faults) {
-    const std::size_t unsplit = again.contour.segments.size() - static_cast<std::size_t>(again.split_nodes);
-    if (again.split_nodes > 0 && unsplit > out.contour.segments.size()) return false;
+    const auto nodes = [](const ContourFairing& f) { return static_cast<int>(f.contour.segments.size()); };
+    if (again.split_nodes > 0 && nodes(again) - again.split_nodes > nodes(out)) return false;
     return fewer_faults(again_faults, faults);
   };
   if (freed && (!refair || faults.mendable())) {

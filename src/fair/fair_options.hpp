@@ -66,9 +66,9 @@ struct FairSettings {
   /// kept jumps there; halving from eight units leaves no cubic under four).
   double shortest_rounded_span_units = 8.0;
   // rounding_reserve_units, shortest_rounded_span_units, free_node_curvatures and
-  // split_beside_jumps are read by
-  // the budgets, the writeback and rounding, never by fair_run: a contour's fairings that
-  // differ only in them share their faired runs (fair/plan_fairing's RunFairings).
+  // split_beside_jumps are read by the budgets, the writeback and rounding, never by fair_run:
+  // a contour's fairings that differ only in them share their faired runs (fair/plan_fairing's
+  // RunFairings).
   /// The writeback may give an extremum inside a chain another curvature than the faired
   /// path's where both spans beside it then fit as one cubic each (fair/node_curvatures):
   /// fewer nodes for the same budget. Text only: on handwriting the single cubics' curvature

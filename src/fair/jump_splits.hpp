@@ -7,6 +7,7 @@
 // can set finely, and the split itself leaves the float outline as it was (de Casteljau).
 #pragma once
 
+#include <optional>
 #include <span>
 #include <vector>
 
