@@ -205,15 +205,15 @@ struct Tries {
   int freed_nodes = 0;
 };
 
-// The faired `nodes` as a contour and its distance from the source; on the grid (`round`),
-// rounded where the float outline lies within the tolerance, and what it leaves of the
-// tolerance there is what rounding may spend.
+// The faired `nodes` as a contour and its distance from the source; on the grid
+// (Rounding::integers), rounded where the float outline lies within the tolerance, and what it
+// leaves of the tolerance there is what rounding may spend.
 struct OutlineOnGrid {
   Contour contour;
   double deviation = 0.0;
 };
 OutlineOnGrid settle_on_grid(const std::vector<OutlineNode>& nodes, bool closed, const SampledContour& sampled_source,
-                             const FairSettings& settings, bool round, const Tries& tries) {
+                             const FairSettings& settings, const Tries& tries) {
   Contour faired = to_contour(nodes, closed);
   const SampledContour sampled(faired);
   // Each segment's own share: what rounding may still spend there (geom/polyline_distance.hpp).
@@ -223,7 +223,7 @@ OutlineOnGrid settle_on_grid(const std::vector<OutlineNode>& nodes, bool closed,
       distance_by_piece(sampled.grid, sampled.samples.segment_of, sampled_source.grid, answers);
   double d = by_segment.empty() ? distance_between(sampled, sampled_source)
                                 : *std::max_element(by_segment.begin(), by_segment.end());
-  if (round && d <= settings.tolerance_units) {
+  if (settings.rounding == Rounding::integers && d <= settings.tolerance_units) {
     // What the float outline leaves of the tolerance, segment by segment, is what rounding
     // may spend on G2 there (5 % kept for sampling).
     const bool hand = settings.profile == FairProfile::handwriting;
@@ -282,6 +282,32 @@ OutlineOnGrid settle_on_grid(const std::vector<OutlineNode>& nodes, bool closed,
   return {std::move(faired), d};
 }
 
+// Where `rounded`, the rounded outline of `nodes` within the tolerance, keeps a curvature jump,
+// on text under G2 on the grid: the float cubics beside it split in two and rounded again
+// (fair/jump_splits.hpp); that rounding where it leaves fewer faults. a–z A–Z rounded, 44 text
+// fonts: g2-jumps 69 → 34, in 6 % less time (fewer contours left for the refairings). Once,
+// both cubics: a second split where jumps were left, 32 for 12 % more time; then the cubic
+// before and the one after alone where both did not mend it, 32 for 14 % more; each of the
+// three kept where it has fewer faults or as many with fewer nodes, 32 for 45 % more.
+std::optional<OutlineOnGrid> rounded_with_splits(const Contour& source, const std::vector<OutlineNode>& nodes,
+                                                 const Contour& rounded, const SampledContour& sampled_source,
+                                                 const FairSettings& settings, const Tries& tries) {
+  if (!settings.split_beside_jumps || settings.rounding != Rounding::integers ||
+      settings.profile != FairProfile::text || settings.continuity != Continuity::g2)
+    return std::nullopt;
+  const std::vector<Vec2> jumps = jumping_joins(rounded, settings.units_per_em);
+  if (jumps.empty()) return std::nullopt;
+  const std::vector<OutlineNode> split =
+      split_cubics_beside(nodes, source.closed, jumps, 2.0 * settings.shortest_rounded_span_units, split_reach);
+  if (split.size() == nodes.size()) return std::nullopt;
+  OutlineOnGrid again = settle_on_grid(split, source.closed, sampled_source, settings, tries);
+  const FaultCounter counter(source, settings.units_per_em);
+  if (again.deviation > settings.tolerance_units ||
+      !fewer_faults(counter.count(again.contour), counter.count(rounded)))
+    return std::nullopt;
+  return again;
+}
+
 // The contour faired on one plan: the budgets halved once when the first try strays, the
 // outline rounded when asked; the runs that fail on their own outlines faired on `basis`.
 // `kinked` gets the corners of the result that turn by less than the kink limit.
@@ -319,31 +345,13 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
     if (round) fillet_leaning_lines(a.nodes, source.closed, sampled_source, settings, available);
     if (settings.continuity == Continuity::g3)
       a.g3_cubics = carry_g3_into_cubics(a.nodes, source.closed, sampled_source, source.node_count(), settings);
-    auto [faired, d] = settle_on_grid(a.nodes, source.closed, sampled_source, settings, round, tries);
+    auto [faired, d] = settle_on_grid(a.nodes, source.closed, sampled_source, settings, tries);
     int split_nodes = 0;
-    // Where the rounded outline keeps a curvature jump, the float cubics beside it split in two
-    // and rounded again (fair/jump_splits.hpp), kept where that leaves fewer faults. a–z A–Z
-    // rounded, 44 text fonts: g2-jumps 69 → 34, in 6 % less time (fewer contours left for the
-    // refairings). Once, both cubics: a second split where jumps were left, 32 for 12 % more
-    // time; then the cubic before and the one after alone where both did not mend it, 32 for
-    // 14 % more; each of the three kept where it has fewer faults or as many with fewer nodes,
-    // 32 for 45 % more.
-    if (round && d <= settings.tolerance_units && settings.profile == FairProfile::text &&
-        settings.continuity == Continuity::g2 && settings.split_beside_jumps) {
-      const std::vector<Vec2> jumps = jumping_joins(faired, settings.units_per_em);
-      const std::vector<OutlineNode> split =
-          jumps.empty() ? std::vector<OutlineNode>{}
-                        : split_cubics_beside(a.nodes, source.closed, jumps, 2.0 * settings.shortest_rounded_span_units,
-                                              split_reach);
-      if (split.size() > a.nodes.size()) {
-        const OutlineOnGrid again = settle_on_grid(split, source.closed, sampled_source, settings, round, tries);
-        const FaultCounter counter(source, settings.units_per_em);
-        if (again.deviation <= settings.tolerance_units &&
-            fewer_faults(counter.count(again.contour), counter.count(faired))) {
-          split_nodes = static_cast<int>(again.contour.segments.size()) - static_cast<int>(faired.segments.size());
-          faired = again.contour, d = again.deviation;
-        }
-      }
+    std::optional<OutlineOnGrid> split;
+    if (d <= settings.tolerance_units) split = rounded_with_splits(source, a.nodes, faired, sampled_source, settings, tries);
+    if (split) {
+      split_nodes = static_cast<int>(split->contour.segments.size()) - static_cast<int>(faired.segments.size());
+      faired = std::move(split->contour), d = split->deviation;
     }
     if (d <= settings.tolerance_units) {
       out.contour = std::move(faired);

@@ -53,20 +53,6 @@ std::array<double, corner_handles> corner_handle_lengths(double chord) {
 // bend one way, and turn horizontal or vertical only at its ends.
 bool bends_as_a_span(const Cubic& c) { return curvature_shape(c, 0.0).sign_changes == 0 && inner_axis_extrema(c) == 0; }
 
-// Primitive integer directions, |d|² ≤ `longest`: where a span must be cut, the cut goes
-// where the tangent runs along one of them, so rounding keeps the node's handles exactly
-// collinear with it in whole steps of |d|. The shortest, (1, 0), (1, 1), (2, 1) and their
-// mirrors, come first: steps of at most √5 units are fine enough for whole steps to match
-// curvature (fair/handle_steps.hpp); up to (3, 2) where none of them is near the middle.
-std::vector<Vec2> grid_directions(int longest) {
-  std::vector<Vec2> out;
-  const int reach = static_cast<int>(std::sqrt(double(longest)));
-  for (int p = -reach; p <= reach; ++p)
-    for (int q = -reach; q <= reach; ++q)
-      if (p * p + q * q <= longest && is_primitive({double(p), double(q)})) out.push_back({double(p), double(q)});
-  return out;
-}
-
 // The chain as one curve in arc length σ (σ past the end wraps round a closed chain), with a
 // dense table of its points for distances.
 class ChainPath {
@@ -652,6 +638,7 @@ class SpanWriter {
   SpanCutting cutting_;
   ChainEnds corners_;
   ChainCubics& out_;
+  // The short directions first; up to (3, 2) where none of them is near a span's middle.
   std::vector<Vec2> fine_ = grid_directions(5), all_ = grid_directions(13), long_ = grid_directions(100);
   std::vector<ChosenCurvature> chosen_;  ///< the nodes whose curvature is not the path's
   std::vector<PathFit> path_fits_;       ///< spans whose nodes keep the path's curvature

@@ -29,18 +29,16 @@ CubicSplit split_place(const Cubic& c) {
   double nearest = 1.0;
   const PolynomialCurve velocity = c.hodograph().polynomial();
   const double scale = std::max({norm(c.p[1] - c.p[0]), norm(c.p[2] - c.p[1]), norm(c.p[3] - c.p[2]), 1.0});
-  for (int p = 0; p * p <= longest_split_step; ++p)
-    for (int q = -2; q <= 2; ++q) {
-      const Vec2 d{double(p), double(q)};
-      if (p * p + q * q > longest_split_step || !is_primitive(d) || (p == 0 && q < 0)) continue;
-      const Polynomial across = d.y * velocity.x - d.x * velocity.y;
-      for (const SignChange root : sign_changes_in_unit_interval(across, 1e-12 * scale)) {
-        if (root.t < first_split || root.t > last_split || std::abs(root.t - 0.5) >= nearest) continue;
-        nearest = std::abs(root.t - 0.5);
-        best.t = root.t;
-        best.grid_step = dot(velocity(root.t), d) > 0.0 ? d : d * -1.0;
-      }
+  // Each direction comes both ways; both give the same roots, and the first is kept.
+  for (const Vec2 d : grid_directions(longest_split_step)) {
+    const Polynomial across = d.y * velocity.x - d.x * velocity.y;
+    for (const SignChange root : sign_changes_in_unit_interval(across, 1e-12 * scale)) {
+      if (root.t < first_split || root.t > last_split || std::abs(root.t - 0.5) >= nearest) continue;
+      nearest = std::abs(root.t - 0.5);
+      best.t = root.t;
+      best.grid_step = dot(velocity(root.t), d) > 0.0 ? d : d * -1.0;
     }
+  }
   return best;
 }
 

@@ -34,10 +34,14 @@ void append_curvature_signs(const Segment& s, double units_per_em, std::vector<i
   }
 }
 
-// A join the check counts as smooth, and its curvature jump as it counts it.
-bool smooth_join_jumps(const Join& j, double units_per_em) {
+// What the check makes of a join: a corner, a kink, a smooth join whose curvature jumps (an
+// unbounded side counts), or a smooth join that holds.
+enum class JoinFault { corner, kink, jump, none };
+JoinFault join_fault(const Join& j, const JoinThresholds& thresholds, double units_per_em) {
+  if (is_corner(j, thresholds.kink_max_deg)) return JoinFault::corner;
+  if (std::abs(j.angle_deg) > thresholds.smooth_max_deg) return JoinFault::kink;
   const std::optional<CurvatureJump> jump = curvature_jump(j, units_per_em);
-  return !jump || jump->exceeds();
+  return !jump || jump->exceeds() ? JoinFault::jump : JoinFault::none;
 }
 
 // What a jump or kink mended may cost in inflections beyond the source's (fewer_faults).
@@ -84,15 +88,10 @@ OutlineFaults FaultCounter::count(const Contour& faired) const {
   std::vector<Vec2> corners;
   const std::vector<Join> joins = joins_of(faired, thresholds);
   for (const Join& j : joins) {
-    if (is_corner(j, thresholds.kink_max_deg)) {
-      corners.push_back(j.point);
-      continue;
-    }
-    if (std::abs(j.angle_deg) > thresholds.smooth_max_deg) {
-      ++out.kinks;
-      continue;
-    }
-    out.jumps += smooth_join_jumps(j, units_per_em_);
+    const JoinFault fault = join_fault(j, thresholds, units_per_em_);
+    if (fault == JoinFault::corner) corners.push_back(j.point);
+    out.kinks += fault == JoinFault::kink;
+    out.jumps += fault == JoinFault::jump;
   }
   out.inflections = std::max(0, inflections_along(faired, joins, units_per_em_, thresholds.kink_max_deg) - source_inflections_);
   const double reach = corner_reach_em * units_per_em_;
@@ -105,9 +104,7 @@ std::vector<Vec2> jumping_joins(const Contour& faired, double units_per_em) {
   const JoinThresholds thresholds;
   std::vector<Vec2> out;
   for (const Join& j : joins_of(faired, thresholds))
-    if (!is_corner(j, thresholds.kink_max_deg) && std::abs(j.angle_deg) <= thresholds.smooth_max_deg &&
-        smooth_join_jumps(j, units_per_em))
-      out.push_back(j.point);
+    if (join_fault(j, thresholds, units_per_em) == JoinFault::jump) out.push_back(j.point);
   return out;
 }
 

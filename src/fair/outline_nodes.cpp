@@ -63,6 +63,15 @@ Vec2 stepped_handle(Vec2 node, Vec2 d, double sign, Vec2 from, Vec2 handle) {
   return node + d * (sign * std::max(1.0, whole_steps(from, handle, d, sign)));
 }
 
+std::vector<Vec2> grid_directions(int longest) {
+  std::vector<Vec2> out;
+  const int reach = static_cast<int>(std::sqrt(double(longest)));
+  for (int p = -reach; p <= reach; ++p)
+    for (int q = -reach; q <= reach; ++q)
+      if (p * p + q * q <= longest && is_primitive({double(p), double(q)})) out.push_back({double(p), double(q)});
+  return out;
+}
+
 std::optional<Vec2> primitive_step(Vec2 along) {
   const long long g = std::gcd(std::llabs(std::llround(along.x)), std::llabs(std::llround(along.y)));
   if (g == 0) return std::nullopt;

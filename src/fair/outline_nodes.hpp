@@ -102,6 +102,13 @@ std::optional<Vec2> primitive_step(Vec2 along);
 /// Whether `d` is its own primitive step.
 inline bool is_primitive(Vec2 d) { return primitive_step(d) == d; }
 
+/// The primitive integer directions with |d|² ≤ `longest`, both ways along each: where a span
+/// is cut or a cubic split, the node goes where its tangent runs along one of them, so that
+/// rounding keeps its handles exactly collinear with it in whole steps of |d|. The shortest,
+/// (1, 0), (1, 1), (2, 1) and their mirrors (`longest` 5), are fine enough for whole steps to
+/// match curvature (fair/handle_steps.hpp).
+std::vector<Vec2> grid_directions(int longest);
+
 /// Curvature where a cubic of the outline leaves its start or reaches its end
 /// (geom/curvature.hpp), 0 where a retracted handle leaves it unbounded.
 double node_curvature(const Cubic& c, SegmentEnd end);
