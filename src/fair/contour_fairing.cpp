@@ -14,14 +14,12 @@
 #include "fair/corner_end_lobes.hpp"
 #include "fair/cubic_writeback.hpp"
 #include "fair/g3_cubics.hpp"
-#include "fair/grid_rounding.hpp"
-#include "fair/jump_splits.hpp"
 #include "fair/kinked_corners.hpp"
 #include "fair/kink_fillet.hpp"
 #include "fair/leaning_line_ends.hpp"
 #include "fair/outline_faults.hpp"
+#include "fair/outline_on_grid.hpp"
 #include "fair/plan_fairing.hpp"
-#include "fair/rounding_retry.hpp"
 #include "fair/run_fairing.hpp"
 #include "fair/spurs.hpp"
 #include "fair/stem_jogs.hpp"
@@ -29,65 +27,13 @@
 #include "fair/upright_lines.hpp"
 #include "geom/arc_length.hpp"
 #include "geom/curvature.hpp"
-#include "geom/polyline_distance.hpp"
-#include "geom/tolerance_band.hpp"
 
 namespace gf {
 
 namespace {
 
-// Rounds of polishing the joins rounding leaves jumping (HandleStepLimits::polish_rounds): a
-// handwriting font's a-z A-Z changed no further after three.
-constexpr int handwriting_polish_rounds = 3;
-// Under --continuity g3, where the polish also takes the nodes whose dκ/ds jumps: DejaVu Sans
-// a–z A–Z, median jump 0.62 with none, 0.112 with one round, 0.076 with two or three.
-constexpr int text_g3_polish_rounds = 2;
-// Text under G2 (since stop 60, with the nodes beside the jumps): whole DejaVu Sans, g2-jumps
-// 664, 612 and 605 with one, two and three rounds (24.7, 26.0 and 26.3 s); a–z A–Z, EB Garamond
-// 194, 165 and 159, FreeSerif 14, 12 and 13, Lato 18, 17 and 17.
-constexpr int text_polish_rounds = 2;
-// Units: a flat node's far handle farther off its tangent line than the nudges reach (two
-// units) and half a unit of rounding (HandleStepLimits::flat_node_reach).
-constexpr double text_flat_node_reach = 2.5;
-// Under --continuity g3, what a dκ/ds jump costs in rounding (HandleStepLimits::slope_jump_weight),
-// and on text what a curvature jump the check counts costs on top (counted_jump_cost), ten
-// times that. Text a–z A–Z with the band around the source (HandleStepLimits::band), the median
-// dκ/ds jump at weights 3, 4, 5, 6, 8: DejaVu Sans Bold 0.058, 0.066, 0.062, 0.048, 0.040 (the
-// bar 0.05); Lato 0.038, 0.037, 0.037, 0.035, 0.035; Cantarell 0.039, 0.038, 0.036, 0.034, 0.034,
-// its curvature variation 0.922, 0.937, 0.952, 0.955, 0.935× of the source's (the bar 0.95×).
-constexpr double text_slope_jump_weight = 8.0, handwriting_slope_jump_weight = 5.0;
-constexpr double text_counted_jump_cost = 10.0 * text_slope_jump_weight;
-constexpr int rounding_retries = 3;  // halvings where rounding strayed, then as many of every cubic's
 // Of the tolerance, how far a fillet onto a leaning line's axis may move the outline.
 constexpr double leaning_move_share = 0.25;
-// Units: how far rounding may have moved a node from its float place (fair/jump_splits.hpp).
-constexpr double split_reach = 3.0;
-
-// Points along a contour, dense enough that chords stay within a small fraction of a unit of
-// the curve for glyph-sized curvature, and for each the segment whose stretch of polyline (to
-// the next point) it starts.
-struct ContourSamples {
-  std::vector<Vec2> points;
-  std::vector<std::size_t> segment_of;
-};
-
-ContourSamples contour_samples(const Contour& c) {
-  ContourSamples out;
-  for (std::size_t i = 0; i < c.segments.size(); ++i) {
-    const Segment& s = c.segments[i];
-    if (is_line(s)) {
-      out.points.push_back(start_point(s)), out.segment_of.push_back(i);
-      continue;
-    }
-    const int n = std::clamp(static_cast<int>(control_polygon_length(s) / 3.0), 16, 256);
-    for (int k = 0; k < n; ++k) out.points.push_back(point_at(s, static_cast<double>(k) / n)), out.segment_of.push_back(i);
-  }
-  if (!c.segments.empty()) {
-    out.points.push_back(c.closed ? start_point(c.segments.front()) : end_point(c.segments.back()));
-    out.segment_of.push_back(c.segments.size() - 1);
-  }
-  return out;
-}
 
 // Start where the source starts when that node survived, else at the nearest node.
 void rotate_to_start(std::vector<OutlineNode>& nodes, Vec2 source_start) {
@@ -96,21 +42,6 @@ void rotate_to_start(std::vector<OutlineNode>& nodes, Vec2 source_start) {
   for (std::size_t i = 1; i < nodes.size(); ++i)
     if (distance(nodes[i].point, source_start) < distance(nodes[best].point, source_start)) best = i;
   std::rotate(nodes.begin(), nodes.begin() + static_cast<std::ptrdiff_t>(best), nodes.end());
-}
-
-// A contour's samples, bucketed for distances to it.
-struct SampledContour {
-  ContourSamples samples;
-  PolylineGrid grid;
-  explicit SampledContour(const Contour& c) : samples(contour_samples(c)), grid(samples.points, 8.0) {}
-  const std::vector<Vec2>& points() const { return samples.points; }
-};
-
-// Infinite where one of them has no points and the other has (a contour faired to nothing).
-double distance_between(const SampledContour& a, const SampledContour& b) {
-  if (a.points().empty() || b.points().empty())
-    return a.points().size() == b.points().size() ? 0.0 : std::numeric_limits<double>::infinity();
-  return std::max(directed_hausdorff(a.points(), b.grid), directed_hausdorff(b.points(), a.grid));
 }
 
 // What the cubics may spend on G3: what the float outline leaves of the tolerance at each
@@ -126,22 +57,6 @@ double distance_between(const SampledContour& a, const SampledContour& b) {
 constexpr double g3_rounding_reserve = 0.75, g3_reserve_share = 0.4;
 constexpr double g3_node_share = 0.12;
 constexpr double most_nodes_share = 1.3;  // of the source's nodes: the fairing issue's bar
-
-// What the outline leaves of the tolerance at each cubic (its own distance `by_segment`), less
-// `reserve`, with 5 % kept for sampling: what rounding, or the G3 cubics before it, may spend there.
-std::vector<double> tolerance_left(std::span<const double> by_segment, double tolerance_units, double reserve) {
-  std::vector<double> out;
-  for (const double e : by_segment) out.push_back(0.95 * std::max(0.0, tolerance_units - reserve - e));
-  return out;
-}
-
-// The same for the outline `nodes` draws, its distances measured from the source here.
-std::vector<double> tolerance_left_at(const std::vector<OutlineNode>& nodes, bool closed,
-                                      const SampledContour& sampled_source, double tolerance_units, double reserve) {
-  const SampledContour sampled(to_contour(nodes, closed));
-  return tolerance_left(distance_by_piece(sampled.grid, sampled.samples.segment_of, sampled_source.grid),
-                        tolerance_units, reserve);
-}
 
 // --continuity g3: the written cubics made as G3 as their allowances let them (fair/g3_cubics),
 // the nodes they add held within g3_node_share of the cubics, and within the fairing issue's
@@ -205,109 +120,6 @@ struct Tries {
   int freed_nodes = 0;
 };
 
-// The faired `nodes` as a contour and its distance from the source; on the grid
-// (Rounding::integers), rounded where the float outline lies within the tolerance, and what it
-// leaves of the tolerance there is what rounding may spend.
-struct OutlineOnGrid {
-  Contour contour;
-  double deviation = 0.0;
-};
-OutlineOnGrid settle_on_grid(const std::vector<OutlineNode>& nodes, bool closed, const SampledContour& sampled_source,
-                             const FairSettings& settings, const Tries& tries) {
-  Contour faired = to_contour(nodes, closed);
-  const SampledContour sampled(faired);
-  // Each segment's own share: what rounding may still spend there (geom/polyline_distance.hpp).
-  const std::vector<NearestPiece> answers =
-      nearest_pieces(sampled.grid, sampled.samples.segment_of, sampled_source.points());
-  const std::vector<double> by_segment =
-      distance_by_piece(sampled.grid, sampled.samples.segment_of, sampled_source.grid, answers);
-  double d = by_segment.empty() ? distance_between(sampled, sampled_source)
-                                : *std::max_element(by_segment.begin(), by_segment.end());
-  if (settings.rounding == Rounding::integers && d <= settings.tolerance_units) {
-    // What the float outline leaves of the tolerance, segment by segment, is what rounding
-    // may spend on G2 there (5 % kept for sampling).
-    const bool hand = settings.profile == FairProfile::handwriting;
-    const bool g3 = settings.continuity == Continuity::g3;
-    HandleStepLimits limits;
-    limits.flat_curvature = settings.flat_curvature();
-    limits.allowance = 0.95 * (settings.tolerance_units - d);
-    limits.polish_rounds = hand ? handwriting_polish_rounds : g3 ? text_g3_polish_rounds : text_polish_rounds;
-    limits.polish_only_at_jumps = g3 && !hand;
-    limits.inflection_handles = limits.node_turns = hand;
-    limits.flat_node_reach = hand ? 0.0 : text_flat_node_reach;
-    limits.slope_jump_weight = !g3 ? 0.0 : hand ? handwriting_slope_jump_weight : text_slope_jump_weight;
-    limits.counted_jump_cost = g3 && !hand ? text_counted_jump_cost : 0.0;
-    limits.seats_beside_lines = g3;
-    limits.allowance_by_cubic = tolerance_left(by_segment, settings.tolerance_units, 0.0);
-    // Rounding can stray past its allowance where it slides a line's end (line_rounding) and
-    // the handles after it take other whole steps (DejaVu Sans's chi: 4.4 units from the
-    // source at a tolerance of 2.56, and the contour was kept unfaired), or moves a corner
-    // to a grid neighbour past the tolerance (FreeSerif's V, at 1.25): rounded again with
-    // the lines' ends kept within their allowance, then both ways on half the allowance of
-    // the cubics about where it strayed (halve_allowances), up to three times, then of every
-    // cubic, up to three times more. First, cubics may move past their allowance where they
-    // stay within the band around the source (measured exactly: what the sampling leaves is
-    // the 5 % kept), twice (the lines' ends free, then kept within their allowance); where
-    // that strays, as without the band (retried with the band as often, EB Garamond a–z A–Z
-    // had g2-jumps 220 → 204, but its $ a 4-unit cubic folded into a zigzag). Not on
-    // handwriting under G3: there the band let rounding trade curvature extrema inside
-    // cubics for dκ/ds matched at nodes (Because We Learn a–z A–Z, extrema 0.4985× of the
-    // source's without it, 0.5025× with it, over the fairing bar of 0.5×; dkg's g2-jumps
-    // 0.76 % of the joins without it, 0.61 % with it, within 2 %).
-    std::optional<ToleranceBand> band;
-    if (!(hand && g3)) band.emplace(sampled_source.points(), answers, 0.95 * settings.tolerance_units);
-    std::vector<const ToleranceBand*> bands{nullptr};
-    if (band) bands.insert(bands.begin(), &*band);
-    const HandleStepLimits first = limits;
-    for (const ToleranceBand* within : bands) {
-      limits = first;
-      limits.band = within;
-      const int last_retry = within || !tries.halving_allowances ? 1 : 4 * rounding_retries + 1;
-      std::vector<std::size_t> strayed;  // the cubics about where the last rounding strayed
-      for (int retry = 0;; ++retry) {
-        limits.any_grid_neighbour = retry % 2 == 0;
-        if (retry > 0 && limits.any_grid_neighbour)
-          halve_allowances(limits, retry > 2 * rounding_retries ? std::vector<std::size_t>{} : strayed);
-        faired = to_contour(round_to_grid(nodes, closed, limits), closed);
-        const SampledContour sampled_faired(faired);
-        d = distance_between(sampled_faired, sampled_source);
-        if (d <= settings.tolerance_units || retry == last_retry) break;
-        const std::vector<double> by_segment =
-            distance_by_piece(sampled_faired.grid, sampled_faired.samples.segment_of, sampled_source.grid);
-        strayed = cubics_about_strays(by_segment, settings.tolerance_units, limits.allowance_by_cubic.size());
-      }
-      if (d <= settings.tolerance_units) break;
-    }
-  }
-  return {std::move(faired), d};
-}
-
-// Where `rounded`, the rounded outline of `nodes` within the tolerance, keeps a curvature jump,
-// on text under G2 on the grid: the float cubics beside it split in two and rounded again
-// (fair/jump_splits.hpp); that rounding where it leaves fewer faults. a–z A–Z rounded, 44 text
-// fonts: g2-jumps 69 → 34, in 6 % less time (fewer contours left for the refairings). Once,
-// both cubics: a second split where jumps were left, 32 for 12 % more time; then the cubic
-// before and the one after alone where both did not mend it, 32 for 14 % more; each of the
-// three kept where it has fewer faults or as many with fewer nodes, 32 for 45 % more.
-std::optional<OutlineOnGrid> rounded_with_splits(const Contour& source, const std::vector<OutlineNode>& nodes,
-                                                 const Contour& rounded, const SampledContour& sampled_source,
-                                                 const FairSettings& settings, const Tries& tries) {
-  if (!settings.split_beside_jumps || settings.rounding != Rounding::integers ||
-      settings.profile != FairProfile::text || settings.continuity != Continuity::g2)
-    return std::nullopt;
-  const std::vector<Vec2> jumps = jumping_joins(rounded, settings.units_per_em);
-  if (jumps.empty()) return std::nullopt;
-  const std::vector<OutlineNode> split =
-      split_cubics_beside(nodes, source.closed, jumps, 2.0 * settings.shortest_rounded_span_units, split_reach);
-  if (split.size() == nodes.size()) return std::nullopt;
-  OutlineOnGrid again = settle_on_grid(split, source.closed, sampled_source, settings, tries);
-  const FaultCounter counter(source, settings.units_per_em);
-  if (again.deviation > settings.tolerance_units ||
-      !fewer_faults(counter.count(again.contour), counter.count(rounded)))
-    return std::nullopt;
-  return again;
-}
-
 // The contour faired on one plan: the budgets halved once when the first try strays, the
 // outline rounded when asked; the runs that fail on their own outlines faired on `basis`.
 // `kinked` gets the corners of the result that turn by less than the kink limit.
@@ -345,10 +157,11 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
     if (round) fillet_leaning_lines(a.nodes, source.closed, sampled_source, settings, available);
     if (settings.continuity == Continuity::g3)
       a.g3_cubics = carry_g3_into_cubics(a.nodes, source.closed, sampled_source, source.node_count(), settings);
-    auto [faired, d] = settle_on_grid(a.nodes, source.closed, sampled_source, settings, tries);
+    auto [faired, d] = settle_on_grid(a.nodes, source.closed, sampled_source, settings, tries.halving_allowances);
     int split_nodes = 0;
     std::optional<OutlineOnGrid> split;
-    if (d <= settings.tolerance_units) split = rounded_with_splits(source, a.nodes, faired, sampled_source, settings, tries);
+    if (d <= settings.tolerance_units)
+      split = rounded_with_splits(source, a.nodes, faired, sampled_source, settings, tries.halving_allowances);
     if (split) {
       split_nodes = static_cast<int>(split->contour.segments.size()) - static_cast<int>(faired.segments.size());
       faired = std::move(split->contour), d = split->deviation;
@@ -527,6 +340,16 @@ constexpr double upright_move_share = 0.5, jog_move_share = 0.5, most_jog_move =
 
 }  // namespace
 
+// The nodes a split adds where rounding left a jump (fair/jump_splits.hpp) are what it costs:
+// Accanthis's c, a fairing leaving rounding 0.75 units drew it with 28 nodes and a jump a split
+// mended, against 23 nodes and a jump before it, and 21 and none at 0.9 of the tolerance after.
+bool replaces_kept_fairing(const ContourFairing& again, const OutlineFaults& again_faults, const ContourFairing& kept,
+                           const OutlineFaults& kept_faults) {
+  const auto nodes = [](const ContourFairing& f) { return static_cast<int>(f.contour.segments.size()); };
+  if (again.split_nodes > 0 && nodes(again) - again.split_nodes > nodes(kept)) return false;
+  return fewer_faults(again_faults, kept_faults);
+}
+
 double contour_distance(const Contour& a, const Contour& b) {
   return distance_between(SampledContour(a), SampledContour(b));
 }
@@ -653,15 +476,8 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& requested
   bool refair = out.faired && first.made <= most_tries_faired_again;
   const bool freed = settings.free_node_curvatures && (!out.faired || first.freed_nodes > 0);
   settings.free_node_curvatures = false;
-  // The nodes a split adds where rounding left a jump (fair/jump_splits.hpp) are what it costs:
-  // a fairing again that mends joins so is kept only where it has no more nodes than the one
-  // kept without them (Accanthis's c: a fairing leaving rounding 0.75 units drew it with 28
-  // nodes and a jump, and a split mended that, against 23 nodes and a jump before it, and 21
-  // and none at 0.9 of the tolerance after it).
   const auto better = [&](const ContourFairing& again, const OutlineFaults& again_faults) {
-    const auto nodes = [](const ContourFairing& f) { return static_cast<int>(f.contour.segments.size()); };
-    if (again.split_nodes > 0 && nodes(again) - again.split_nodes > nodes(out)) return false;
-    return fewer_faults(again_faults, faults);
+    return replaces_kept_fairing(again, again_faults, out, faults);
   };
   if (freed && (!refair || faults.mendable())) {
     Tries fixed_tries;

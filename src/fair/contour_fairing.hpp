@@ -10,6 +10,7 @@
 #include "fair/fair_options.hpp"
 #include "fair/faired_piece.hpp"
 #include "fair/g3_cubics.hpp"
+#include "fair/outline_faults.hpp"
 #include "geom/contour.hpp"
 
 namespace gf {
@@ -36,6 +37,13 @@ struct ContourFairing {
 /// `settings.rounding` as_source resolved on this contour alone (fair_glyph resolves it on
 /// the whole glyph first, so that its contours agree).
 ContourFairing fair_contour(const Contour& source, const FairSettings& settings);
+
+/// Whether a fairing again of a contour, `again` with faults `again_faults`, replaces `kept`
+/// with `kept_faults`: where it has fewer faults (fewer_faults), and, where splits beside the
+/// jumps rounding left mended it (ContourFairing::split_nodes), only where its nodes without
+/// those splits are no more than `kept`'s: the nodes a split adds are what the mend costs.
+bool replaces_kept_fairing(const ContourFairing& again, const OutlineFaults& again_faults, const ContourFairing& kept,
+                           const OutlineFaults& kept_faults);
 
 /// Two-sided Hausdorff distance between two contours, from dense samples of both.
 double contour_distance(const Contour& a, const Contour& b);

@@ -1,0 +1,45 @@
+#include "fair/sampled_contour.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace gf {
+
+ContourSamples contour_samples(const Contour& c) {
+  ContourSamples out;
+  for (std::size_t i = 0; i < c.segments.size(); ++i) {
+    const Segment& s = c.segments[i];
+    if (is_line(s)) {
+      out.points.push_back(start_point(s)), out.segment_of.push_back(i);
+      continue;
+    }
+    const int n = std::clamp(static_cast<int>(control_polygon_length(s) / 3.0), 16, 256);
+    for (int k = 0; k < n; ++k) out.points.push_back(point_at(s, static_cast<double>(k) / n)), out.segment_of.push_back(i);
+  }
+  if (!c.segments.empty()) {
+    out.points.push_back(c.closed ? start_point(c.segments.front()) : end_point(c.segments.back()));
+    out.segment_of.push_back(c.segments.size() - 1);
+  }
+  return out;
+}
+
+double distance_between(const SampledContour& a, const SampledContour& b) {
+  if (a.points().empty() || b.points().empty())
+    return a.points().size() == b.points().size() ? 0.0 : std::numeric_limits<double>::infinity();
+  return std::max(directed_hausdorff(a.points(), b.grid), directed_hausdorff(b.points(), a.grid));
+}
+
+std::vector<double> tolerance_left(std::span<const double> by_segment, double tolerance_units, double reserve) {
+  std::vector<double> out;
+  for (const double e : by_segment) out.push_back(0.95 * std::max(0.0, tolerance_units - reserve - e));
+  return out;
+}
+
+std::vector<double> tolerance_left_at(const std::vector<OutlineNode>& nodes, bool closed,
+                                      const SampledContour& sampled_source, double tolerance_units, double reserve) {
+  const SampledContour sampled(to_contour(nodes, closed));
+  return tolerance_left(distance_by_piece(sampled.grid, sampled.samples.segment_of, sampled_source.grid),
+                        tolerance_units, reserve);
+}
+
+}  // namespace gf
