@@ -38,10 +38,8 @@ constexpr double leaning_move_share = 0.25;
 // Start where the source starts when that node survived, else at the nearest node.
 void rotate_to_start(std::vector<OutlineNode>& nodes, Vec2 source_start) {
   if (nodes.empty()) return;
-  std::size_t best = 0;
-  for (std::size_t i = 1; i < nodes.size(); ++i)
-    if (distance(nodes[i].point, source_start) < distance(nodes[best].point, source_start)) best = i;
-  std::rotate(nodes.begin(), nodes.begin() + static_cast<std::ptrdiff_t>(best), nodes.end());
+  const std::size_t first = nearest_node(nodes, source_start);
+  std::rotate(nodes.begin(), nodes.begin() + static_cast<std::ptrdiff_t>(first), nodes.end());
 }
 
 // What the cubics may spend on G3: what the float outline leaves of the tolerance at each

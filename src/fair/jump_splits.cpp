@@ -13,15 +13,6 @@ namespace {
 constexpr double first_split = 0.25, last_split = 0.75;
 constexpr int longest_split_step = 5;  // |d|² of the directions a split node may run along
 
-// The index of the node nearest `p` within `reach`, if any.
-std::optional<std::size_t> nearest_node(const std::vector<OutlineNode>& nodes, Vec2 p, double reach) {
-  std::optional<std::size_t> best;
-  for (std::size_t i = 0; i < nodes.size(); ++i)
-    if (distance(nodes[i].point, p) <= reach && (!best || distance(nodes[i].point, p) < distance(nodes[*best].point, p)))
-      best = i;
-  return best;
-}
-
 }  // namespace
 
 CubicSplit split_place(const Cubic& c) {
@@ -49,10 +40,11 @@ std::vector<OutlineNode> split_cubics_beside(const std::vector<OutlineNode>& nod
   const auto is_cubic = [&](std::size_t i) {
     return (closed || i + 1 < n) && nodes[i].out_handle && nodes[(i + 1) % n].in_handle;
   };
+  if (n == 0) return nodes;
   for (const Vec2 join : joins) {
-    const std::optional<std::size_t> at = nearest_node(nodes, join, reach);
-    if (!at) continue;
-    for (const std::size_t i : {(*at + n - 1) % n, *at})
+    const std::size_t at = nearest_node(nodes, join);
+    if (distance(nodes[at].point, join) > reach) continue;
+    for (const std::size_t i : {(at + n - 1) % n, at})
       if (is_cubic(i) && distance(nodes[i].point, nodes[(i + 1) % n].point) >= shortest_chord) split[i] = true;
   }
   std::vector<OutlineNode> out;
@@ -61,8 +53,9 @@ std::vector<OutlineNode> split_cubics_beside(const std::vector<OutlineNode>& nod
     out.push_back(nodes[i]);
     if (next_in) out.back().in_handle = next_in, next_in.reset();
     if (!split[i]) continue;
-    const CubicSplit place = split_place(outline_cubic(nodes, i));
-    const auto [before, after] = outline_cubic(nodes, i).split(place.t);
+    const Cubic cubic = outline_cubic(nodes, i);
+    const CubicSplit place = split_place(cubic);
+    const auto [before, after] = cubic.split(place.t);
     out.back().out_handle = before.p[1];
     OutlineNode middle;
     middle.point = after.p[0];

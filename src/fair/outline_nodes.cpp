@@ -63,6 +63,13 @@ Vec2 stepped_handle(Vec2 node, Vec2 d, double sign, Vec2 from, Vec2 handle) {
   return node + d * (sign * std::max(1.0, whole_steps(from, handle, d, sign)));
 }
 
+std::size_t nearest_node(const std::vector<OutlineNode>& nodes, Vec2 p) {
+  std::size_t best = 0;
+  for (std::size_t i = 1; i < nodes.size(); ++i)
+    if (distance(nodes[i].point, p) < distance(nodes[best].point, p)) best = i;
+  return best;
+}
+
 std::vector<Vec2> grid_directions(int longest) {
   std::vector<Vec2> out;
   const int reach = static_cast<int>(std::sqrt(double(longest)));
