@@ -4,6 +4,7 @@
 
 #include "fair/grid_rounding.hpp"
 #include "fair/jump_splits.hpp"
+#include "fair/outline_faults.hpp"
 #include "fair/rounding_retry.hpp"
 #include "geom/tolerance_band.hpp"
 

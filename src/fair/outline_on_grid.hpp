@@ -8,7 +8,6 @@
 #include <vector>
 
 #include "fair/fair_options.hpp"
-#include "fair/outline_faults.hpp"
 #include "fair/outline_nodes.hpp"
 #include "fair/sampled_contour.hpp"
 
