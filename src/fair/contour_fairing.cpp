@@ -14,6 +14,7 @@
 #include "fair/corner_end_lobes.hpp"
 #include "fair/cubic_writeback.hpp"
 #include "fair/g3_cubics.hpp"
+#include "fair/join_mending.hpp"
 #include "fair/kinked_corners.hpp"
 #include "fair/kink_fillet.hpp"
 #include "fair/leaning_line_ends.hpp"
@@ -450,17 +451,25 @@ constexpr int most_tries_faired_again = 2;
 // (53 → 67 s); with the curvatures free too, no fewer jumps, and 9 s more.
 constexpr std::array<double, 4> other_chain_shares{0.25, 0.6, 0.15, 0.75};
 
-}  // namespace
+// The jumps and kinks the fairings leave, mended on the grid (fair/join_mending), kept where the
+// contour then has fewer faults.
+void mend_joins(ContourFairing& out, OutlineFaults& faults, const Contour& source, const FaultCounter& counter,
+                const FairSettings& settings) {
+  const SampledContour sampled_source(source);
+  Contour mended = out.contour;
+  if (mend_jumping_joins(mended, sampled_source,
+                         {.tolerance_units = settings.tolerance_units, .units_per_em = settings.units_per_em}) == 0)
+    return;
+  const OutlineFaults mended_faults = counter.count(mended);
+  if (!fewer_faults(mended_faults, faults)) return;
+  out.deviation = std::max(out.deviation, distance_between(SampledContour(mended), sampled_source));
+  out.contour = std::move(mended), faults = mended_faults;
+}
 
-ContourFairing fair_contour(const Contour& source, const FairSettings& requested) {
-  FairSettings settings = requested;
-  settings.rounding = resolve_rounding(requested.rounding, {&source, 1});
-  Tries first;
-  RunFairings memo;  // the runs every fairing below asks for, faired once
-  ContourFairing out = fair_contour_once(source, settings, first, memo);
-  if (settings.profile != FairProfile::text || settings.rounding != Rounding::integers) return out;
-  const FaultCounter counter(source, settings.units_per_em);
-  OutlineFaults faults = out.faired ? counter.count(out.contour) : OutlineFaults{};
+// The fairings again of a contour `out` whose first fairing (`first` its tries, `memo` its
+// runs) left `faults`, each kept where it has fewer (replaces_kept_fairing).
+void fair_again_while_faulty(ContourFairing& out, OutlineFaults& faults, const Contour& source, FairSettings settings,
+                             Tries first, RunFairings& memo, const FaultCounter& counter) {
   // With the nodes' curvatures free the writeback's cubics are fewer and differently long, and
   // the grid matches a join's curvature at some that it missed before and misses others (Comic
   // Neue's V: two kinks where its arms' lines meet the serifs; Accanthis's M, a jump where a
@@ -489,7 +498,7 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& requested
     refair = again_within;
     first = fixed_tries;
   }
-  if (!refair) return out;
+  if (!refair) return;
   // Each fairing again stops at as many tries as the first took, and is kept where it leaves
   // fewer faults (`mending_joins`: and fewer jumps and kinks).
   const auto fair_again = [&](const FairSettings& again_settings, bool mending_joins) {
@@ -518,6 +527,21 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& requested
     again_settings.chain_share = share;
     fair_again(again_settings, true);
   }
+}
+
+}  // namespace
+
+ContourFairing fair_contour(const Contour& source, const FairSettings& requested) {
+  FairSettings settings = requested;
+  settings.rounding = resolve_rounding(requested.rounding, {&source, 1});
+  Tries first;
+  RunFairings memo;  // the runs every fairing below asks for, faired once
+  ContourFairing out = fair_contour_once(source, settings, first, memo);
+  if (settings.profile != FairProfile::text || settings.rounding != Rounding::integers) return out;
+  const FaultCounter counter(source, settings.units_per_em);
+  OutlineFaults faults = out.faired ? counter.count(out.contour) : OutlineFaults{};
+  fair_again_while_faulty(out, faults, source, settings, first, memo, counter);
+  if (out.faired && faults.at_smooth_joins() > 0) mend_joins(out, faults, source, counter, settings);
   return out;
 }
 

@@ -34,20 +34,17 @@ void append_curvature_signs(const Segment& s, double units_per_em, std::vector<i
   }
 }
 
-// What the check makes of a join: a corner, a kink, a smooth join whose curvature jumps (an
-// unbounded side counts), or a smooth join that holds.
-enum class JoinFault { corner, kink, jump, none };
+// What a jump or kink mended may cost in inflections beyond the source's (fewer_faults).
+constexpr int inflections_per_mended_join = 2;
+
+}  // namespace
+
 JoinFault join_fault(const Join& j, const JoinThresholds& thresholds, double units_per_em) {
   if (is_corner(j, thresholds.kink_max_deg)) return JoinFault::corner;
   if (std::abs(j.angle_deg) > thresholds.smooth_max_deg) return JoinFault::kink;
   const std::optional<CurvatureJump> jump = curvature_jump(j, units_per_em);
   return !jump || jump->exceeds() ? JoinFault::jump : JoinFault::none;
 }
-
-// What a jump or kink mended may cost in inflections beyond the source's (fewer_faults).
-constexpr int inflections_per_mended_join = 2;
-
-}  // namespace
 
 int inflections_along(const Contour& c, std::span<const Join> joins, double units_per_em, double kink_max_deg) {
   const std::size_t n = c.segments.size();

@@ -39,6 +39,12 @@ class FaultCounter {
   int source_inflections_ = 0;
 };
 
+/// What the check makes of a join: a corner (turning past `thresholds.kink_max_deg`, or without
+/// a direction), a kink, a smooth join whose curvature jumps (an unbounded side counts), or a
+/// smooth join that holds.
+enum class JoinFault { corner, kink, jump, none };
+JoinFault join_fault(const Join& j, const JoinThresholds& thresholds, double units_per_em);
+
 /// Where `faired` has a smooth join whose curvature jumps as the check counts it (an unbounded
 /// side counts), on an em of `units_per_em`.
 std::vector<Vec2> jumping_joins(const Contour& faired, double units_per_em);

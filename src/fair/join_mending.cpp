@@ -1,0 +1,355 @@
+#include "fair/join_mending.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <optional>
+#include <span>
+#include <variant>
+#include <vector>
+
+#include "fair/cubic_change.hpp"
+#include "fair/node_change.hpp"
+#include "fair/outline_faults.hpp"
+#include "fair/outline_nodes.hpp"
+#include "geom/critical_points.hpp"
+#include "geom/join.hpp"
+
+namespace gf {
+
+namespace {
+
+// κ at the start of a cubic (P0, P1, P2, ·) along travel (lac-math.md §4.1 at t = 0):
+// (2/3)·(P1 − P0) × (P2 − P1) / |P1 − P0|³.
+double start_curvature(Vec2 p0, Vec2 p1, Vec2 p2) {
+  const Vec2 h = p1 - p0;
+  const double l = norm(h);
+  return (2.0 / 3.0) * cross(h, p2 - p1) / (l * l * l);
+}
+
+// κ at the end of a cubic (·, P1, P2, P3) along travel: its reversal's start curvature, negated.
+double end_curvature_of(Vec2 p1, Vec2 p2, Vec2 p3) { return -start_curvature(p3, p2, p1); }
+
+// Whether κ jumps from `in` to `out` as the check counts it (CurvatureJumpRule).
+bool jumps(double in, double out, double units_per_em) {
+  Join j;
+  j.curvature_in = in, j.curvature_out = out;
+  return curvature_jump(j, units_per_em)->exceeds();
+}
+
+// A bound on how far from k a curvature that does not jump against it lies: 5 % of the larger
+// side (so up to 5/95 of k), or 0.05/UPM.
+double match_window(double k, double units_per_em) {
+  const CurvatureJumpRule rule;
+  return 1.001 * std::max(std::abs(k) * rule.relative / (1.0 - rule.relative), rule.absolute_em / units_per_em);
+}
+
+// How many whole steps of `step` units a handle now `now` long may take: one, and up to three
+// times as long and two units, from three tenths as long, short of 0.95 of the cubic's chord.
+std::vector<int> step_counts(double now, double step, double chord) {
+  std::vector<int> out;
+  for (int m = 1; m * step < 0.95 * chord && m * step <= 3.0 * now + 2.0; ++m)
+    if (m == 1 || m * step >= 0.3 * now) out.push_back(m);
+  return out;
+}
+
+// The far end of a cubic beside the join: where its handle there may go (its own place first:
+// whole steps of its node's direction either way where that node is smooth) and, where the
+// join there holds G2, the curvature of the segment beyond, which it must keep holding.
+struct FarEnd {
+  std::vector<Vec2> handles;
+  std::optional<double> beyond;
+};
+
+FarEnd far_end(const Contour& c, const std::vector<Join>& joins, std::size_t node, Vec2 handle, bool out_handle,
+               const JoinMendingLimits& limits) {
+  FarEnd f{{handle}, std::nullopt};
+  const Join& j = joins[node];
+  const JoinFault fault = join_fault(j, {}, limits.units_per_em);
+  if (fault == JoinFault::corner || fault == JoinFault::kink) return f;
+  const Vec2 at = c.node_point(node);
+  if (const std::optional<Vec2> step = primitive_step(handle - at)) {
+    const double now = std::round(norm(handle - at) / norm(*step));
+    for (int s = -limits.far_handle_reach; s <= limits.far_handle_reach; ++s)
+      if (s != 0 && now + s >= 1.0) f.handles.push_back(at + *step * (now + s));
+  }
+  if (fault == JoinFault::none) f.beyond = out_handle ? j.curvature_in : j.curvature_out;
+  return f;
+}
+
+// A change to the contour: control points given new places, and what they move in all.
+struct Edit {
+  std::size_t segment;
+  int point;
+  Vec2 to;
+};
+struct Candidate {
+  double cost = 0.0;
+  std::array<Edit, 8> edits{};
+  int count = 0;
+  void add(std::size_t segment, int point, Vec2 to) { edits[count++] = {segment, point, to}; }
+};
+
+void apply(Contour& c, const Candidate& k) {
+  for (int e = 0; e < k.count; ++e)
+    std::visit([&](auto& b) { b.p[k.edits[e].point] = k.edits[e].to; }, c.segments[k.edits[e].segment]);
+}
+
+// One side of the join, as the search enumerates it: the curvature at the join and the two
+// handles that give it (the near one, the far one).
+struct Side {
+  double kappa;
+  Vec2 near, far;
+};
+
+// Each pair of sides whose curvatures at the join do not jump, passed to `each`.
+template <class Each>
+void for_each_match(const std::vector<Side>& before, std::vector<Side>& after, double units_per_em, Each&& each) {
+  std::sort(after.begin(), after.end(), [](const Side& a, const Side& b) { return a.kappa < b.kappa; });
+  for (const Side& a : before) {
+    const double w = match_window(a.kappa, units_per_em);
+    auto it = std::lower_bound(after.begin(), after.end(), a.kappa - w,
+                               [](const Side& s, double k) { return s.kappa < k; });
+    for (; it != after.end() && it->kappa <= a.kappa + w; ++it)
+      if (!jumps(a.kappa, it->kappa, units_per_em)) each(a, *it);
+  }
+}
+
+// The traits of a cubic a change must not worsen.
+struct CubicTraits {
+  int extrema, inflections;
+  double turning, overreach, variation;
+  bool crowded;
+};
+CubicTraits traits_of(const Cubic& c) {
+  return {inner_axis_extrema(c), static_cast<int>(inflections(c).size()), cubic_turning(c), overreach_length(c),
+          curvature_shape(c, 0.0).variation, crowds_a_node(c)};
+}
+
+// How far a changed cubic may turn beyond its old self (a fold turns half a turn more), and
+// how much more curvature variation it may take on (a spike a comb would show), of the old and
+// of the em.
+constexpr double turning_slack = 0.35, variation_share = 2.0, variation_em = 1.0;
+
+// The cheapest of `found` whose changed cubics (`cubics`, indices into c's segments) gain
+// no extremum, inflection, fold, overreach, crowded handle or spike in total, and that keeps the
+// contour within the tolerance of the source.
+std::optional<Contour> cheapest_within(const Contour& c, std::vector<Candidate>& found,
+                                       std::span<const std::size_t> cubics, const SampledContour& sampled_source,
+                                       const JoinMendingLimits& limits) {
+  const auto by_cost = [](const Candidate& a, const Candidate& b) { return a.cost < b.cost; };
+  if (found.size() > limits.most_judged) {
+    std::nth_element(found.begin(), found.begin() + static_cast<std::ptrdiff_t>(limits.most_judged), found.end(), by_cost);
+    found.resize(limits.most_judged);
+  }
+  std::sort(found.begin(), found.end(), by_cost);
+  CubicTraits old{0, 0, 0.0, 0.0, 0.0, false};
+  for (const std::size_t k : cubics) {
+    const CubicTraits t = traits_of(std::get<Cubic>(c.segments[k]));
+    old.extrema += t.extrema, old.inflections += t.inflections, old.variation += t.variation;
+    old.turning = std::max(old.turning, t.turning), old.overreach = std::max(old.overreach, t.overreach);
+    old.crowded = old.crowded || t.crowded;
+  }
+  for (const Candidate& k : found) {
+    Contour t = c;
+    apply(t, k);
+    CubicTraits now{0, 0, 0.0, 0.0, 0.0, false};
+    bool folds = false;
+    for (const std::size_t s : cubics) {
+      const CubicTraits q = traits_of(std::get<Cubic>(t.segments[s]));
+      now.extrema += q.extrema, now.inflections += q.inflections, now.variation += q.variation;
+      folds = folds || q.turning > old.turning + turning_slack || q.overreach > old.overreach || (q.crowded && !old.crowded);
+    }
+    if (folds || now.extrema > old.extrema || now.inflections > old.inflections) continue;
+    if (now.variation > variation_share * old.variation + variation_em / limits.units_per_em) continue;
+    if (distance_between(SampledContour(t), sampled_source) <= limits.tolerance_units) return t;
+  }
+  return std::nullopt;
+}
+
+// Where the found candidates grow past this many, the cheapest most_judged are kept.
+constexpr std::size_t most_found = 50000;
+
+void keep_cheapest(std::vector<Candidate>& found, const JoinMendingLimits& limits) {
+  if (found.size() < most_found) return;
+  std::nth_element(found.begin(), found.begin() + static_cast<std::ptrdiff_t>(limits.most_judged), found.end(),
+                   [](const Candidate& a, const Candidate& b) { return a.cost < b.cost; });
+  found.resize(limits.most_judged);
+}
+
+// The join at node k between cubics A (segment h) and B (segment k): the node a few units
+// either way, its direction within most_turn_rad of its tangent, its handles whole steps of it,
+// and each cubic's far handle whole steps of its own node's direction.
+std::optional<Contour> mend_between_cubics(const Contour& c, const std::vector<Join>& joins, std::size_t k,
+                                           const SampledContour& sampled_source, const JoinMendingLimits& limits) {
+  const std::size_t n = c.segments.size(), h = (k + n - 1) % n;
+  const Cubic& a = std::get<Cubic>(c.segments[h]);
+  const Cubic& b = std::get<Cubic>(c.segments[k]);
+  const double upm = limits.units_per_em;
+  const FarEnd start = far_end(c, joins, h, a.p[1], true, limits);
+  const FarEnd end = far_end(c, joins, (k + 1) % n, b.p[2], false, limits);
+  const Vec2 node = a.p[3];
+  const std::vector<Vec2> directions = directions_near(b.p[1] - a.p[2], limits.most_turn_rad, limits.longest_step);
+  std::vector<Candidate> found;
+  std::vector<Side> before, after;
+  for (int dx = -limits.node_reach; dx <= limits.node_reach; ++dx)
+    for (int dy = -limits.node_reach; dy <= limits.node_reach; ++dy) {
+      const Vec2 at = node + Vec2{double(dx), double(dy)};
+      for (const Vec2 d : directions) {
+        const double step = norm(d);
+        before.clear(), after.clear();
+        for (const int m : step_counts(distance(a.p[2], node), step, distance(a.p[0], at)))
+          for (const Vec2 far : start.handles) {
+            const Vec2 near = at - d * m;
+            if (start.beyond && jumps(*start.beyond, start_curvature(a.p[0], far, near), upm)) continue;
+            before.push_back({end_curvature_of(far, near, at), near, far});
+          }
+        if (before.empty()) continue;
+        for (const int m : step_counts(distance(b.p[1], node), step, distance(at, b.p[3])))
+          for (const Vec2 far : end.handles) {
+            const Vec2 near = at + d * m;
+            if (end.beyond && jumps(end_curvature_of(near, far, b.p[3]), *end.beyond, upm)) continue;
+            after.push_back({start_curvature(at, near, far), near, far});
+          }
+        for_each_match(before, after, upm, [&](const Side& x, const Side& y) {
+          Candidate cand;
+          cand.cost = distance(at, node) + distance(x.near, a.p[2]) + distance(x.far, a.p[1]) +
+                      distance(y.near, b.p[1]) + distance(y.far, b.p[2]);
+          cand.add(h, 1, x.far), cand.add(h, 2, x.near), cand.add(h, 3, at);
+          cand.add(k, 0, at), cand.add(k, 1, y.near), cand.add(k, 2, y.far);
+          found.push_back(cand);
+        });
+        keep_cheapest(found, limits);
+      }
+    }
+  const std::array<std::size_t, 2> cubics{h, k};
+  return cheapest_within(c, found, cubics, sampled_source, limits);
+}
+
+// Where the line's end may go: a few of the line's steps along it either way, and where the
+// line's other end is a corner (its tangent is free to turn) also the grid points near within
+// line_end_offset of the line; each with the line's primitive step from there, no component
+// over longest_line_step.
+std::vector<std::pair<Vec2, Vec2>> line_ends(const Contour& c, const std::vector<Join>& joins, std::size_t line,
+                                             const JoinMendingLimits& limits) {
+  const Line& l = std::get<Line>(c.segments[line]);
+  const Vec2 from = l.p[0], to = l.p[1];
+  std::vector<std::pair<Vec2, Vec2>> out;
+  const std::optional<Vec2> along = primitive_step(to - from);
+  if (!along) return out;
+  const auto offer = [&](Vec2 end) {
+    const std::optional<Vec2> d = primitive_step(end - from);
+    if (d && std::max(std::abs(d->x), std::abs(d->y)) <= limits.longest_line_step) out.push_back({end, *d});
+  };
+  for (int s = -limits.line_slide_steps; s <= limits.line_slide_steps; ++s) offer(to + *along * s);
+  if (join_fault(joins[line], {}, limits.units_per_em) != JoinFault::corner) return out;
+  for (int dx = -limits.line_end_reach; dx <= limits.line_end_reach; ++dx)
+    for (int dy = -limits.line_end_reach; dy <= limits.line_end_reach; ++dy) {
+      const Vec2 end = to + Vec2{double(dx), double(dy)};
+      const double off = std::abs(cross(*along, end - from)) / norm(*along);
+      if (off > 0.0 && off <= limits.line_end_offset) offer(end);  // those on the line are slides
+    }
+  return out;
+}
+
+// The join at node k where line h meets cubic C (segment k), followed by cubic D (segment
+// j) at smooth node M: the line's end (line_ends), C's near handle whole steps of the line's
+// step along it, M a few units either way with its direction near its tangent and its
+// handles whole steps of it, and D's far handle whole steps of its own node's direction.
+std::optional<Contour> mend_line_join(const Contour& c, const std::vector<Join>& joins, std::size_t k,
+                                      const SampledContour& sampled_source, const JoinMendingLimits& limits) {
+  const std::size_t n = c.segments.size(), h = (k + n - 1) % n, j = (k + 1) % n;
+  const double upm = limits.units_per_em;
+  if (n < 4 || !std::holds_alternative<Cubic>(c.segments[j])) return std::nullopt;
+  const JoinFault at_m = join_fault(joins[j], {}, upm);
+  if (at_m == JoinFault::corner || at_m == JoinFault::kink) return std::nullopt;
+  const Vec2 join = std::get<Line>(c.segments[h]).p[1];
+  const Cubic& cc = std::get<Cubic>(c.segments[k]);
+  const Cubic& dc = std::get<Cubic>(c.segments[j]);
+  const FarEnd end = far_end(c, joins, (j + 1) % n, dc.p[2], false, limits);
+  const Vec2 m = cc.p[3];
+  const std::vector<Vec2> directions = directions_near(dc.p[1] - cc.p[2], limits.most_turn_rad, limits.longest_step);
+  std::vector<Candidate> found;
+  std::vector<Side> before, after;
+  for (const auto& [at, line_step] : line_ends(c, joins, h, limits)) {
+    const double line_step_length = norm(line_step);
+    for (int dx = -limits.far_node_reach; dx <= limits.far_node_reach; ++dx)
+      for (int dy = -limits.far_node_reach; dy <= limits.far_node_reach; ++dy) {
+        const Vec2 mid = m + Vec2{double(dx), double(dy)};
+        const double chord = distance(at, mid);
+        for (const Vec2 d : directions) {
+          const double step = norm(d);
+          before.clear(), after.clear();
+          for (const int s : step_counts(distance(cc.p[1], join), line_step_length, chord))
+            for (const int t : step_counts(distance(cc.p[2], m), step, chord)) {
+              const Vec2 near_line = at + line_step * s, near_mid = mid - d * t;
+              if (jumps(0.0, start_curvature(at, near_line, near_mid), upm)) continue;
+              before.push_back({end_curvature_of(near_line, near_mid, mid), near_mid, near_line});
+            }
+          if (before.empty()) continue;
+          for (const int t : step_counts(distance(dc.p[1], m), step, distance(mid, dc.p[3])))
+            for (const Vec2 far : end.handles) {
+              const Vec2 near = mid + d * t;
+              if (end.beyond && jumps(end_curvature_of(near, far, dc.p[3]), *end.beyond, upm)) continue;
+              after.push_back({start_curvature(mid, near, far), near, far});
+            }
+          for_each_match(before, after, upm, [&](const Side& x, const Side& y) {
+            Candidate cand;
+            cand.cost = distance(at, join) + distance(x.far, cc.p[1]) + distance(x.near, cc.p[2]) + distance(mid, m) +
+                        distance(y.near, dc.p[1]) + distance(y.far, dc.p[2]);
+            cand.add(h, 1, at);
+            cand.add(k, 0, at), cand.add(k, 1, x.far), cand.add(k, 2, x.near), cand.add(k, 3, mid);
+            cand.add(j, 0, mid), cand.add(j, 1, y.near), cand.add(j, 2, y.far);
+            found.push_back(cand);
+          });
+          keep_cheapest(found, limits);
+        }
+      }
+  }
+  const std::array<std::size_t, 2> cubics{k, j};
+  return cheapest_within(c, found, cubics, sampled_source, limits);
+}
+
+// The closed contour walked the other way: its segment i is segment n − 1 − i reversed, and
+// its node i node (n − i) mod n.
+Contour walked_back(const Contour& c) {
+  Contour r = c;
+  const std::size_t n = c.segments.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    r.segments[i] = std::visit([](const auto& b) { return Segment{b.reversed()}; }, c.segments[n - 1 - i]);
+    r.nodes[i] = c.nodes[(n - i) % n];
+  }
+  return r;
+}
+
+}  // namespace
+
+int mend_jumping_joins(Contour& rounded, const SampledContour& sampled_source, const JoinMendingLimits& limits) {
+  const std::size_t n = rounded.segments.size();
+  if (!rounded.closed || n < 3) return 0;
+  int mended = 0;
+  std::vector<Join> joins = joins_of(rounded);
+  for (std::size_t k = 0; k < n; ++k) {
+    const JoinFault fault = join_fault(joins[k], {}, limits.units_per_em);
+    if (fault != JoinFault::jump && fault != JoinFault::kink) continue;
+    const Segment& in = rounded.segments[(k + n - 1) % n];
+    const Segment& out = rounded.segments[k];
+    std::optional<Contour> done;
+    if (std::holds_alternative<Cubic>(in) && std::holds_alternative<Cubic>(out)) {
+      done = mend_between_cubics(rounded, joins, k, sampled_source, limits);
+    } else if (std::holds_alternative<Line>(in) && std::holds_alternative<Cubic>(out)) {
+      done = mend_line_join(rounded, joins, k, sampled_source, limits);
+    } else if (std::holds_alternative<Cubic>(in) && std::holds_alternative<Line>(out)) {
+      const Contour back = walked_back(rounded);
+      if (std::optional<Contour> mended_back = mend_line_join(back, joins_of(back), (n - k) % n, sampled_source, limits))
+        done = walked_back(*mended_back);
+    }
+    if (!done) continue;
+    rounded.segments = std::move(done->segments);
+    joins = joins_of(rounded);
+    ++mended;
+  }
+  return mended;
+}
+
+}  // namespace gf

@@ -1,0 +1,116 @@
+// The last pass over a rounded text contour (fair/join_mending): each join the check counts as
+// a curvature jump searched for on the grid, judged by the check's own rule (CurvatureJumpRule),
+// G1 exact on whole units, and the two-sided distance from the source.
+#include "fair/join_mending.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "fair/outline_faults.hpp"
+#include "geom/join.hpp"
+
+namespace gf {
+namespace {
+
+constexpr double upm = 1000.0;
+
+Contour closed(std::vector<Segment> segments) {
+  Contour c;
+  c.nodes.assign(segments.size(), NodeFlags{});
+  c.segments = std::move(segments);
+  return c;
+}
+
+Cubic cubic(Vec2 a, Vec2 b, Vec2 c, Vec2 d) { return Cubic{a, b, c, d}; }
+Line line(Vec2 a, Vec2 b) { return Line{a, b}; }
+
+// Noto Serif's W (1,000 units to the em) as the fairing rounded it at stop 93: its left leg, a
+// line of step (−8, 27), meets the curve to the cap serif with κ·UPM 0.149 on the curve's side.
+Contour noto_serif_w() {
+  return closed({cubic({133, 486}, {125, 513}, {94, 617}, {86, 637}), cubic({86, 637}, {82, 647}, {75, 658}, {61, 665}),
+                 cubic({61, 665}, {47, 672}, {32, 672}, {22, 672}), line({22, 672}, {9, 672}), line({9, 672}, {9, 714}),
+                 line({9, 714}, {284, 714}), line({284, 714}, {284, 672}), line({284, 672}, {261, 672}),
+                 cubic({261, 672}, {247, 672}, {219, 672}, {206, 646}), cubic({206, 646}, {203, 640}, {201, 633}, {201, 626}),
+                 cubic({201, 626}, {201, 616}, {205, 602}, {209, 588}), line({209, 588}, {301, 266}),
+                 cubic({301, 266}, {309, 238}, {325, 182}, {344, 98}), cubic({344, 98}, {371, 223}, {371, 223}, {386, 278}),
+                 line({386, 278}, {503, 707}), line({503, 707}, {577, 707}), line({577, 707}, {693, 301}),
+                 cubic({693, 301}, {711, 238}, {727, 182}, {744, 98}), cubic({744, 98}, {756, 156}, {768, 201}, {772, 216}),
+                 cubic({772, 216}, {788, 276}, {788, 276}, {802, 325}), line({802, 325}, {878, 591}),
+                 cubic({878, 591}, {880, 598}, {884, 612}, {884, 624}), cubic({884, 624}, {884, 644}, {873, 657}, {859, 664}),
+                 cubic({859, 664}, {843, 672}, {823, 672}, {817, 672}), line({817, 672}, {794, 672}),
+                 line({794, 672}, {794, 714}), line({794, 714}, {1038, 714}), line({1038, 714}, {1038, 672}),
+                 line({1038, 672}, {1019, 672}), cubic({1019, 672}, {1003, 672}, {988, 672}, {971, 655}),
+                 cubic({971, 655}, {956, 640}, {951, 623}, {929, 546}), line({929, 546}, {773, 0}), line({773, 0}, {684, 0}),
+                 line({684, 0}, {521, 560}), line({521, 560}, {368, 0}), line({368, 0}, {277, 0}),
+                 line({277, 0}, {133, 486})});
+}
+
+// A circle of radius 200 about the origin as four cubics, each handle `handle` long but the
+// first cubic's first, `first`: equal handles give every node the same curvature.
+Contour circle(double first, double handle = 110.0) {
+  return closed({cubic({200, 0}, {200, first}, {handle, 200}, {0, 200}), cubic({0, 200}, {-handle, 200}, {-200, handle}, {-200, 0}),
+                 cubic({-200, 0}, {-200, -handle}, {-handle, -200}, {0, -200}),
+                 cubic({0, -200}, {handle, -200}, {200, -handle}, {200, 0})});
+}
+
+bool all_on_grid(const Contour& c) {
+  bool on = true;
+  for (const Segment& s : c.segments)
+    for_each_point(s, [&](Vec2 p) { on = on && p.x == std::round(p.x) && p.y == std::round(p.y); });
+  return on;
+}
+
+JoinMendingLimits limits_for(double tolerance) { return {.tolerance_units = tolerance, .units_per_em = upm}; }
+
+TEST(JoinMending, ACurveLeavingASlantedLegWithAJumpIsMendedOnTheGridWithinTheTolerance) {
+  const Contour source = noto_serif_w();
+  const FaultCounter counter(source, upm);
+  ASSERT_EQ(counter.count(source).jumps, 1);
+  Contour mended = source;
+  EXPECT_EQ(mend_jumping_joins(mended, SampledContour(source), limits_for(1.25)), 1);
+  const OutlineFaults after = counter.count(mended);
+  EXPECT_EQ(after.jumps, 0);
+  EXPECT_EQ(after.kinks, 0);
+  EXPECT_EQ(after.inflections, 0);
+  EXPECT_EQ(after.corners_lost, 0);
+  // The join stays where the leg ends, the curve's handle exactly on the leg's line.
+  const Cubic& curve = std::get<Cubic>(mended.segments[0]);
+  const Line& leg = std::get<Line>(mended.segments.back());
+  EXPECT_EQ(cross(leg.p[1] - leg.p[0], curve.p[1] - curve.p[0]), 0.0);
+  EXPECT_GT(dot(leg.p[1] - leg.p[0], curve.p[1] - curve.p[0]), 0.0);
+  EXPECT_TRUE(all_on_grid(mended));
+  EXPECT_EQ(mended.segments.size(), source.segments.size());
+  EXPECT_LE(distance_between(SampledContour(mended), SampledContour(source)), 1.25);
+}
+
+TEST(JoinMending, AJumpBetweenTwoCubicsIsMended) {
+  const Contour source = circle(110.0);
+  const FaultCounter counter(source, upm);
+  ASSERT_EQ(counter.count(source).jumps, 0);
+  // One handle ten units short: κ·UPM 6.0 against 5.0 at (200, 0), and the cubic's far end
+  // bends differently from the next cubic too.
+  Contour mended = circle(100.0);
+  ASSERT_EQ(counter.count(mended).jumps, 2);
+  EXPECT_GE(mend_jumping_joins(mended, SampledContour(source), limits_for(1.25)), 1);
+  EXPECT_EQ(counter.count(mended).jumps, 0);
+  EXPECT_EQ(counter.count(mended).kinks, 0);
+  EXPECT_TRUE(all_on_grid(mended));
+  EXPECT_LE(distance_between(SampledContour(mended), SampledContour(source)), 1.25);
+}
+
+TEST(JoinMending, AJoinEveryMendOfWhichStraysPastTheToleranceIsLeftAsItWas) {
+  const Contour source = noto_serif_w();
+  Contour mended = source;
+  // The nearest mend slides the leg's end a step (8, −27) down the leg, the curve's near handle
+  // kept: the curve leaves the leg sooner and as straight, 0.036 units from where it was.
+  EXPECT_EQ(mend_jumping_joins(mended, SampledContour(source), limits_for(0.02)), 0);
+  EXPECT_EQ(mended, source);
+  EXPECT_EQ(mend_jumping_joins(mended, SampledContour(source), limits_for(0.05)), 1);
+  EXPECT_EQ(std::get<Line>(mended.segments.back()).p[1], (Vec2{141, 459}));
+  EXPECT_EQ(FaultCounter(source, upm).count(mended).jumps, 0);
+}
+
+}  // namespace
+}  // namespace gf
