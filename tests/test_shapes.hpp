@@ -1,4 +1,4 @@
-// Shapes tests build by hand: a closed polygon of lines, a node of an unrounded outline, a stem
+// Shapes tests build by hand: a closed contour of given segments, a closed polygon of lines, a node of an unrounded outline, a stem
 // with round ends (upright, or leaning as Comic Neue's i stem does), and DejaVu Sans Bold's u;
 // and whether a point a test reads back lies on the integer grid.
 #pragma once
@@ -14,6 +14,14 @@ namespace gf::test {
 
 /// Whether both coordinates of `p` are whole units.
 inline bool on_grid(Vec2 p) { return p.x == std::round(p.x) && p.y == std::round(p.y); }
+
+/// The closed contour of `segments`, in order, no node flagged.
+inline Contour closed(std::vector<Segment> segments) {
+  Contour c;
+  c.nodes.assign(segments.size(), NodeFlags{});
+  c.segments = std::move(segments);
+  return c;
+}
 
 /// The closed contour of lines through `corners`, in order, no node flagged.
 inline Contour polygon(const std::vector<Vec2>& corners) {

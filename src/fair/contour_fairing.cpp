@@ -343,9 +343,12 @@ constexpr double upright_move_share = 0.5, jog_move_share = 0.5, most_jog_move =
 // Accanthis's c, a fairing leaving rounding 0.75 units drew it with 28 nodes and a jump a split
 // mended, against 23 nodes and a jump before it, and 21 and none at 0.9 of the tolerance after.
 bool replaces_kept_fairing(const ContourFairing& again, const OutlineFaults& again_faults, const ContourFairing& kept,
-                           const OutlineFaults& kept_faults) {
+                           const OutlineFaults& kept_faults, std::size_t source_nodes) {
   const auto nodes = [](const ContourFairing& f) { return static_cast<int>(f.contour.segments.size()); };
   if (again.split_nodes > 0 && nodes(again) - again.split_nodes > nodes(kept)) return false;
+  if (again.mended_joins > 0 && nodes(again) > most_nodes_share * static_cast<double>(source_nodes) &&
+      nodes(again) - nodes(kept) > kept_faults.at_smooth_joins() - again_faults.at_smooth_joins())
+    return false;
   return fewer_faults(again_faults, kept_faults);
 }
 
@@ -355,22 +358,23 @@ double contour_distance(const Contour& a, const Contour& b) {
 
 namespace {
 
+// Each side of a contour may move by the tolerance; past half its thickness the two sides
+// could cross and turn it inside out (a brush font's 5-unit speck, faired at 10, came out
+// reversed). So a thin contour is faired, and its joins mended, to half its thickness.
+double contour_tolerance(const Contour& source, const FairSettings& settings) {
+  return source.closed ? std::min(settings.tolerance_units, 0.5 * thickness(source)) : settings.tolerance_units;
+}
+
 // `settings.rounding` resolved on the contour.
 ContourFairing fair_contour_once(const Contour& source, const FairSettings& requested, Tries& tries, RunFairings& memo) {
   FairSettings settings = requested;
   ContourFairing out;
   out.contour = source;
-  // Each side of a contour may move by the tolerance; past half its thickness the two sides
-  // could cross and turn it inside out (a brush font's 5-unit speck, faired at 10, came out
-  // reversed). So a thin contour is faired to half its thickness.
-  if (source.closed) {
-    const double thick = thickness(source);
-    if (thick == 0.0) {
-      out.reason = "it encloses no area";
-      return out;
-    }
-    settings.tolerance_units = std::min(settings.tolerance_units, 0.5 * thick);
+  if (source.closed && thickness(source) == 0.0) {
+    out.reason = "it encloses no area";
+    return out;
   }
+  settings.tolerance_units = contour_tolerance(source, settings);
   // Handwriting's spurs are cut first (fair/spurs.hpp: a scan's overshoot doubled back on
   // itself). On the grid, stem jogs are straightened (fair/stem_jogs.hpp: moves up to half the
   // tolerance) and then nearly upright lines a curve meets stand up (fair/upright_lines.hpp:
@@ -451,25 +455,43 @@ constexpr int most_tries_faired_again = 2;
 // (53 → 67 s); with the curvatures free too, no fewer jumps, and 9 s more.
 constexpr std::array<double, 4> other_chain_shares{0.25, 0.6, 0.15, 0.75};
 
-// The jumps and kinks the fairings leave, mended on the grid (fair/join_mending), kept where the
-// contour then has fewer faults.
-void mend_joins(ContourFairing& out, OutlineFaults& faults, const Contour& source, const FaultCounter& counter,
-                const FairSettings& settings) {
-  const SampledContour sampled_source(source);
-  Contour mended = out.contour;
-  if (mend_jumping_joins(mended, sampled_source,
-                         {.tolerance_units = settings.tolerance_units, .units_per_em = settings.units_per_em}) == 0)
-    return;
-  const OutlineFaults mended_faults = counter.count(mended);
-  if (!fewer_faults(mended_faults, faults)) return;
-  out.deviation = std::max(out.deviation, distance_between(SampledContour(mended), sampled_source));
-  out.contour = std::move(mended), faults = mended_faults;
-}
+// A fairing's faults as the check counts them (fair/outline_faults), the jumps and kinks it
+// leaves first mended on the grid (fair/join_mending) where that leaves fewer: whichever
+// fairing is kept has had its joins searched, and a fairing again whose joins mend can replace
+// one whose joins do not (TeX Gyre Schola's X). The source is sampled at the first mend.
+class MendedFaults {
+ public:
+  MendedFaults(const Contour& source, const FairSettings& settings)
+      : source_(source),
+        counter_(source, settings.units_per_em),
+        limits_{.tolerance_units = contour_tolerance(source, settings), .units_per_em = settings.units_per_em} {}
+
+  OutlineFaults operator()(ContourFairing& fairing) {
+    const OutlineFaults faults = counter_.count(fairing.contour);
+    if (faults.at_smooth_joins() == 0) return faults;
+    if (!sampled_source_) sampled_source_.emplace(source_);
+    Contour mended = fairing.contour;
+    const int joins = mend_jumping_joins(mended, *sampled_source_, limits_);
+    if (joins == 0) return faults;
+    const OutlineFaults mended_faults = counter_.count(mended);
+    if (!fewer_faults(mended_faults, faults)) return faults;
+    fairing.deviation = std::max(fairing.deviation, distance_between(SampledContour(mended), *sampled_source_));
+    fairing.contour = std::move(mended);
+    fairing.mended_joins = joins;
+    return mended_faults;
+  }
+
+ private:
+  const Contour& source_;
+  FaultCounter counter_;
+  JoinMendingLimits limits_;
+  std::optional<SampledContour> sampled_source_;
+};
 
 // The fairings again of a contour `out` whose first fairing (`first` its tries, `memo` its
 // runs) left `faults`, each kept where it has fewer (replaces_kept_fairing).
 void fair_again_while_faulty(ContourFairing& out, OutlineFaults& faults, const Contour& source, FairSettings settings,
-                             Tries first, RunFairings& memo, const FaultCounter& counter) {
+                             Tries first, RunFairings& memo, MendedFaults& count) {
   // With the nodes' curvatures free the writeback's cubics are fewer and differently long, and
   // the grid matches a join's curvature at some that it missed before and misses others (Comic
   // Neue's V: two kinks where its arms' lines meet the serifs; Accanthis's M, a jump where a
@@ -484,14 +506,14 @@ void fair_again_while_faulty(ContourFairing& out, OutlineFaults& faults, const C
   const bool freed = settings.free_node_curvatures && (!out.faired || first.freed_nodes > 0);
   settings.free_node_curvatures = false;
   const auto better = [&](const ContourFairing& again, const OutlineFaults& again_faults) {
-    return replaces_kept_fairing(again, again_faults, out, faults);
+    return replaces_kept_fairing(again, again_faults, out, faults, source.segments.size());
   };
   if (freed && (!refair || faults.mendable())) {
     Tries fixed_tries;
     ContourFairing again = fair_contour_once(source, settings, fixed_tries, memo);
     const bool again_within = again.faired && fixed_tries.made <= most_tries_faired_again;
     if (again.faired) {
-      const OutlineFaults again_faults = counter.count(again.contour);
+      const OutlineFaults again_faults = count(again);
       if (!out.faired || (!refair && again_within) || better(again, again_faults))
         out = std::move(again), faults = again_faults;
     }
@@ -505,7 +527,7 @@ void fair_again_while_faulty(ContourFairing& out, OutlineFaults& faults, const C
     Tries again_tries{0, first.made, false};
     ContourFairing again = fair_contour_once(source, again_settings, again_tries, memo);
     if (!again.faired) return;
-    const OutlineFaults again_faults = counter.count(again.contour);
+    const OutlineFaults again_faults = count(again);
     if (mending_joins && again_faults.at_smooth_joins() >= faults.at_smooth_joins()) return;
     if (better(again, again_faults)) out = std::move(again), faults = again_faults;
   };
@@ -538,10 +560,9 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& requested
   RunFairings memo;  // the runs every fairing below asks for, faired once
   ContourFairing out = fair_contour_once(source, settings, first, memo);
   if (settings.profile != FairProfile::text || settings.rounding != Rounding::integers) return out;
-  const FaultCounter counter(source, settings.units_per_em);
-  OutlineFaults faults = out.faired ? counter.count(out.contour) : OutlineFaults{};
-  fair_again_while_faulty(out, faults, source, settings, first, memo, counter);
-  if (out.faired && faults.at_smooth_joins() > 0) mend_joins(out, faults, source, counter, settings);
+  MendedFaults count(source, settings);
+  OutlineFaults faults = out.faired ? count(out) : OutlineFaults{};
+  fair_again_while_faulty(out, faults, source, settings, first, memo, count);
   return out;
 }
 

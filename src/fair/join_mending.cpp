@@ -31,11 +31,7 @@ double start_curvature(Vec2 p0, Vec2 p1, Vec2 p2) {
 double end_curvature_of(Vec2 p1, Vec2 p2, Vec2 p3) { return -start_curvature(p3, p2, p1); }
 
 // Whether κ jumps from `in` to `out` as the check counts it (CurvatureJumpRule).
-bool jumps(double in, double out, double units_per_em) {
-  Join j;
-  j.curvature_in = in, j.curvature_out = out;
-  return curvature_jump(j, units_per_em)->exceeds();
-}
+bool jumps(double in, double out, double units_per_em) { return curvature_jump(in, out, units_per_em).exceeds(); }
 
 // A bound on how far from k a curvature that does not jump against it lies: 5 % of the larger
 // side (so up to 5/95 of k), or 0.05/UPM.
@@ -46,12 +42,29 @@ double match_window(double k, double units_per_em) {
 
 // How many whole steps of `step` units a handle now `now` long may take: one, and up to three
 // times as long and two units, from three tenths as long, short of 0.95 of the cubic's chord.
-std::vector<int> step_counts(double now, double step, double chord) {
-  std::vector<int> out;
-  for (int m = 1; m * step < 0.95 * chord && m * step <= 3.0 * now + 2.0; ++m)
-    if (m == 1 || m * step >= 0.3 * now) out.push_back(m);
-  return out;
-}
+// A range to walk, made without allocating: the searches below make one for every place tried.
+class StepCounts {
+ public:
+  StepCounts(double now, double step, double chord) {
+    while ((last_ + 1) * step < 0.95 * chord && (last_ + 1) * step <= 3.0 * now + 2.0) ++last_;
+    while (first_long_ <= last_ && first_long_ * step < 0.3 * now) ++first_long_;
+  }
+  struct Iterator {
+    int m, first_long, end;
+    int operator*() const { return m; }
+    Iterator& operator++() {
+      m = m == 1 ? std::min(first_long, end) : m + 1;
+      return *this;
+    }
+    bool operator!=(const Iterator& o) const { return m != o.m; }
+  };
+  Iterator begin() const { return {last_ >= 1 ? 1 : last_ + 1, first_long_, last_ + 1}; }
+  Iterator end() const { return {last_ + 1, first_long_, last_ + 1}; }
+  int last() const { return last_; }
+
+ private:
+  int last_ = 0, first_long_ = 2;
+};
 
 // The far end of a cubic beside the join: where its handle there may go (its own place first:
 // whole steps of its node's direction either way where that node is smooth) and, where the
@@ -95,6 +108,28 @@ void apply(Contour& c, const Candidate& k) {
     std::visit([&](auto& b) { b.p[k.edits[e].point] = k.edits[e].to; }, c.segments[k.edits[e].segment]);
 }
 
+// The cheapest candidates offered, at most `most` of them (a heap with the dearest on top).
+class Cheapest {
+ public:
+  explicit Cheapest(std::size_t most) : most_(most) {}
+  void offer(const Candidate& k) {
+    if (kept_.size() == most_ && k.cost >= kept_.front().cost) return;
+    kept_.push_back(k);
+    std::push_heap(kept_.begin(), kept_.end(), by_cost);
+    if (kept_.size() > most_) std::pop_heap(kept_.begin(), kept_.end(), by_cost), kept_.pop_back();
+  }
+  /// Cheapest first.
+  std::vector<Candidate> sorted() && {
+    std::sort_heap(kept_.begin(), kept_.end(), by_cost);
+    return std::move(kept_);
+  }
+
+ private:
+  static bool by_cost(const Candidate& a, const Candidate& b) { return a.cost < b.cost; }
+  std::size_t most_;
+  std::vector<Candidate> kept_;
+};
+
 // One side of the join, as the search enumerates it: the curvature at the join and the two
 // handles that give it (the near one, the far one).
 struct Side {
@@ -113,6 +148,18 @@ void for_each_match(const std::vector<Side>& before, std::vector<Side>& after, d
     for (; it != after.end() && it->kappa <= a.kappa + w; ++it)
       if (!jumps(a.kappa, it->kappa, units_per_em)) each(a, *it);
   }
+}
+
+// The sides leaving `at` along d: the cubic to `to` with its near handle `steps` whole steps of
+// d long and its far handle one of `end`'s, each keeping the join at `to` as it held.
+void leaving_sides(Vec2 at, Vec2 d, const StepCounts& steps, Vec2 to, const FarEnd& end, double units_per_em,
+                   std::vector<Side>& out) {
+  for (const int m : steps)
+    for (const Vec2 far : end.handles) {
+      const Vec2 near = at + d * m;
+      if (end.beyond && jumps(end_curvature_of(near, far, to), *end.beyond, units_per_em)) continue;
+      out.push_back({start_curvature(at, near, far), near, far});
+    }
 }
 
 // The traits of a cubic a change must not worsen.
@@ -134,15 +181,8 @@ constexpr double turning_slack = 0.35, variation_share = 2.0, variation_em = 1.0
 // The cheapest of `found` whose changed cubics (`cubics`, indices into c's segments) gain
 // no extremum, inflection, fold, overreach, crowded handle or spike in total, and that keeps the
 // contour within the tolerance of the source.
-std::optional<Contour> cheapest_within(const Contour& c, std::vector<Candidate>& found,
-                                       std::span<const std::size_t> cubics, const SampledContour& sampled_source,
-                                       const JoinMendingLimits& limits) {
-  const auto by_cost = [](const Candidate& a, const Candidate& b) { return a.cost < b.cost; };
-  if (found.size() > limits.most_judged) {
-    std::nth_element(found.begin(), found.begin() + static_cast<std::ptrdiff_t>(limits.most_judged), found.end(), by_cost);
-    found.resize(limits.most_judged);
-  }
-  std::sort(found.begin(), found.end(), by_cost);
+std::optional<Contour> cheapest_within(const Contour& c, Cheapest&& found, std::span<const std::size_t> cubics,
+                                       const SampledContour& sampled_source, const JoinMendingLimits& limits) {
   CubicTraits old{0, 0, 0.0, 0.0, 0.0, false};
   for (const std::size_t k : cubics) {
     const CubicTraits t = traits_of(std::get<Cubic>(c.segments[k]));
@@ -150,7 +190,7 @@ std::optional<Contour> cheapest_within(const Contour& c, std::vector<Candidate>&
     old.turning = std::max(old.turning, t.turning), old.overreach = std::max(old.overreach, t.overreach);
     old.crowded = old.crowded || t.crowded;
   }
-  for (const Candidate& k : found) {
+  for (const Candidate& k : std::move(found).sorted()) {
     Contour t = c;
     apply(t, k);
     CubicTraits now{0, 0, 0.0, 0.0, 0.0, false};
@@ -167,16 +207,6 @@ std::optional<Contour> cheapest_within(const Contour& c, std::vector<Candidate>&
   return std::nullopt;
 }
 
-// Where the found candidates grow past this many, the cheapest most_judged are kept.
-constexpr std::size_t most_found = 50000;
-
-void keep_cheapest(std::vector<Candidate>& found, const JoinMendingLimits& limits) {
-  if (found.size() < most_found) return;
-  std::nth_element(found.begin(), found.begin() + static_cast<std::ptrdiff_t>(limits.most_judged), found.end(),
-                   [](const Candidate& a, const Candidate& b) { return a.cost < b.cost; });
-  found.resize(limits.most_judged);
-}
-
 // The join at node k between cubics A (segment h) and B (segment k): the node a few units
 // either way, its direction within most_turn_rad of its tangent, its handles whole steps of it,
 // and each cubic's far handle whole steps of its own node's direction.
@@ -190,7 +220,7 @@ std::optional<Contour> mend_between_cubics(const Contour& c, const std::vector<J
   const FarEnd end = far_end(c, joins, (k + 1) % n, b.p[2], false, limits);
   const Vec2 node = a.p[3];
   const std::vector<Vec2> directions = directions_near(b.p[1] - a.p[2], limits.most_turn_rad, limits.longest_step);
-  std::vector<Candidate> found;
+  Cheapest found(limits.most_judged);
   std::vector<Side> before, after;
   for (int dx = -limits.node_reach; dx <= limits.node_reach; ++dx)
     for (int dy = -limits.node_reach; dy <= limits.node_reach; ++dy) {
@@ -198,32 +228,26 @@ std::optional<Contour> mend_between_cubics(const Contour& c, const std::vector<J
       for (const Vec2 d : directions) {
         const double step = norm(d);
         before.clear(), after.clear();
-        for (const int m : step_counts(distance(a.p[2], node), step, distance(a.p[0], at)))
+        for (const int m : StepCounts(distance(a.p[2], node), step, distance(a.p[0], at)))
           for (const Vec2 far : start.handles) {
             const Vec2 near = at - d * m;
             if (start.beyond && jumps(*start.beyond, start_curvature(a.p[0], far, near), upm)) continue;
             before.push_back({end_curvature_of(far, near, at), near, far});
           }
         if (before.empty()) continue;
-        for (const int m : step_counts(distance(b.p[1], node), step, distance(at, b.p[3])))
-          for (const Vec2 far : end.handles) {
-            const Vec2 near = at + d * m;
-            if (end.beyond && jumps(end_curvature_of(near, far, b.p[3]), *end.beyond, upm)) continue;
-            after.push_back({start_curvature(at, near, far), near, far});
-          }
+        leaving_sides(at, d, StepCounts(distance(b.p[1], node), step, distance(at, b.p[3])), b.p[3], end, upm, after);
         for_each_match(before, after, upm, [&](const Side& x, const Side& y) {
           Candidate cand;
           cand.cost = distance(at, node) + distance(x.near, a.p[2]) + distance(x.far, a.p[1]) +
                       distance(y.near, b.p[1]) + distance(y.far, b.p[2]);
           cand.add(h, 1, x.far), cand.add(h, 2, x.near), cand.add(h, 3, at);
           cand.add(k, 0, at), cand.add(k, 1, y.near), cand.add(k, 2, y.far);
-          found.push_back(cand);
+          found.offer(cand);
         });
-        keep_cheapest(found, limits);
       }
     }
   const std::array<std::size_t, 2> cubics{h, k};
-  return cheapest_within(c, found, cubics, sampled_source, limits);
+  return cheapest_within(c, std::move(found), cubics, sampled_source, limits);
 }
 
 // Where the line's end may go: a few of the line's steps along it either way, and where the
@@ -269,7 +293,7 @@ std::optional<Contour> mend_line_join(const Contour& c, const std::vector<Join>&
   const FarEnd end = far_end(c, joins, (j + 1) % n, dc.p[2], false, limits);
   const Vec2 m = cc.p[3];
   const std::vector<Vec2> directions = directions_near(dc.p[1] - cc.p[2], limits.most_turn_rad, limits.longest_step);
-  std::vector<Candidate> found;
+  Cheapest found(limits.most_judged);
   std::vector<Side> before, after;
   for (const auto& [at, line_step] : line_ends(c, joins, h, limits)) {
     const double line_step_length = norm(line_step);
@@ -277,22 +301,26 @@ std::optional<Contour> mend_line_join(const Contour& c, const std::vector<Join>&
       for (int dy = -limits.far_node_reach; dy <= limits.far_node_reach; ++dy) {
         const Vec2 mid = m + Vec2{double(dx), double(dy)};
         const double chord = distance(at, mid);
+        const StepCounts line_steps(distance(cc.p[1], join), line_step_length, chord);
+        // κ at the join, C's near handle s steps L along the line, is (2/3)·L × (C2 − N) / (s²|L|³)
+        // (start_curvature): flat enough only where the far handle C2 lies this near the line.
+        const double longest = line_steps.last();
+        const double reach = 1.5 * CurvatureJumpRule{}.absolute_em / upm * longest * longest * std::pow(line_step_length, 3);
+        const double off_line = cross(line_step, mid - at);
         for (const Vec2 d : directions) {
-          const double step = norm(d);
+          const double step = norm(d), across = cross(line_step, d);
           before.clear(), after.clear();
-          for (const int s : step_counts(distance(cc.p[1], join), line_step_length, chord))
-            for (const int t : step_counts(distance(cc.p[2], m), step, chord)) {
-              const Vec2 near_line = at + line_step * s, near_mid = mid - d * t;
+          for (const int t : StepCounts(distance(cc.p[2], m), step, chord)) {
+            if (std::abs(off_line - t * across) > reach) continue;
+            const Vec2 near_mid = mid - d * t;
+            for (const int s : line_steps) {
+              const Vec2 near_line = at + line_step * s;
               if (jumps(0.0, start_curvature(at, near_line, near_mid), upm)) continue;
               before.push_back({end_curvature_of(near_line, near_mid, mid), near_mid, near_line});
             }
+          }
           if (before.empty()) continue;
-          for (const int t : step_counts(distance(dc.p[1], m), step, distance(mid, dc.p[3])))
-            for (const Vec2 far : end.handles) {
-              const Vec2 near = mid + d * t;
-              if (end.beyond && jumps(end_curvature_of(near, far, dc.p[3]), *end.beyond, upm)) continue;
-              after.push_back({start_curvature(mid, near, far), near, far});
-            }
+          leaving_sides(mid, d, StepCounts(distance(dc.p[1], m), step, distance(mid, dc.p[3])), dc.p[3], end, upm, after);
           for_each_match(before, after, upm, [&](const Side& x, const Side& y) {
             Candidate cand;
             cand.cost = distance(at, join) + distance(x.far, cc.p[1]) + distance(x.near, cc.p[2]) + distance(mid, m) +
@@ -300,14 +328,13 @@ std::optional<Contour> mend_line_join(const Contour& c, const std::vector<Join>&
             cand.add(h, 1, at);
             cand.add(k, 0, at), cand.add(k, 1, x.far), cand.add(k, 2, x.near), cand.add(k, 3, mid);
             cand.add(j, 0, mid), cand.add(j, 1, y.near), cand.add(j, 2, y.far);
-            found.push_back(cand);
+            found.offer(cand);
           });
-          keep_cheapest(found, limits);
         }
       }
   }
   const std::array<std::size_t, 2> cubics{k, j};
-  return cheapest_within(c, found, cubics, sampled_source, limits);
+  return cheapest_within(c, std::move(found), cubics, sampled_source, limits);
 }
 
 // The closed contour walked the other way: its segment i is segment n − 1 − i reversed, and

@@ -48,12 +48,15 @@ std::vector<Join> joins_of(const Contour& c, const JoinThresholds& thresholds) {
   return joins;
 }
 
+CurvatureJump curvature_jump(double in, double out, double units_per_em, const CurvatureJumpRule& rule) {
+  const double jump = std::abs(in - out), larger = std::max(std::abs(in), std::abs(out));
+  if (larger * units_per_em >= rule.large_em) return {jump / larger, true, rule.relative};
+  return {jump * units_per_em, false, rule.absolute_em};
+}
+
 std::optional<CurvatureJump> curvature_jump(const Join& j, double units_per_em, const CurvatureJumpRule& rule) {
   if (!j.curvature_in || !j.curvature_out) return std::nullopt;
-  const double jump = std::abs(*j.curvature_in - *j.curvature_out);
-  const double larger = std::max(std::abs(*j.curvature_in), std::abs(*j.curvature_out));
-  if (larger * units_per_em >= rule.large_em) return CurvatureJump{jump / larger, true, rule.relative};
-  return CurvatureJump{jump * units_per_em, false, rule.absolute_em};
+  return curvature_jump(*j.curvature_in, *j.curvature_out, units_per_em, rule);
 }
 
 const char* to_string(JoinKind kind) {

@@ -47,6 +47,9 @@ struct CurvatureJump {
   bool exceeds() const { return value > limit; }
 };
 
+/// The jump from curvature `in` to `out`.
+CurvatureJump curvature_jump(double in, double out, double units_per_em, const CurvatureJumpRule& rule = {});
+
 /// None where a side of `j` has no curvature (a retracted handle: unbounded).
 std::optional<CurvatureJump> curvature_jump(const Join& j, double units_per_em, const CurvatureJumpRule& rule = {});
 

@@ -8,6 +8,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "test_shapes.hpp"
+
 namespace gf {
 namespace {
 
@@ -18,12 +20,7 @@ FontInfo font(bool truetype = false) {
   return f;
 }
 
-Contour closed(std::vector<Segment> segments) {
-  Contour c;
-  c.nodes.assign(segments.size(), NodeFlags{});
-  c.segments = std::move(segments);
-  return c;
-}
+using test::closed;
 
 // A counter-clockwise square (a PostScript outer contour).
 Contour square(double x0 = 0, double y0 = 0, double size = 400) {

@@ -10,18 +10,14 @@
 
 #include "fair/outline_faults.hpp"
 #include "geom/join.hpp"
+#include "test_shapes.hpp"
 
 namespace gf {
 namespace {
 
 constexpr double upm = 1000.0;
 
-Contour closed(std::vector<Segment> segments) {
-  Contour c;
-  c.nodes.assign(segments.size(), NodeFlags{});
-  c.segments = std::move(segments);
-  return c;
-}
+using test::closed;
 
 Cubic cubic(Vec2 a, Vec2 b, Vec2 c, Vec2 d) { return Cubic{a, b, c, d}; }
 Line line(Vec2 a, Vec2 b) { return Line{a, b}; }
@@ -57,8 +53,7 @@ Contour circle(double first, double handle = 110.0) {
 
 bool all_on_grid(const Contour& c) {
   bool on = true;
-  for (const Segment& s : c.segments)
-    for_each_point(s, [&](Vec2 p) { on = on && p.x == std::round(p.x) && p.y == std::round(p.y); });
+  for (const Segment& s : c.segments) for_each_point(s, [&](Vec2 p) { on = on && test::on_grid(p); });
   return on;
 }
 

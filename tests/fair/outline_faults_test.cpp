@@ -10,18 +10,14 @@
 
 #include "geom/critical_points.hpp"
 #include "geom/join.hpp"
+#include "test_shapes.hpp"
 
 namespace gf {
 namespace {
 
 constexpr double upm = 1000.0;
 
-Contour closed(std::vector<Segment> segments) {
-  Contour c;
-  c.nodes.assign(segments.size(), NodeFlags{});
-  c.segments = std::move(segments);
-  return c;
-}
+using test::closed;
 
 const Contour square = closed({Line{{{0, 0}, {100, 0}}}, Line{{{100, 0}, {100, 100}}}, Line{{{100, 100}, {0, 100}}},
                                Line{{{0, 100}, {0, 0}}}});

@@ -5,15 +5,12 @@
 #include <cmath>
 #include <optional>
 
+#include "test_shapes.hpp"
+
 namespace gf {
 namespace {
 
-Contour closed(std::vector<Segment> segments) {
-  Contour c;
-  c.nodes.assign(segments.size(), NodeFlags{});
-  c.segments = std::move(segments);
-  return c;
-}
+using test::closed;
 
 TEST(Join, SquareHasFourLeftCorners) {
   const auto joins = joins_of(closed({Line{{{0, 0}, {1, 0}}}, Line{{{1, 0}, {1, 1}}}, Line{{{1, 1}, {0, 1}}},
