@@ -360,9 +360,13 @@ namespace {
 
 // Each side of a contour may move by the tolerance; past half its thickness the two sides
 // could cross and turn it inside out (a brush font's 5-unit speck, faired at 10, came out
-// reversed). So a thin contour is faired, and its joins mended, to half its thickness.
-double contour_tolerance(const Contour& source, const FairSettings& settings) {
-  return source.closed ? std::min(settings.tolerance_units, 0.5 * thickness(source)) : settings.tolerance_units;
+// reversed). So a thin contour is faired, and its joins mended, to half its thickness; a
+// closed one that encloses no area, not at all (none).
+std::optional<double> contour_tolerance(const Contour& source, const FairSettings& settings) {
+  if (!source.closed) return settings.tolerance_units;
+  const double thick = thickness(source);
+  if (thick == 0.0) return std::nullopt;
+  return std::min(settings.tolerance_units, 0.5 * thick);
 }
 
 // `settings.rounding` resolved on the contour.
@@ -370,11 +374,12 @@ ContourFairing fair_contour_once(const Contour& source, const FairSettings& requ
   FairSettings settings = requested;
   ContourFairing out;
   out.contour = source;
-  if (source.closed && thickness(source) == 0.0) {
+  const std::optional<double> tolerance = contour_tolerance(source, settings);
+  if (!tolerance) {
     out.reason = "it encloses no area";
     return out;
   }
-  settings.tolerance_units = contour_tolerance(source, settings);
+  settings.tolerance_units = *tolerance;
   // Handwriting's spurs are cut first (fair/spurs.hpp: a scan's overshoot doubled back on
   // itself). On the grid, stem jogs are straightened (fair/stem_jogs.hpp: moves up to half the
   // tolerance) and then nearly upright lines a curve meets stand up (fair/upright_lines.hpp:
@@ -464,7 +469,8 @@ class MendedFaults {
   MendedFaults(const Contour& source, const FairSettings& settings)
       : source_(source),
         counter_(source, settings.units_per_em),
-        limits_{.tolerance_units = contour_tolerance(source, settings), .units_per_em = settings.units_per_em} {}
+        limits_{.tolerance_units = contour_tolerance(source, settings).value_or(0.0),  // none: never faired
+                .units_per_em = settings.units_per_em} {}
 
   OutlineFaults operator()(ContourFairing& fairing) {
     const OutlineFaults faults = counter_.count(fairing.contour);
