@@ -68,7 +68,8 @@ class StepCounts {
 
 // The far end of a cubic beside the join: where its handle there may go (its own place first:
 // whole steps of its node's direction either way where that node is smooth) and, where the
-// join there holds G2, the curvature of the segment beyond, which it must keep holding.
+// join there holds G2 and the handle is off its node, the curvature of the segment beyond,
+// which it must keep holding.
 struct FarEnd {
   std::vector<Vec2> handles;
   std::optional<double> beyond;
@@ -86,7 +87,9 @@ FarEnd far_end(const Contour& c, const std::vector<Join>& joins, std::size_t nod
     for (int s = -limits.far_handle_reach; s <= limits.far_handle_reach; ++s)
       if (s != 0 && now + s >= 1.0) f.handles.push_back(at + *step * (now + s));
   }
-  if (fault == JoinFault::none) f.beyond = out_handle ? j.curvature_in : j.curvature_out;
+  // A handle on its node (retracted) leaves the cubic no curvature there to keep: the closed
+  // form of start_curvature divides by its length.
+  if (fault == JoinFault::none && handle != at) f.beyond = out_handle ? j.curvature_in : j.curvature_out;
   return f;
 }
 
