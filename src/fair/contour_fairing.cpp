@@ -22,6 +22,7 @@
 #include "fair/outline_on_grid.hpp"
 #include "fair/plan_fairing.hpp"
 #include "fair/run_fairing.hpp"
+#include "fair/spare_nodes.hpp"
 #include "fair/spurs.hpp"
 #include "fair/stem_jogs.hpp"
 #include "fair/tight_turn.hpp"
@@ -117,6 +118,8 @@ struct Tries {
   bool halving_allowances = true;
   /// Nodes whose curvature the tries' writebacks moved off the faired path's (ChainCubics::freed_nodes).
   int freed_nodes = 0;
+  /// Spare nodes the tries' fairings removed (fair/spare_nodes).
+  int spare_nodes_removed = 0;
 };
 
 // The contour faired on one plan: the budgets halved once when the first try strays, the
@@ -154,9 +157,25 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
     if (settings.profile == FairProfile::handwriting)
       drop_lobes_at_corners(a.nodes, source.closed, sampled_source, settings, available);
     if (round) fillet_leaning_lines(a.nodes, source.closed, sampled_source, settings, available);
+    std::vector<OutlineNode> with_spares;  // the outline before its spare nodes went, where some did
+    int spares_removed = 0;
+    if (settings.remove_spare_nodes) {
+      std::vector<OutlineNode> kept = a.nodes;
+      spares_removed = remove_spare_nodes(a.nodes, source.closed, sampled_source, {available, settings.units_per_em});
+      if (spares_removed > 0) with_spares = std::move(kept);
+    }
     if (settings.continuity == Continuity::g3)
       a.g3_cubics = carry_g3_into_cubics(a.nodes, source.closed, sampled_source, source.node_count(), settings);
     auto [faired, d] = settle_on_grid(a.nodes, source.closed, sampled_source, settings, tries.halving_allowances);
+    // The merged cubics may spend the whole budget, and rounding then stray past its reserve
+    // where the spare nodes' shorter cubics did not (EB Garamond's G, which then took another
+    // basis and kept runs as drawn): rounded again with them.
+    if (d > settings.tolerance_units && !with_spares.empty()) {
+      a.nodes = std::move(with_spares);
+      OutlineOnGrid again = settle_on_grid(a.nodes, source.closed, sampled_source, settings, tries.halving_allowances);
+      faired = std::move(again.contour), d = again.deviation, spares_removed = 0;
+    }
+    tries.spare_nodes_removed += spares_removed;
     int split_nodes = 0;
     std::optional<OutlineOnGrid> split;
     if (d <= settings.tolerance_units)
@@ -508,6 +527,24 @@ void fair_again_while_faulty(ContourFairing& out, OutlineFaults& faults, const C
   // There each refairing is also tried with the curvatures free: a–z A–Z, g2-jumps EB
   // Garamond 31 → 26, Junicode 32 → 26, Quicksand 13 → 12 (and a lost corner fewer); no other
   // text font changed; whole DejaVu Sans 33.5 → 36.8 s.
+  // The spare nodes removed (fair/spare_nodes), a cubic rounds longer, and fewer nodes sit
+  // where the writeback put them for the grid: a first fairing that removed some and leaves
+  // jumps or kinks is faired again with them kept, kept where that leaves no more faults, and
+  // the fairings after it keep them too; so those start where stop 94's did (a mended fairing
+  // of more nodes replaces none of fewer: against a pruned first, Junicode's e and z kept a
+  // jump). a–z A–Z of 44 text fonts: g2-jumps 29, as at stop 94; with the spare nodes removed
+  // in every fairing 35 (Noto Serif's Y 0 → 1), and with the fairing again kept only where it
+  // has fewer faults 34.
+  if (settings.remove_spare_nodes && (!out.faired || faults.mendable())) {
+    settings.remove_spare_nodes = false;
+    Tries kept_tries;
+    ContourFairing again =
+        first.spare_nodes_removed > 0 ? fair_contour_once(source, settings, kept_tries, memo) : ContourFairing{};
+    if (again.faired) {
+      const OutlineFaults again_faults = count(again);
+      if (!out.faired || !fewer_faults(faults, again_faults)) out = std::move(again), faults = again_faults, first = kept_tries;
+    }
+  }
   bool refair = out.faired && first.made <= most_tries_faired_again;
   const bool freed = settings.free_node_curvatures && (!out.faired || first.freed_nodes > 0);
   settings.free_node_curvatures = false;

@@ -19,6 +19,7 @@ FairSettings resolve_settings(const FairOptions& options, double units_per_em) {
   if (hand) s.guide_lobes = {std::numbers::pi / 6.0, 0.3 / units_per_em};
   s.tangents_between_chords = hand;
   s.free_node_curvatures = !hand;
+  s.remove_spare_nodes = !hand && options.continuity != Continuity::g3;
   if (hand) {
     s.stub_line_units = 2.0 * s.tolerance_units;
     s.stub_turn_deg = 0.5 * s.corner_angle_deg;

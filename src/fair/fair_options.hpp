@@ -65,10 +65,10 @@ struct FairSettings {
   /// whole steps cannot set their curvature (Breip's W and E, Because We Create's d, t and X
   /// kept jumps there; halving from eight units leaves no cubic under four).
   double shortest_rounded_span_units = 8.0;
-  // rounding_reserve_units, shortest_rounded_span_units, free_node_curvatures and
-  // split_beside_jumps are read by the budgets, the writeback and rounding, never by fair_run:
-  // a contour's fairings that differ only in them share their faired runs (fair/plan_fairing's
-  // RunFairings).
+  // rounding_reserve_units, shortest_rounded_span_units, free_node_curvatures,
+  // split_beside_jumps and remove_spare_nodes are read by the budgets, the writeback and
+  // rounding, never by fair_run: a contour's fairings that differ only in them share their
+  // faired runs (fair/plan_fairing's RunFairings).
   /// The writeback may give an extremum inside a chain another curvature than the faired
   /// path's where both spans beside it then fit as one cubic each (fair/node_curvatures):
   /// fewer nodes for the same budget. Text only: on handwriting the single cubics' curvature
@@ -79,6 +79,15 @@ struct FairSettings {
   /// it are split in two and rounded again, kept where that leaves fewer faults
   /// (fair/jump_splits.hpp).
   bool split_beside_jumps = true;
+  /// The writeback's spare nodes removed where one cubic draws their two (fair/spare_nodes).
+  /// Text, not under G3. On handwriting the merged cubics' curvature humps added curvature
+  /// extrema (a–z A–Z: Because We Learn 0.439× → 0.472× of its source's, Purisa 0.432× →
+  /// 0.449×, against the bar's 0.5×) and dkg a missing extremum. Under G3 the merged cubics
+  /// spend the tolerance the G3 solve moves the cubics within (fair/g3_cubics): the κ′ jump
+  /// median of DejaVu Sans, TeX Gyre Heros and Lato came out 0.21, 0.91 and 0.59 (0.033–0.040
+  /// with the spare nodes kept, 1.15–1.19× the nodes of the pruned G2 output, under the G3
+  /// bar's 1.2×).
+  bool remove_spare_nodes = false;
   /// The share of the tolerance (after rounding's reserve) the log-aesthetic chain may use;
   /// the cubics get the rest. Text 0.4; handwriting 0.7, where the chain follows a smoothed
   /// guide and the cubics follow the chain closely.

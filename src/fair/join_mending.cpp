@@ -8,11 +8,10 @@
 #include <variant>
 #include <vector>
 
-#include "fair/cubic_change.hpp"
 #include "fair/node_change.hpp"
 #include "fair/outline_faults.hpp"
 #include "fair/outline_nodes.hpp"
-#include "geom/critical_points.hpp"
+#include "fair/shape_traits.hpp"
 #include "geom/join.hpp"
 
 namespace gf {
@@ -165,45 +164,28 @@ void leaving_sides(Vec2 at, Vec2 d, const StepCounts& steps, Vec2 to, const FarE
     }
 }
 
-// The traits of a cubic a change must not worsen.
-struct CubicTraits {
-  int extrema, inflections;
-  double turning, overreach, variation;
-  bool crowded;
-};
-CubicTraits traits_of(const Cubic& c) {
-  return {inner_axis_extrema(c), static_cast<int>(inflections(c).size()), cubic_turning(c), overreach_length(c),
-          curvature_shape(c, 0.0).variation, crowds_a_node(c)};
-}
+// How much more curvature variation a changed cubic may take on (a spike a comb would show),
+// of the old and of the em.
+constexpr double variation_share = 2.0, variation_em = 1.0;
 
-// How far a changed cubic may turn beyond its old self (a fold turns half a turn more), and
-// how much more curvature variation it may take on (a spike a comb would show), of the old and
-// of the em.
-constexpr double turning_slack = 0.35, variation_share = 2.0, variation_em = 1.0;
+// Cubics `indices` of c's segments.
+std::vector<Cubic> cubics_at(const Contour& c, std::span<const std::size_t> indices) {
+  std::vector<Cubic> out;
+  for (const std::size_t k : indices) out.push_back(std::get<Cubic>(c.segments[k]));
+  return out;
+}
 
 // The cheapest of `found` whose changed cubics (`cubics`, indices into c's segments) gain
 // no extremum, inflection, fold, overreach, crowded handle or spike in total, and that keeps the
 // contour within the tolerance of the source.
 std::optional<Contour> cheapest_within(const Contour& c, Cheapest&& found, std::span<const std::size_t> cubics,
                                        const SampledContour& sampled_source, const JoinMendingLimits& limits) {
-  CubicTraits old{0, 0, 0.0, 0.0, 0.0, false};
-  for (const std::size_t k : cubics) {
-    const CubicTraits t = traits_of(std::get<Cubic>(c.segments[k]));
-    old.extrema += t.extrema, old.inflections += t.inflections, old.variation += t.variation;
-    old.turning = std::max(old.turning, t.turning), old.overreach = std::max(old.overreach, t.overreach);
-    old.crowded = old.crowded || t.crowded;
-  }
+  const ShapeTraits old = shape_traits(cubics_at(c, cubics));
   for (const Candidate& k : std::move(found).sorted()) {
     Contour t = c;
     apply(t, k);
-    CubicTraits now{0, 0, 0.0, 0.0, 0.0, false};
-    bool folds = false;
-    for (const std::size_t s : cubics) {
-      const CubicTraits q = traits_of(std::get<Cubic>(t.segments[s]));
-      now.extrema += q.extrema, now.inflections += q.inflections, now.variation += q.variation;
-      folds = folds || q.turning > old.turning + turning_slack || q.overreach > old.overreach || (q.crowded && !old.crowded);
-    }
-    if (folds || now.extrema > old.extrema || now.inflections > old.inflections) continue;
+    const ShapeTraits now = shape_traits(cubics_at(t, cubics));
+    if (worsens(now, old)) continue;
     if (now.variation > variation_share * old.variation + variation_em / limits.units_per_em) continue;
     if (distance_between(SampledContour(t), sampled_source) <= limits.tolerance_units) return t;
   }

@@ -1,0 +1,36 @@
+// Nodes the writeback leaves that a designer would not draw: a smooth node between two cubics
+// that is neither a horizontal or vertical extremum nor an inflection. The writeback puts one
+// where a span's G2 Hermite cubic strays (fair/cubic_writeback) and between two log-aesthetic
+// segments at a curvature extremum, though a cubic may well turn through such an extremum
+// inside. One cubic through both, its handles and those of the cubic either side fitted again
+// to the outline under G2 (geom/g2_handle_fit), often draws the two within the budget: Linux
+// Libertine's D drew its counter's quarters in two cubics each, where the source draws one.
+#pragma once
+
+#include <vector>
+
+#include "fair/outline_nodes.hpp"
+#include "fair/sampled_contour.hpp"
+
+namespace gf {
+
+struct SpareNodeLimits {
+  double budget_units = 1.25;  ///< two-sided, from the source: what the outline may spend of the tolerance
+  double units_per_em = 1000.0;
+};
+
+/// Whether node k of `nodes` is spare: smooth, between two cubics, its tangent on neither axis,
+/// and its curvature on both sides of one sign and at least 0.05/UPM (not an inflection).
+bool is_spare_node(const std::vector<OutlineNode>& nodes, bool closed, std::size_t k, double units_per_em);
+
+/// Removes each spare node whose two cubics one cubic can draw: that cubic's handles, and
+/// those of the cubic either side across a smooth node that is no inflection, fitted again to
+/// the outline with κ continuous at every node they touch and the curvature beyond them kept.
+/// Only where the cubics so changed gain no extremum, inflection, fold, overreach or crowded
+/// handle, and no curvature variation beyond 0.05/UPM, and the contour stays within the
+/// budget of `sampled_source`. Nodes and tangents stay where they are. Returns how many it
+/// removed.
+int remove_spare_nodes(std::vector<OutlineNode>& nodes, bool closed, const SampledContour& sampled_source,
+                       const SpareNodeLimits& limits);
+
+}  // namespace gf
