@@ -60,21 +60,23 @@ std::vector<Vec2> samples_of(const Cubic& c) {
 }
 
 // The window around spare node k: the segments (node indices where each cubic starts) whose
-// handles are fitted again, the merged pair counted by its first; the merged cubic's place.
+// handles are fitted again, the merged pair counted by its first; the merged cubic's place
+// among them; the node the window ends at.
 struct Window {
   std::vector<std::size_t> starts;
   std::size_t merged = 0;
+  std::size_t last_node = 0;
 };
 
 Window window_at(const std::vector<OutlineNode>& nodes, bool closed, std::size_t k, double units_per_em) {
   const std::size_t n = nodes.size(), l = before(k, n), r = after(k, n);
-  Window w{{l}, 0};
+  Window w{{l}, 0, r};
   // Across a smooth node between cubics that is no inflection, the cubic beyond joins in.
   const auto joins = [&](std::size_t node, std::size_t segment) {
     return nodes[node].smooth && cubic_at(nodes, closed, segment) && !inflection_at(nodes, node, units_per_em);
   };
   if ((closed || l > 0) && before(l, n) != r && joins(l, before(l, n))) w.starts.insert(w.starts.begin(), before(l, n)), w.merged = 1;
-  if ((closed || r + 1 < n) && after(r, n) != w.starts.front() && joins(r, r)) w.starts.push_back(r);
+  if ((closed || r + 1 < n) && after(r, n) != w.starts.front() && joins(r, r)) w.starts.push_back(r), w.last_node = after(r, n);
   return w;
 }
 
@@ -127,10 +129,9 @@ std::optional<std::vector<OutlineNode>> without_node(const std::vector<OutlineNo
       lengths = {distance(fit->p[0], fit->p[1]), distance(fit->p[2], fit->p[3])};
     frames.push_back(f), points.push_back(std::move(pts)), initial.push_back(lengths);
   }
-  const std::size_t last_node = after(w.starts.back() == before(k, n) ? k : w.starts.back(), n);
   const std::optional<std::vector<Cubic>> fitted =
       fit_g2_handles(frames, points, initial, bound_before(nodes, closed, w.starts.front()),
-                     bound_after(nodes, closed, last_node));
+                     bound_after(nodes, closed, w.last_node));
   if (!fitted) return std::nullopt;
   ShapeTraits was = shape_traits(old);
   // The merged cubic turns as its two did together.

@@ -3,8 +3,10 @@
 // With P1 = P0 + a·T0, P2 = P3 − b·T3, D = P3 − P0 and c = T0 × T3 (geom/g2_hermite.hpp),
 //   κ0 = 2/3 · (T0 × D − b c) / a²,    κ3 = 2/3 · (D × T3 − a c) / b²,
 // and a point at a fixed parameter is linear in (a, b); so each round is an equality-
-// constrained linear least-squares problem (tangent distance at the points' feet, the
-// curvature equations linearised), and the rounds are sequential quadratic programming.
+// constrained linear least-squares problem (the points' offsets at their feet, the curvature
+// equations linearised), and the rounds are sequential quadratic programming. The first rounds
+// fit each point's whole offset: tangent distance alone, from chord-length feet, settled on a
+// wrong G2 chain (a split cubic's halves came back 16 units off).
 #pragma once
 
 #include <optional>
@@ -37,8 +39,8 @@ std::optional<CubicFrame> frame_of(const Cubic& c);
 /// `points[i]` (points cubic i should pass, in order, its ends included), with κ continuous
 /// at every inner join to 1e-9 of the larger side (or of 1/the chain's chord sum), and meeting
 /// `start`/`end` at the chain's ends where given. From the handle lengths `initial` (a, b per
-/// frame). None where a handle would leave (0, 1.5 chord] or the curvature equations are not
-/// met within 40 rounds.
+/// frame). None where a handle would leave (0.001 chord, 1.5 chord] or the curvature
+/// equations are not met after 40 rounds and a few least-norm Newton steps onto them.
 std::optional<std::vector<Cubic>> fit_g2_handles(std::span<const CubicFrame> frames,
                                                  std::span<const std::vector<Vec2>> points,
                                                  std::span<const std::pair<double, double>> initial,
