@@ -7,6 +7,7 @@
 // Libertine's D drew its counter's quarters in two cubics each, where the source draws one.
 #pragma once
 
+#include <cstddef>
 #include <vector>
 
 #include "fair/outline_nodes.hpp"
@@ -27,8 +28,8 @@ bool is_spare_node(const std::vector<OutlineNode>& nodes, bool closed, std::size
 /// those of the cubic either side across a smooth node that is no inflection, fitted again to
 /// the outline with κ continuous at every node they touch and the curvature beyond them kept.
 /// Only where the cubics so changed gain no extremum, inflection, fold, overreach or crowded
-/// handle, and no curvature variation beyond 0.05/UPM, and the contour stays within the
-/// budget of `sampled_source`. Nodes and tangents stay where they are. Returns how many it
+/// handle (fair/shape_traits), take on at most a quarter more curvature variation and 0.05/UPM,
+/// and the contour stays within the budget of `sampled_source`. Nodes and tangents stay where they are. Returns how many it
 /// removed.
 int remove_spare_nodes(std::vector<OutlineNode>& nodes, bool closed, const SampledContour& sampled_source,
                        const SpareNodeLimits& limits);
