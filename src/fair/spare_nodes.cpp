@@ -6,8 +6,8 @@
 #include <utility>
 
 #include "fair/cubic_change.hpp"
+#include "fair/outline_joins.hpp"
 #include "fair/shape_traits.hpp"
-#include "geom/curvature.hpp"
 #include "geom/g2_handle_fit.hpp"
 #include "geom/tangent_fit.hpp"
 
@@ -23,34 +23,22 @@ constexpr int samples_per_cubic = 32;  // of the outline they are fitted to
 std::size_t after(std::size_t k, std::size_t n) { return (k + 1) % n; }
 std::size_t before(std::size_t k, std::size_t n) { return (k + n - 1) % n; }
 
-// Whether segment i (node i to the next) is a cubic.
-bool cubic_at(const std::vector<OutlineNode>& nodes, bool closed, std::size_t i) {
-  if (!closed && i + 1 >= nodes.size()) return false;
-  return nodes[i].out_handle && nodes[after(i, nodes.size())].in_handle;
-}
-
-double start_kappa(const Cubic& c) { return end_curvature(c, SegmentEnd::start).curvature.value_or(0.0); }
-double end_kappa(const Cubic& c) { return end_curvature(c, SegmentEnd::end).curvature.value_or(0.0); }
-
 // Whether node k lies between two cubics whose curvature there changes sign or is flat.
 bool inflection_at(const std::vector<OutlineNode>& nodes, std::size_t k, double units_per_em) {
-  const std::size_t n = nodes.size();
-  const double in = end_kappa(outline_cubic(nodes, before(k, n))), out = start_kappa(outline_cubic(nodes, k));
+  const auto [in, out] = curvatures_at(nodes, k);
   return in * out <= 0.0 || std::min(std::abs(in), std::abs(out)) * units_per_em < flat_em;
 }
 
 // The curvature a window of cubics from node `first` must meet there: none at a corner or an
 // open contour's end, 0 after a line, else the arriving cubic's (outside the window).
-std::optional<double> bound_before(const std::vector<OutlineNode>& nodes, bool closed, std::size_t first) {
-  const OutlineNode& q = nodes[first];
-  if (!q.smooth || (!closed && first == 0)) return std::nullopt;
-  const std::size_t h = before(first, nodes.size());
-  return cubic_at(nodes, closed, h) ? end_kappa(outline_cubic(nodes, h)) : 0.0;
+std::optional<double> bound_before(const OutlineJoins& joins, std::size_t first) {
+  if (!joins.nodes[first].smooth || !joins.interior(first)) return std::nullopt;
+  const std::size_t h = before(first, joins.size());
+  return joins.is_cubic(h) ? node_curvature(outline_cubic(joins.nodes, h), SegmentEnd::end) : 0.0;
 }
-std::optional<double> bound_after(const std::vector<OutlineNode>& nodes, bool closed, std::size_t last) {
-  const OutlineNode& q = nodes[last];
-  if (!q.smooth || (!closed && last + 1 == nodes.size())) return std::nullopt;
-  return cubic_at(nodes, closed, last) ? start_kappa(outline_cubic(nodes, last)) : 0.0;
+std::optional<double> bound_after(const OutlineJoins& joins, std::size_t last) {
+  if (!joins.nodes[last].smooth || !joins.interior(last)) return std::nullopt;
+  return joins.is_cubic(last) ? node_curvature(outline_cubic(joins.nodes, last), SegmentEnd::start) : 0.0;
 }
 
 std::vector<Vec2> samples_of(const Cubic& c) {
@@ -68,26 +56,23 @@ struct Window {
   std::size_t last_node = 0;
 };
 
-Window window_at(const std::vector<OutlineNode>& nodes, bool closed, std::size_t k, double units_per_em) {
-  const std::size_t n = nodes.size(), l = before(k, n), r = after(k, n);
+Window window_at(const OutlineJoins& joins, std::size_t k, double units_per_em) {
+  const std::size_t n = joins.size(), l = before(k, n), r = after(k, n);
   Window w{{l}, 0, r};
   // Across a smooth node between cubics that is no inflection, the cubic beyond joins in.
-  const auto joins = [&](std::size_t node, std::size_t segment) {
-    return nodes[node].smooth && cubic_at(nodes, closed, segment) && !inflection_at(nodes, node, units_per_em);
+  const auto extends = [&](std::size_t node) {
+    return joins.joins_cubics(node) && !inflection_at(joins.nodes, node, units_per_em);
   };
-  if ((closed || l > 0) && before(l, n) != r && joins(l, before(l, n))) w.starts.insert(w.starts.begin(), before(l, n)), w.merged = 1;
-  if ((closed || r + 1 < n) && after(r, n) != w.starts.front() && joins(r, r)) w.starts.push_back(r), w.last_node = after(r, n);
+  if (before(l, n) != r && extends(l)) w.starts.insert(w.starts.begin(), before(l, n)), w.merged = 1;
+  if (after(r, n) != w.starts.front() && extends(r)) w.starts.push_back(r), w.last_node = after(r, n);
   return w;
 }
 
 }  // namespace
 
 bool is_spare_node(const std::vector<OutlineNode>& nodes, bool closed, std::size_t k, double units_per_em) {
-  const std::size_t n = nodes.size();
-  if (n < 4 || (!closed && (k == 0 || k + 1 >= n))) return false;
-  const OutlineNode& q = nodes[k];
-  if (!q.smooth || !cubic_at(nodes, closed, before(k, n)) || !cubic_at(nodes, closed, k)) return false;
-  const Vec2 t = *q.out_handle - q.point;
+  if (nodes.size() < 4 || !OutlineJoins{nodes, closed}.joins_cubics(k)) return false;
+  const Vec2 t = *nodes[k].out_handle - nodes[k].point;
   const double length = norm(t);
   if (!(std::abs(t.x) > 1e-9 * length) || !(std::abs(t.y) > 1e-9 * length)) return false;
   return !inflection_at(nodes, k, units_per_em);
@@ -99,7 +84,8 @@ namespace {
 std::optional<std::vector<OutlineNode>> without_node(const std::vector<OutlineNode>& nodes, bool closed, std::size_t k,
                                                      const SampledContour& sampled_source, const SpareNodeLimits& limits) {
   const std::size_t n = nodes.size();
-  const Window w = window_at(nodes, closed, k, limits.units_per_em);
+  const OutlineJoins joins{nodes, closed};
+  const Window w = window_at(joins, k, limits.units_per_em);
   std::vector<CubicFrame> frames;
   std::vector<std::vector<Vec2>> points;
   std::vector<std::pair<double, double>> initial;
@@ -130,8 +116,7 @@ std::optional<std::vector<OutlineNode>> without_node(const std::vector<OutlineNo
     frames.push_back(f), points.push_back(std::move(pts)), initial.push_back(lengths);
   }
   const std::optional<std::vector<Cubic>> fitted =
-      fit_g2_handles(frames, points, initial, bound_before(nodes, closed, w.starts.front()),
-                     bound_after(nodes, closed, w.last_node));
+      fit_g2_handles(frames, points, initial, bound_before(joins, w.starts.front()), bound_after(joins, w.last_node));
   if (!fitted) return std::nullopt;
   ShapeTraits was = shape_traits(old);
   // The merged cubic turns as its two did together.
