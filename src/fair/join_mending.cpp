@@ -29,13 +29,15 @@ double start_curvature(Vec2 p0, Vec2 p1, Vec2 p2) {
 // κ at the end of a cubic (·, P1, P2, P3) along travel: its reversal's start curvature, negated.
 double end_curvature_of(Vec2 p1, Vec2 p2, Vec2 p3) { return -start_curvature(p3, p2, p1); }
 
-// Whether κ jumps from `in` to `out` as the check counts it (CurvatureJumpRule).
-bool jumps(double in, double out, double units_per_em) { return curvature_jump(in, out, units_per_em).exceeds(); }
+// Whether κ jumps from `in` to `out` as the fairing counts it (fairing_jump_rule).
+bool jumps(double in, double out, double units_per_em) {
+  return curvature_jump(in, out, units_per_em, fairing_jump_rule).exceeds();
+}
 
 // A bound on how far from k a curvature that does not jump against it lies: 5 % of the larger
 // side (so up to 5/95 of k), or 0.05/UPM.
 double match_window(double k, double units_per_em) {
-  const CurvatureJumpRule rule;
+  const CurvatureJumpRule rule = fairing_jump_rule;
   return 1.001 * std::max(std::abs(k) * rule.relative / (1.0 - rule.relative), rule.absolute_em / units_per_em);
 }
 

@@ -42,7 +42,7 @@ constexpr int inflections_per_mended_join = 2;
 JoinFault join_fault(const Join& j, const JoinThresholds& thresholds, double units_per_em) {
   if (is_corner(j, thresholds.kink_max_deg)) return JoinFault::corner;
   if (std::abs(j.angle_deg) > thresholds.smooth_max_deg) return JoinFault::kink;
-  const std::optional<CurvatureJump> jump = curvature_jump(j, units_per_em);
+  const std::optional<CurvatureJump> jump = curvature_jump(j, units_per_em, fairing_jump_rule);
   return !jump || jump->exceeds() ? JoinFault::jump : JoinFault::none;
 }
 

@@ -13,6 +13,12 @@
 
 namespace gf {
 
+/// The check's rule less a hair, by which the fairing counts a jump: a jump of exactly the
+/// limit, which whole grid steps can make (κ·UPM 4.43 against 4.66 over handles of one length,
+/// 5 % to the last bit: Junicode's e), comes out a hair over it or under it depending on how
+/// a checker rounds, so the fairing mends it as one.
+inline constexpr CurvatureJumpRule fairing_jump_rule{0.05 * (1.0 - 1e-9), 0.05 * (1.0 - 1e-9), 0.5};
+
 struct OutlineFaults {
   /// `inflections`: how many more the faired contour has than its source (the check's bar:
   /// inflections not increased).

@@ -48,6 +48,19 @@ TEST(OutlineFaults, JumpingJoinsAreWhereTheJumpsAre) {
   EXPECT_TRUE(jumping_joins(square, upm).empty());
 }
 
+TEST(OutlineFaults, AJumpOfExactlyTheLimitIsAJump) {
+  // κ·UPM 19/1.024 against 20/1.024, binary fractions: (20 − 19)/20 is 0.05 to the last bit,
+  // the check's own limit, which its rule lets pass and a checker rounding otherwise does not.
+  Join j;
+  j.kind = JoinKind::smooth;
+  j.curvature_in = 19.0 / 1024.0, j.curvature_out = 20.0 / 1024.0;
+  EXPECT_FALSE(curvature_jump(j, upm)->exceeds());
+  EXPECT_EQ(join_fault(j, {}, upm), JoinFault::jump);
+  // A hair under it is none.
+  j.curvature_in = 19.0001 / 1024.0;
+  EXPECT_EQ(join_fault(j, {}, upm), JoinFault::none);
+}
+
 TEST(OutlineFaults, ATangentBrokenByADegreeIsAKink) {
   const double rise = 100.0 * std::tan(std::numbers::pi / 180.0);
   const Contour c = closed({Line{{{0, 0}, {100, 0}}}, Line{{{100, 0}, {200, rise}}}, Line{{{200, rise}, {200, 100}}},
