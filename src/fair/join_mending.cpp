@@ -292,7 +292,7 @@ std::optional<Contour> mend_line_join(const Contour& c, const std::vector<Join>&
         // κ at the join, C's near handle s steps L along the line, is (2/3)·L × (C2 − N) / (s²|L|³)
         // (start_curvature): flat enough only where the far handle C2 lies this near the line.
         const double longest = line_steps.last();
-        const double reach = 1.5 * CurvatureJumpRule{}.absolute_em / upm * longest * longest * std::pow(line_step_length, 3);
+        const double reach = 1.5 * fairing_jump_rule.absolute_em / upm * longest * longest * std::pow(line_step_length, 3);
         const double off_line = cross(line_step, mid - at);
         for (const Vec2 d : directions) {
           const double step = norm(d), across = cross(line_step, d);
