@@ -251,23 +251,30 @@ constexpr int kink_passes = 8;
 // Sans's M came 2.26 units from its source at a tolerance of 2.56, which left its stem's kinks
 // 0.28). The smaller allowance first keeps the vertex close: Open Sans's d, filleted at the
 // larger alone, had its stem tilted a unit off the vertical.
+// Straight quadratics and cubics are lines to these passes (Liberation Sans Narrow's V: its inner
+// vertex drawn as quadratics whose control point sits on their start, 0.2–2.8° apart), and are
+// written as lines where a pass changed the contour.
 void fillet_kinks(ContourFairing& out, const Contour& source, const FairSettings& settings) {
   const double t = settings.tolerance_units;
+  Contour lines = with_straight_segments_as_lines(out.contour);
+  double deviation = out.deviation;
+  bool changed = false;
   const auto take = [&](const Contour& filleted) {
     // Unchanged: no kink took a fillet (a fillet that takes a whole line leaves as many segments).
-    if (filleted.segments == out.contour.segments) return;
+    if (filleted.segments == lines.segments) return;
     const double d = contour_distance(filleted, source);
     if (d > t) return;
-    out.contour = filleted;
-    out.deviation = std::max(out.deviation, d);
+    lines = filleted, changed = true;
+    deviation = std::max(deviation, d);
   };
-  take(merge_line_kinks(out.contour));
+  take(merge_line_kinks(lines, t));
   const bool grid = settings.rounding == Rounding::integers;
-  const double left = 0.95 * (t - out.deviation);
+  const double left = 0.95 * (t - deviation);
   if (grid)
-    for (const double allowance : {left, 0.9 * t}) take(fillet_legless_kinks_at_moved_vertices(out.contour, left, allowance));
-  take(fillet_line_kinks(out.contour, left, grid));
-  if (grid) take(fillet_kinks_at_moved_vertices(out.contour, 0.9 * t));
+    for (const double allowance : {left, 0.9 * t}) take(fillet_legless_kinks_at_moved_vertices(lines, left, allowance));
+  take(fillet_line_kinks(lines, left, grid));
+  if (grid) take(fillet_kinks_at_moved_vertices(lines, 0.9 * t));
+  if (changed) out.contour = std::move(lines), out.deviation = deviation;
 }
 
 // The contour faired on `curve` (the source, or the same curve split at its tight `turns`, its

@@ -127,8 +127,14 @@ bool is_straight(const Cubic& c) {
 }
 
 bool is_straight_segment(const Segment& s) {
-  const Cubic* c = std::get_if<Cubic>(&s);
-  return is_line(s) || (c && is_straight(*c));
+  return is_line(s) || std::visit([](const auto& b) { return is_straight(to_cubic(b)); }, s);
+}
+
+Contour with_straight_segments_as_lines(const Contour& contour) {
+  Contour out = contour;
+  for (Segment& s : out.segments)
+    if (!is_line(s) && is_straight_segment(s)) s = Line{start_point(s), end_point(s)};
+  return out;
 }
 
 ContourPlan plan_contour(const Contour& source, std::span<const std::size_t> smooth_nodes, const PlanOptions& options) {

@@ -65,8 +65,10 @@ inline constexpr double corner_floor_deg = kink_limit_deg + 0.5;
 
 /// A cubic whose control points lie on its chord, in order, is a line.
 bool is_straight(const Cubic& c);
-/// A line, or a cubic that is_straight.
+/// A line, or a quadratic or cubic that is_straight.
 bool is_straight_segment(const Segment& s);
+/// `contour` with each quadratic or cubic that is_straight written as its line.
+Contour with_straight_segments_as_lines(const Contour& contour);
 
 struct PlanOptions {
   double corner_angle_deg;

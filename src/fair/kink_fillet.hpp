@@ -6,15 +6,18 @@
 
 namespace gf {
 
-/// `contour` with every join of two lines that turns by more than the smooth limit and less
-/// than the kink limit taken away, the two lines (or more, kink after kink) made one from the
-/// first's start to the last's end: no fillet is needed where the one line stays within the
-/// tolerance (Femke Klaver's B: a sliver's 593-unit side, bent 2.5° at both ends, whose
-/// primitive step (−26, −593) leaves a fillet no whole legs on the grid; Yusei Magic's R: a
-/// short curve drawn as its 3.6-unit chord, 1.6° off the line before it); at a closed
-/// contour's first node, the contour then starts where its last line did. Contours with no
-/// such kink, or that would keep fewer than three segments, come back unchanged.
-Contour merge_line_kinks(const Contour& contour);
+/// `contour` with the joins of two lines that turn by more than the smooth limit and less than
+/// the kink limit taken away where the lines (or more, kink after kink) made one keep every
+/// node they drop within `allowance_units` of it: no fillet is needed there (Femke Klaver's B:
+/// a sliver's 593-unit side, bent 2.5° at both ends, whose primitive step (−26, −593) leaves a
+/// fillet no whole legs on the grid; Yusei Magic's R: a short curve drawn as its 3.6-unit chord,
+/// 1.6° off the line before it). Along a chain of such kinks, each line runs on as far as that
+/// holds (Liberation Sans Narrow's V: its inner strokes bend 2.8° 100 units above the vertex and
+/// by under a degree below, and only the bends below go), so the kinks left are fewer, for the
+/// fillets. At a closed contour's first node, the contour then starts where its last line did.
+/// Contours with no such kink, or that would keep fewer than three segments, come back
+/// unchanged.
+Contour merge_line_kinks(const Contour& contour, double allowance_units);
 
 /// `contour` with every join of two lines that turns by more than the smooth limit and less
 /// than the kink limit (geom/join.hpp: no corner was drawn there) replaced by a fillet: the

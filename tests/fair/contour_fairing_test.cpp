@@ -212,6 +212,45 @@ TEST(ContourFairing, AKinkWhoseFilletTakesAWholeLineIsFilleted) {
   for (const Join& j : joins_of(r.contour)) EXPECT_NE(j.kind, JoinKind::kink) << "node " << j.node;
 }
 
+TEST(ContourFairing, StrokesDrawnWithStraightQuadraticsLeaveNoKink) {
+  // Liberation Sans Narrow's V and v (2,048 units): their inner strokes run into the notch as
+  // lines and quadratics whose control point sits on their start, bending 0.1–2.8° at each
+  // node. The quadratics were no lines to the kink passes, and all the V's bends stayed kinks
+  // (five); merged whole, the V's left stroke strays 8.6 units, so a line runs on only as far
+  // as it stays within the tolerance, and the v's, whose curve leaves its last line along that
+  // line's (1, 4) step, not into the curve.
+  const auto stroke = [](std::initializer_list<std::pair<Vec2, std::optional<Vec2>>> points) {
+    Contour c;
+    const std::vector<std::pair<Vec2, std::optional<Vec2>>> p(points);
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const Vec2 from = p[i].first, to = p[(i + 1) % p.size()].first;
+      if (p[i].second) c.segments.push_back(Quad{{from, *p[i].second, to}});
+      else c.segments.push_back(Line{{from, to}});
+    }
+    c.nodes.assign(c.segments.size(), NodeFlags{});
+    return c;
+  };
+  const std::optional<Vec2> line;
+  const Contour upper = stroke({{{641, 0}, line}, {{479, 0}, line}, {{7, 1409}, line}, {{172, 1409}, line},
+                                {{492, 417}, Vec2{492, 417}}, {{516, 328}, line}, {{539, 248}, Vec2{539, 248}},
+                                {{561, 168}, Vec2{561, 168}}, {{582, 246}, Vec2{582, 246}}, {{604, 325}, line},
+                                {{630, 417}, line}, {{948, 1409}, line}, {{1113, 1409}, line}});
+  const Contour lower = stroke({{{503, 0}, line}, {{328, 0}, line}, {{6, 1082}, line}, {{163, 1082}, line},
+                                {{358, 378}, Vec2{358, 378}}, {{372, 324}, line}, {{388, 259}, line}, {{403, 194}, line},
+                                {{415, 141}, Vec2{415, 141}}, {{428, 194}, line}, {{444, 258}, Vec2{452, 291}},
+                                {{460.5, 322.5}, Vec2{469, 354}}, {{476, 376}, line}, {{678, 1082}, line},
+                                {{834, 1082}, line}});
+  FairOptions fo;
+  fo.rounding = Rounding::integers;
+  const FairSettings settings = resolve_settings(fo, 2048.0);
+  for (const Contour* v : {&upper, &lower}) {
+    const ContourFairing r = fair_contour(*v, settings);
+    ASSERT_TRUE(r.faired) << r.reason;
+    EXPECT_LE(brute_force_hausdorff(*v, r.contour), 1.01 * settings.tolerance_units);
+    for (const Join& j : joins_of(r.contour)) EXPECT_NE(j.kind, JoinKind::kink) << "node " << j.node << " at " << j.point.x << ", " << j.point.y;
+  }
+}
+
 TEST(ContourFairing, LinesMergedPassByPassLeaveNoKink) {
   // Breip's F, its stem's left side: a curve tangent to a 15-unit vertical line, then lines
   // turning 3° and 1° from it. Each pass over the kinks merged one more line, and the merged

@@ -175,5 +175,20 @@ TEST(ContourPlan, TwoLinesMadeSmoothAreOneLine) {
   EXPECT_EQ(std::get<Line>(wrapped.pieces[0]).end(), b);
 }
 
+TEST(ContourPlan, StraightQuadraticsAndCubicsAreWrittenAsTheirLines) {
+  // Liberation Sans Narrow's V draws its inner vertex with quadratics whose control point sits
+  // on their start; a cubic with its handles on its chord is a line too, and a bent one is not.
+  Contour c;
+  c.segments = {Quad{{{0, 0}, {0, 0}, {24, -89}}}, Cubic{{{24, -89}, {34, -89}, {74, -89}, {124, -89}}},
+                Quad{{{124, -89}, {140, -40}, {100, 0}}}, Line{{100, 0}, {0, 0}}};
+  c.nodes.resize(4);
+  const Contour lines = with_straight_segments_as_lines(c);
+  EXPECT_EQ(lines.segments[0], (Segment{Line{{0, 0}, {24, -89}}}));
+  EXPECT_EQ(lines.segments[1], (Segment{Line{{24, -89}, {124, -89}}}));
+  EXPECT_EQ(lines.segments[2], c.segments[2]);
+  EXPECT_EQ(lines.segments[3], c.segments[3]);
+  EXPECT_EQ(lines.nodes, c.nodes);
+}
+
 }  // namespace
 }  // namespace gf

@@ -113,7 +113,7 @@ TEST(MergeLineKinks, LinesMeetingAtAKinkBecomeOneAcrossTheSeamToo) {
   // A square whose base bends 1.1° at its middle, where the contour starts: the base is one
   // line again, and the contour starts where its last line did.
   const Contour bent = polygon({{50, 0.5}, {100, 0}, {100, 100}, {0, 100}, {0, 0}});
-  const Contour merged = merge_line_kinks(bent);
+  const Contour merged = merge_line_kinks(bent, 1.0);
   EXPECT_EQ(merged.segments, polygon({{0, 0}, {100, 0}, {100, 100}, {0, 100}}).segments);
   EXPECT_EQ(merged.nodes.size(), merged.segments.size());
 }
@@ -121,11 +121,33 @@ TEST(MergeLineKinks, LinesMeetingAtAKinkBecomeOneAcrossTheSeamToo) {
 TEST(MergeLineKinks, ASliverFoldedOntoItselfComesBackAsItWas) {
   // One kink, but merged there the triangle would be one line there and back.
   const Contour sliver = polygon({{0, 0}, {100, 1}, {200, 0}});
-  EXPECT_EQ(merge_line_kinks(sliver), sliver);
+  EXPECT_EQ(merge_line_kinks(sliver, 1.0), sliver);
   // Nor is a line merged into a curve.
   Contour with_curve = polygon({{0, 0}, {100, 1}, {200, 0}, {100, 100}});
   with_curve.segments[1] = Cubic{{{100, 1}, {133, 0.7}, {166, 0.3}, {200, 0}}};
-  EXPECT_EQ(merge_line_kinks(with_curve), with_curve);
+  EXPECT_EQ(merge_line_kinks(with_curve, 1.0), with_curve);
+}
+
+TEST(MergeLineKinks, AChainMergesOnlyWhereItsOneLineStaysWithinTheAllowance) {
+  // A base bending 1.83° at (100, 4), 1.07 units from the line (0, 0)–(150, 4.4), then 0.23°
+  // at (150, 4.4), a tenth of a unit from the line (100, 4)–(200, 4.6): the second bend goes,
+  // the first stays (Liberation Sans Narrow's V, all or nothing before, kept all five).
+  const Contour bent = polygon({{0, 0}, {100, 4}, {150, 4.4}, {200, 4.6}, {200, 100}, {0, 100}});
+  EXPECT_EQ(merge_line_kinks(bent, 1.0).segments, polygon({{0, 0}, {100, 4}, {200, 4.6}, {200, 100}, {0, 100}}).segments);
+  // With room for the first as well, the base is one line.
+  EXPECT_EQ(merge_line_kinks(bent, 2.0).segments, polygon({{0, 0}, {200, 4.6}, {200, 100}, {0, 100}}).segments);
+}
+
+TEST(MergeLineKinks, NoMergedLineTurnsACurvesJoinIntoAKink) {
+  // Lines bending 1.15° at (100, 0), within a unit of their chord, the second leaving into a
+  // curve along its own direction: one line would meet the curve 0.57° off, a kink the fillets
+  // between lines cannot take. The lines stay.
+  Contour lines = polygon({{0, 0}, {100, 0}, {200, 2}, {300, 100}, {0, 100}});
+  lines.segments[2] = Cubic{{{200, 2}, {250, 3}, {300, 50}, {300, 100}}};
+  EXPECT_EQ(merge_line_kinks(lines, 2.0), lines);
+  // Leaving along the chord instead, the curve keeps its join smooth and the lines merge.
+  lines.segments[2] = Cubic{{{200, 2}, {250, 2.5}, {300, 50}, {300, 100}}};
+  EXPECT_EQ(merge_line_kinks(lines, 2.0).segments.size(), 4u);
 }
 
 TEST(KinkFillet, WithoutAKinkTheContourComesBackAsItWas) {
