@@ -350,9 +350,9 @@ Contour merge_line_kinks(const Contour& contour, double allowance_units) {
       continue;
     }
     const std::array<Vec2, 2> line{contour.node_point(anchor), end_point(contour.segments[k])};
-    // Nor may the line meet a curve at a kink: Liberation Sans Narrow's v, whose
-    // curve leaves the last of its lines along its (1, 4) step, and would leave the merged
-    // line's (29, 117) 0.12° off.
+    // Nor may the line meet a curve at a kink: Liberation Sans Narrow's v, whose curve leaves
+    // the last of its lines along its (1, 4) step, would leave the merged line's (29, 117)
+    // 0.12° off.
     bool fits = !kinks_a_curve(contour, anchor, line, SegmentEnd::start) &&
                 !kinks_a_curve(contour, (k + 1) % n, line, SegmentEnd::end);
     for (std::size_t m = (anchor + 1) % n; fits && m != (k + 1) % n; m = (m + 1) % n) {
