@@ -319,10 +319,7 @@ bool kinks_a_curve(const Contour& contour, std::size_t k, const std::array<Vec2,
   const Segment& beside = contour.segments[line_end == SegmentEnd::start ? (k + n - 1) % n : k];
   const std::optional<Vec2> other = end_tangent(beside, line_end == SegmentEnd::start ? SegmentEnd::end : SegmentEnd::start);
   if (is_line(beside) || !other) return false;
-  const Vec2 along = line[1] - line[0];
-  const double turn = std::abs(degrees(line_end == SegmentEnd::start ? turning_angle(*other, along) : turning_angle(along, *other)));
-  const JoinThresholds limits;
-  return turn > limits.smooth_max_deg && turn < limits.kink_max_deg;
+  return join_kind(degrees(turning_angle(*other, line[1] - line[0])), false) == JoinKind::kink;
 }
 
 }  // namespace

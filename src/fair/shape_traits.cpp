@@ -23,4 +23,8 @@ bool worsens(const ShapeTraits& now, const ShapeTraits& old) {
          now.overreach > old.overreach || (now.crowded && !old.crowded);
 }
 
+bool varies_more(const ShapeTraits& now, const ShapeTraits& old, double share, double per_em, double units_per_em) {
+  return now.variation > share * old.variation + per_em / units_per_em;
+}
+
 }  // namespace gf

@@ -22,7 +22,12 @@ ShapeTraits shape_traits(std::span<const Cubic> cubics);
 inline constexpr double turning_slack = 0.35;
 
 /// Whether cubics of traits `now` replacing ones of `old` gain an extremum or an inflection,
-/// fold, reach out farther or crowd a node. Their curvature variation each caller bounds.
+/// fold, reach out farther or crowd a node. Their curvature variation each caller bounds
+/// (varies_more).
 bool worsens(const ShapeTraits& now, const ShapeTraits& old);
+
+/// Whether `now` varies its curvature by more than `share` times what `old` did and `per_em`
+/// (κ·UPM) besides.
+bool varies_more(const ShapeTraits& now, const ShapeTraits& old, double share, double per_em, double units_per_em);
 
 }  // namespace gf

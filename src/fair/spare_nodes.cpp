@@ -122,7 +122,7 @@ std::optional<std::vector<OutlineNode>> without_node(const std::vector<OutlineNo
   // The merged cubic turns as its two did together.
   was.turning = std::max(was.turning, cubic_turning(old[w.merged]) + cubic_turning(old[w.merged + 1]));
   const ShapeTraits now = shape_traits(*fitted);
-  if (worsens(now, was) || now.variation > variation_share * was.variation + variation_em / limits.units_per_em) return std::nullopt;
+  if (worsens(now, was) || varies_more(now, was, variation_share, variation_em, limits.units_per_em)) return std::nullopt;
   std::vector<OutlineNode> out = nodes;
   for (std::size_t j = 0; j < fitted->size(); ++j) {
     const std::size_t s = w.starts[j], e = j == w.merged ? after(k, n) : after(s, n);

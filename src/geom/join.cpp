@@ -27,14 +27,18 @@ Join join_between(const Segment& in, const Segment& out, std::size_t node, const
     return j;
   }
   j.angle_deg = degrees(turning_angle(*tin, *tout));
-  const double a = std::abs(j.angle_deg);
-  if (a <= thresholds.smooth_max_deg) j.kind = JoinKind::smooth;
-  else if (a < thresholds.kink_max_deg || flags.smooth.value_or(false)) j.kind = JoinKind::kink;
-  else j.kind = JoinKind::corner;
+  j.kind = join_kind(j.angle_deg, flags.smooth.value_or(false), thresholds);
   return j;
 }
 
 }  // namespace
+
+JoinKind join_kind(double angle_deg, bool flagged_smooth, const JoinThresholds& thresholds) {
+  const double a = std::abs(angle_deg);
+  if (a <= thresholds.smooth_max_deg) return JoinKind::smooth;
+  if (a < thresholds.kink_max_deg || flagged_smooth) return JoinKind::kink;
+  return JoinKind::corner;
+}
 
 std::vector<Join> joins_of(const Contour& c, const JoinThresholds& thresholds) {
   std::vector<Join> joins;

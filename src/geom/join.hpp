@@ -53,6 +53,10 @@ CurvatureJump curvature_jump(double in, double out, double units_per_em, const C
 /// None where a side of `j` has no curvature (a retracted handle: unbounded).
 std::optional<CurvatureJump> curvature_jump(const Join& j, double units_per_em, const CurvatureJumpRule& rule = {});
 
+/// The kind of a join turning by `angle_deg` (signed or not), `flagged_smooth` where the source
+/// flags its node smooth (a kink however far it turns).
+JoinKind join_kind(double angle_deg, bool flagged_smooth, const JoinThresholds& thresholds = {});
+
 /// The joins of a contour: every node of a closed one, the interior nodes of an open one.
 std::vector<Join> joins_of(const Contour& c, const JoinThresholds& thresholds = {});
 
