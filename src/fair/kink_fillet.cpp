@@ -19,11 +19,8 @@ namespace gf {
 
 namespace {
 
-// The two legs of the fillet at a kink: from the vertex back along the line before, and on
-// along the line after.
-struct Legs {
-  Vec2 back, on;
-};
+// A fillet's longer leg at most this many times its shorter (fillet_legs).
+constexpr double longest_leg_ratio = 4.0;
 
 // How far the fillet (P0, C, C, P3) strays from the polyline P0–C–P3.
 double fillet_deviation(Vec2 p0, Vec2 c, Vec2 p3) {
@@ -52,22 +49,32 @@ std::vector<Vec2> leg_choices(Vec2 line, double most, bool integer_grid) {
   return out;
 }
 
-// The legs within the allowance whose shorter is longest (then whose sum is): the fillet
-// turns most gently there.
-std::optional<Legs> fillet_legs(const Line& before, const Line& after, double most_back, double most_on,
-                                double allowance, bool integer_grid) {
+}  // namespace
+
+std::optional<FilletLegs> fillet_legs(const Line& before, const Line& after, double most_back, double most_on,
+                                      double allowance_units, bool integer_grid) {
   const Vec2 c = before.end();
-  std::optional<Legs> best;
+  std::optional<FilletLegs> best;
   double best_short = 0.0, best_sum = 0.0;
-  for (const Vec2 b : leg_choices(before.start() - c, most_back, integer_grid))
-    for (const Vec2 o : leg_choices(after.end() - c, most_on, integer_grid)) {
+  const std::vector<Vec2> backs = leg_choices(before.start() - c, most_back, integer_grid);
+  const std::vector<Vec2> ons = leg_choices(after.end() - c, most_on, integer_grid);
+  for (const Vec2 b : backs)
+    for (const Vec2 o : ons) {
       const double shorter = std::min(norm(b), norm(o)), sum = norm(b) + norm(o);
       if (shorter < best_short || (shorter == best_short && sum <= best_sum)) continue;
-      if (fillet_deviation(c + b, c, c + o) > allowance) continue;
-      best = Legs{b, o}, best_short = shorter, best_sum = sum;
+      // The longer leg at most longest_leg_ratio times the shorter, or its line's shortest leg:
+      // past that it only turns more of its line into curve (FreeSerif Italic's V: a stroke
+      // split 7 units from its serif's curve, drawn whole as the fillet).
+      const double longer = std::max(norm(b), norm(o));
+      const double shortest_leg = norm(norm(b) >= norm(o) ? backs.back() : ons.back());
+      if (longer > std::max(longest_leg_ratio * shorter, shortest_leg)) continue;
+      if (fillet_deviation(c + b, c, c + o) > allowance_units) continue;
+      best = FilletLegs{b, o}, best_short = shorter, best_sum = sum;
     }
   return best;
 }
+
+namespace {
 
 // The way a join turns: +1 left, −1 right.
 int way(const Join& j) { return (j.angle_deg > 0.0) - (j.angle_deg < 0.0); }
@@ -100,7 +107,7 @@ int neighbour_bend(const Contour& contour, const std::vector<std::optional<Join>
 }
 
 // Node k joins segment k − 1 to segment k: the kinks between two lines that a fillet may take,
-// where it bends the way its neighbours do.
+// where it bends the way its neighbours do, or they bend opposite ways.
 std::vector<bool> kinks_to_fillet(const Contour& contour, const std::vector<std::optional<Join>>& join_at) {
   const std::size_t n = contour.segments.size();
   const auto is_line_at = [&](std::size_t i) { return std::holds_alternative<Line>(contour.segments[i % n]); };
@@ -108,11 +115,13 @@ std::vector<bool> kinks_to_fillet(const Contour& contour, const std::vector<std:
   for (std::size_t k = 0; k < n; ++k) {
     const std::optional<Join>& j = join_at[k];
     if (!j || !small_kink(*j) || !is_line_at(k + n - 1) || !is_line_at(k)) continue;
-    kink[k] = true;
-    for (const int step : {-1, 1}) {
-      const int other = neighbour_bend(contour, join_at, k, step);
-      if (other != 0 && other != way(*j)) kink[k] = false;
-    }
+    // Against both (or the one known): an inflection the kink did not count as. Between a
+    // bend each way the kink already lies on an inflection, which the fillet only moves
+    // (Gentium Plus Italic's V: a stroke split near its top serif, which bends the other way
+    // from the foot's curve 1,191 units on).
+    const int back = neighbour_bend(contour, join_at, k, -1), on = neighbour_bend(contour, join_at, k, 1);
+    const auto agrees = [&](int bend) { return bend == 0 || bend == way(*j); };
+    kink[k] = (agrees(back) && agrees(on)) || (back != 0 && on != 0 && back != on);
   }
   return kink;
 }
@@ -191,8 +200,8 @@ std::vector<std::optional<Join>> joins_by_node(const Contour& contour) {
 }
 
 // Each kink's legs for a fillet with whole legs at node k, none where no legs do.
-std::vector<std::optional<Legs>> whole_legs(const Contour& contour, const std::vector<bool>& kink,
-                                            double allowance_units, bool integer_grid) {
+std::vector<std::optional<FilletLegs>> whole_legs(const Contour& contour, const std::vector<bool>& kink,
+                                                  double allowance_units, bool integer_grid) {
   const std::size_t n = contour.segments.size();
   const auto line = [&](std::size_t i) { return std::get_if<Line>(&contour.segments[i % n]); };
   // A line with a kink at both ends gives each fillet half of it; else the whole.
@@ -200,7 +209,7 @@ std::vector<std::optional<Legs>> whole_legs(const Contour& contour, const std::v
     const Line& l = *line(i);
     return norm(l.end() - l.start()) * (other_end < kink.size() && kink[other_end] ? 0.5 : 1.0);
   };
-  std::vector<std::optional<Legs>> at(kink.size());
+  std::vector<std::optional<FilletLegs>> at(kink.size());
   for (std::size_t k = 0; k < n; ++k) {
     if (!kink[k]) continue;
     const std::size_t before = (k + n - 1) % n;
@@ -282,9 +291,10 @@ namespace {
 // The kinks whose lines have whole legs for a fillet, filleted.
 Contour fillet_with_whole_legs(const Contour& contour, double allowance_units, bool integer_grid) {
   const std::size_t n = contour.segments.size();
-  const std::vector<std::optional<Legs>> at =
+  const std::vector<std::optional<FilletLegs>> at =
       whole_legs(contour, kinks_to_fillet(contour, joins_by_node(contour)), allowance_units, integer_grid);
-  if (std::none_of(at.begin(), at.end(), [](const std::optional<Legs>& l) { return l.has_value(); })) return contour;
+  if (std::none_of(at.begin(), at.end(), [](const std::optional<FilletLegs>& l) { return l.has_value(); }))
+    return contour;
 
   Contour out;
   out.closed = contour.closed;
@@ -388,7 +398,7 @@ Contour fillet_line_kinks(const Contour& contour, double allowance_units, bool i
 Contour fillet_legless_kinks_at_moved_vertices(const Contour& contour, double leg_allowance_units,
                                                double allowance_units) {
   const std::vector<bool> kink = kinks_to_fillet(contour, joins_by_node(contour));
-  const std::vector<std::optional<Legs>> legs = whole_legs(contour, kink, leg_allowance_units, true);
+  const std::vector<std::optional<FilletLegs>> legs = whole_legs(contour, kink, leg_allowance_units, true);
   std::vector<bool> legless(kink.size());
   for (std::size_t k = 0; k < kink.size(); ++k) legless[k] = kink[k] && !legs[k];
   if (std::none_of(legless.begin(), legless.end(), [](bool b) { return b; })) return contour;

@@ -2,9 +2,26 @@
 // both handles on the kink's vertex.
 #pragma once
 
+#include <optional>
+
 #include "geom/contour.hpp"
 
 namespace gf {
+
+/// The two legs of a fillet (P0, C, C, P3) at the kink C: P0 − C back along the line before,
+/// P3 − C on along the line after.
+struct FilletLegs {
+  Vec2 back, on;
+};
+
+/// The legs, at most `most_back` and `most_on` long, of the fillet at the kink where `before`
+/// ends and `after` starts that stays within `allowance_units` of the two lines and whose
+/// shorter leg is longest (then whose sum is): the fillet turns most gently there. The longer
+/// leg at most four times the shorter, or its line's shortest leg (since stop 97; before, a
+/// leg took the whole of a long line beside a short one, and drew it as a curve). On
+/// `integer_grid`, whole numbers of each line's primitive step. None where no legs do.
+std::optional<FilletLegs> fillet_legs(const Line& before, const Line& after, double most_back, double most_on,
+                                      double allowance_units, bool integer_grid);
 
 /// `contour` with the joins of two lines that turn by more than the smooth limit and less than
 /// the kink limit taken away where the lines (or more, kink after kink) made one keep every
@@ -28,7 +45,9 @@ Contour merge_line_kinks(const Contour& contour, double allowance_units);
 /// keeps the fillet within `allowance_units` of the two lines, each leg at most its line (half
 /// of it where the line's other end is a kink too); on `integer_grid`, a whole number of its
 /// line's primitive steps (P0 and P3 on the grid). A kink whose fillet would bend against the
-/// curve or kink next to it along the contour (an inflection the kink did not count as) stays.
+/// curves or kinks next to it along the contour, or against the one of them whose bend is
+/// known, stays (an inflection the kink did not count as); between neighbours bending opposite
+/// ways the kink lies on an inflection already, and the fillet only moves it.
 /// Contours with no such kink come back unchanged.
 /// On `integer_grid`, a kink left so (no whole legs within the allowance: a line's primitive
 /// step longer than the leg may be) is then tried as fillet_kinks_at_moved_vertices does.

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
+#include "fair/curve_line_joins.hpp"
 #include "geom/outline_move.hpp"
 
 namespace gf {
@@ -19,18 +19,6 @@ constexpr double shortest_extremum_handle = 8.0;
 // The unit axis direction nearest the unit vector d.
 Vec2 nearest_axis(Vec2 d) {
   return std::abs(d.x) >= std::abs(d.y) ? Vec2{d.x > 0.0 ? 1.0 : -1.0, 0.0} : Vec2{0.0, d.y > 0.0 ? 1.0 : -1.0};
-}
-
-// The shortest primitive grid step of the line from a to b with each end moved by a unit or
-// less: the step rounding can give it at best.
-double shortest_step(Vec2 a, Vec2 b) {
-  const Vec2 d = nearest_grid_point(b) - nearest_grid_point(a);
-  double best = std::numeric_limits<double>::infinity();
-  for (int dx = -2; dx <= 2; ++dx)
-    for (int dy = -2; dy <= 2; ++dy)
-      if (const std::optional<Vec2> s = primitive_step(d + Vec2{static_cast<double>(dx), static_cast<double>(dy)}))
-        best = std::min(best, norm(*s));
-  return best;
 }
 
 // A line leaning between the limits' angles off its nearest axis.
@@ -51,18 +39,6 @@ std::optional<Lean> leaning(Vec2 j, Vec2 far, const LeaningLineLimits& limits) {
   return Lean{t, axis, angle};
 }
 
-// The sign of the curvature the cubic ends with just before its end (the end itself is flat:
-// it meets its line with κ = 0); 0 where it is straight there.
-double end_bend(const Cubic& c) {
-  const auto velocity = c.hodograph();
-  const auto acceleration = velocity.hodograph();
-  for (const double t : {0.9, 0.75, 0.5}) {
-    const double k = cross(velocity.point_at(t), acceleration.point_at(t));
-    if (k != 0.0) return k > 0.0 ? 1.0 : -1.0;
-  }
-  return 0.0;
-}
-
 // The join of `curve` (ending at the join) and the line from there to `far`, rebuilt as the
 // curve turned onto the axis, the fillet and the line's new start; none where the limits say no.
 struct Filleted {
@@ -74,7 +50,7 @@ std::optional<Filleted> fillet_join(const Cubic& curve, Vec2 far, const LeaningL
   const std::optional<Lean> lean = leaning(j, far, limits);
   if (!lean) return std::nullopt;
   const Vec2 axis = lean->axis;
-  const double handle = distance(curve.p[2], j), step = shortest_step(j, far);
+  const double handle = distance(curve.p[2], j), step = shortest_line_step(j, far);
   if (!(handle > 0.0) || step <= handle || distance(j, far) < 3.0 * step) return std::nullopt;
   // From the axis onto a line leaning the other way from the curve's bend is an inflection
   // (where the curve's handle is too short for any grid direction on its own side).
@@ -117,7 +93,7 @@ std::optional<Cubic> fillet_from_extremum(const Cubic& ramp, Vec2 far, const Lea
     if (std::abs(cross(axis, p - n)) >= 0.5) return std::nullopt;
   const double kappa = node_curvature(ramp, SegmentEnd::start), side = cross(axis, lean->direction);
   if (kappa * side <= 0.0) return std::nullopt;
-  const double step = shortest_step(j, far);
+  const double step = shortest_line_step(j, far);
   const double m = std::sqrt(2.0 / 3.0 * step * std::abs(side) / std::abs(kappa));
   if (!(m >= shortest_extremum_handle)) return std::nullopt;
   const Vec2 v = n + axis * m;
@@ -138,19 +114,14 @@ std::optional<Cubic> fillet_from_extremum(const Cubic& ramp, Vec2 far, const Lea
 int fillet_leaning_line_ends(std::vector<OutlineNode>& nodes, bool closed, const LeaningLineLimits& limits) {
   int filleted = 0;
   for (std::size_t k = 0; k < nodes.size(); ++k) {
-    const std::size_t n = nodes.size();
-    if (!closed && (k == 0 || k + 1 == n)) continue;
-    const std::size_t prev = (k + n - 1) % n, next = (k + 1) % n;
+    const std::optional<CurveLineJoin> join = curve_line_join(nodes, closed, k);
+    if (!join) continue;
+    const std::size_t n = nodes.size(), prev = (k + n - 1) % n, next = (k + 1) % n;
     OutlineNode& node = nodes[k];
-    if (!node.smooth || node.in_handle.has_value() == node.out_handle.has_value()) continue;
-    const bool arrives = node.in_handle.has_value();  // a cubic arrives, the line leaves
-    // The line's side must be a line (no handle at its far end either) and the cubic whole.
-    if (arrives ? nodes[next].in_handle.has_value() || !nodes[prev].out_handle
-                : nodes[prev].out_handle.has_value() || !nodes[next].in_handle)
-      continue;
-    const Cubic cubic = arrives ? outline_cubic(nodes, prev) : outline_cubic(nodes, k).reversed();
+    const bool arrives = join->arrives;  // a cubic arrives, the line leaves
+    const Cubic& cubic = join->curve;
     if (cubic.p[1] == cubic.p[2]) continue;  // a fillet already (both handles on its vertex)
-    const Vec2 far = nodes[arrives ? next : prev].point;
+    const Vec2 far = nodes[join->far].point;
     // A ramp from a smooth extremum: the fillet from the extremum, in the ramp's place.
     const OutlineNode& start = nodes[arrives ? prev : next];
     if (start.smooth && (arrives ? start.in_handle : start.out_handle))

@@ -397,12 +397,14 @@ class RunPlacement {
   /// The cheapest placement with ends sliding or not; false (the placement as it was) where
   /// every choice is degenerate.
   bool choose(bool slides) {
+    // A pinned node (fair/line_splits.hpp) stays where it is.
+    const auto places_of = [&](std::size_t k, const std::optional<Slide>& slid) {
+      if (exact_[k].pinned) return std::vector<EndPlace>{{exact_[k].point, 0.0}};
+      return end_places(exact_[k].point, slid, room(k), limits_.any_grid_neighbour);
+    };
     std::vector<std::vector<EndPlace>> places;
-    places.push_back(end_places(exact_[run_.front().i].point, slides ? slide(run_.front(), true) : std::nullopt,
-                                room(run_.front().i), limits_.any_grid_neighbour));
-    for (const LineOnGrid& l : run_)
-      places.push_back(end_places(exact_[l.j].point, slides ? slide(l, false) : std::nullopt, room(l.j),
-                                  limits_.any_grid_neighbour));
+    places.push_back(places_of(run_.front().i, slides ? slide(run_.front(), true) : std::nullopt));
+    for (const LineOnGrid& l : run_) places.push_back(places_of(l.j, slides ? slide(l, false) : std::nullopt));
     std::vector<std::size_t> chosen = cheapest_places(run_, places, placer_);
     if (chosen.empty()) return false;
     places_ = std::move(places), chosen_ = std::move(chosen);

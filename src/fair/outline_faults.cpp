@@ -97,11 +97,11 @@ OutlineFaults FaultCounter::count(const Contour& faired) const {
   return out;
 }
 
-std::vector<Vec2> jumping_joins(const Contour& faired, double units_per_em) {
+std::vector<Vec2> joins_at_fault(const Contour& faired, JoinFault fault, double units_per_em) {
   const JoinThresholds thresholds;
   std::vector<Vec2> out;
   for (const Join& j : joins_of(faired, thresholds))
-    if (join_fault(j, thresholds, units_per_em) == JoinFault::jump) out.push_back(j.point);
+    if (join_fault(j, thresholds, units_per_em) == fault) out.push_back(j.point);
   return out;
 }
 

@@ -51,9 +51,9 @@ class FaultCounter {
 enum class JoinFault { corner, kink, jump, none };
 JoinFault join_fault(const Join& j, const JoinThresholds& thresholds, double units_per_em);
 
-/// Where `faired` has a smooth join whose curvature jumps as the check counts it (an unbounded
-/// side counts), on an em of `units_per_em`.
-std::vector<Vec2> jumping_joins(const Contour& faired, double units_per_em);
+/// Where `faired` has a join the check counts as `fault` (a jump: a smooth join whose curvature
+/// jumps, an unbounded side counting), on an em of `units_per_em`.
+std::vector<Vec2> joins_at_fault(const Contour& faired, JoinFault fault, double units_per_em);
 
 /// The sign changes of κ along each stretch of `c` between corners (of its `joins`, joins_of(c),
 /// those turning by more than `kink_max_deg` or without a direction; kinks belong to the

@@ -20,6 +20,9 @@ struct OutlineNode {
   /// (0, ±1) at horizontal and vertical extrema, short diagonals such as (2, 1) where a span
   /// was cut.
   std::optional<Vec2> grid_step;
+  /// On the grid already and to stay there when rounded: where a line was split so that both
+  /// its parts step short, the vertex and the curve's end (fair/line_splits.hpp).
+  bool pinned = false;
 
   friend bool operator==(const OutlineNode&, const OutlineNode&) = default;
 };

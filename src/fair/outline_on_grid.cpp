@@ -1,9 +1,13 @@
 #include "fair/outline_on_grid.hpp"
 
 #include <algorithm>
+#include <functional>
 
+#include "fair/curve_line_joins.hpp"
 #include "fair/grid_rounding.hpp"
 #include "fair/jump_splits.hpp"
+#include "fair/kink_fillet.hpp"
+#include "fair/line_splits.hpp"
 #include "fair/outline_faults.hpp"
 #include "fair/rounding_retry.hpp"
 #include "geom/tolerance_band.hpp"
@@ -36,6 +40,29 @@ constexpr double text_counted_jump_cost = 10.0 * text_slope_jump_weight;
 constexpr int rounding_retries = 3;  // halvings where rounding strayed, then as many of every cubic's
 // Units: how far rounding may have moved a node from its float place (fair/jump_splits.hpp).
 constexpr double split_reach = 3.0;
+// Of the tolerance, how far a line split for short steps may move the outline (fair/line_splits):
+// at a quarter, FreeSerif Italic's V found no split of its 719-unit stroke, at half one with
+// steps (2, 3) and (37, 61).
+constexpr double line_split_move_share = 0.5;
+
+// Where rounding strayed, a curve meeting a line whose handle it gave more than this many times
+// its float length (and a unit) took whole steps of the line too long for it.
+constexpr double stretched_handle = 2.0;
+
+// The longest handle at the node of `c` nearest `p`, within `reach` of it; 0 where there is none.
+double longest_handle_near(const Contour& c, Vec2 p, double reach) {
+  const std::size_t n = c.segments.size();
+  double longest = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2 node = c.node_point(i);
+    if (distance(node, p) > reach) continue;
+    if (const Cubic* out = std::get_if<Cubic>(&c.segments[i])) longest = std::max(longest, distance(out->p[1], node));
+    if (!c.closed && i == 0) continue;
+    if (const Cubic* in = std::get_if<Cubic>(&c.segments[(i + n - 1) % n]))
+      longest = std::max(longest, distance(in->p[2], node));
+  }
+  return longest;
+}
 
 }  // namespace
 
@@ -120,7 +147,7 @@ std::optional<OutlineOnGrid> rounded_with_splits(const Contour& source, const st
   if (!settings.split_beside_jumps || settings.rounding != Rounding::integers ||
       settings.profile != FairProfile::text || settings.continuity != Continuity::g2)
     return std::nullopt;
-  const std::vector<Vec2> jumps = jumping_joins(rounded, settings.units_per_em);
+  const std::vector<Vec2> jumps = joins_at_fault(rounded, JoinFault::jump, settings.units_per_em);
   if (jumps.empty()) return std::nullopt;
   const std::vector<OutlineNode> split =
       split_cubics_beside(nodes, source.closed, jumps, 2.0 * settings.shortest_rounded_span_units, split_reach);
@@ -130,6 +157,57 @@ std::optional<OutlineOnGrid> rounded_with_splits(const Contour& source, const st
   const FaultCounter faults(source, settings.units_per_em);
   if (!fewer_faults(faults.count(again.contour), faults.count(rounded))) return std::nullopt;
   return again;
+}
+
+std::optional<SplitOnGrid> rounded_with_line_splits(const Contour& source, const std::vector<OutlineNode>& nodes,
+                                                    const OutlineOnGrid& rounded, const SampledContour& sampled_source,
+                                                    const FairSettings& settings, double available,
+                                                    bool halving_allowances) {
+  if (settings.rounding != Rounding::integers) return std::nullopt;
+  const bool strayed = rounded.deviation > settings.tolerance_units;
+  // The float nodes to split at, last first: a split puts its vertex in beside its node (or at
+  // the end), and the nodes before stay where they are. Where rounding strayed, the joins of a
+  // curve to a line where it stretched the curve's handle (to whole steps of the line:
+  // FreeSerif Italic's V, 719 units against 9, and the rounding came out 256 units off); else
+  // those at kinks.
+  std::vector<std::size_t> at;
+  if (strayed) {
+    for (std::size_t k = 0; k < nodes.size(); ++k)
+      if (const std::optional<CurveLineJoin> join = curve_line_join(nodes, source.closed, k)) {
+        const double handle = distance(join->curve.p[2], join->curve.p[3]);
+        if (longest_handle_near(rounded.contour, nodes[k].point, split_reach) > stretched_handle * handle + 1.0)
+          at.push_back(k);
+      }
+  } else {
+    for (const Vec2 kink : joins_at_fault(rounded.contour, JoinFault::kink, settings.units_per_em))
+      if (const std::size_t k = nearest_node(nodes, kink); distance(nodes[k].point, kink) <= split_reach)
+        at.push_back(k);
+  }
+  if (at.empty()) return std::nullopt;
+  std::sort(at.begin(), at.end(), std::greater<>());
+  at.erase(std::unique(at.begin(), at.end()), at.end());
+  LineSplitLimits limits;
+  limits.max_move_units = line_split_move_share * settings.tolerance_units;
+  SplitOnGrid out{nodes, {}};
+  bool split = false;
+  for (const std::size_t k : at) {
+    std::vector<OutlineNode> trial = out.nodes;
+    if (!split_line_at(trial, source.closed, k, limits)) continue;
+    if (distance_between(SampledContour(to_contour(trial, source.closed)), sampled_source) > available) continue;
+    out.nodes = std::move(trial);
+    split = true;
+  }
+  if (!split) return std::nullopt;
+  out.outline = settle_on_grid(out.nodes, source.closed, sampled_source, settings, halving_allowances);
+  const double left = settings.tolerance_units - out.outline.deviation;
+  if (left < 0.0) return std::nullopt;
+  if (strayed) return out;
+  // Counted as the fillets will leave it: the kinks are now theirs.
+  const FaultCounter faults(source, settings.units_per_em);
+  if (!fewer_faults(faults.count(fillet_line_kinks(out.outline.contour, 0.95 * left, true)),
+                    faults.count(rounded.contour)))
+    return std::nullopt;
+  return out;
 }
 
 }  // namespace gf

@@ -34,4 +34,22 @@ std::optional<OutlineOnGrid> rounded_with_splits(const Contour& source, const st
                                                  const Contour& rounded, const SampledContour& sampled_source,
                                                  const FairSettings& settings, bool halving_allowances);
 
+/// An outline's nodes with lines split, and their outline settled on the grid.
+struct SplitOnGrid {
+  std::vector<OutlineNode> nodes;
+  OutlineOnGrid outline;
+};
+
+/// Where `rounded`, settle_on_grid's outline of `nodes`, keeps a kink at a curve's join to a
+/// line within the tolerance of `source`, or strays past it (at each join of a curve to a line
+/// where it stretched the curve's handle then): `nodes` with each such line split where
+/// both its parts step short (fair/line_splits.hpp), each split kept where the float outline
+/// stays within `available` of the source, settled again. None where nothing was split, or
+/// that strays, or (where `rounded` did not) has no fewer faults than `rounded` once the
+/// fillets have taken the kinks between lines (fair/kink_fillet.hpp).
+std::optional<SplitOnGrid> rounded_with_line_splits(const Contour& source, const std::vector<OutlineNode>& nodes,
+                                                    const OutlineOnGrid& rounded, const SampledContour& sampled_source,
+                                                    const FairSettings& settings, double available,
+                                                    bool halving_allowances);
+
 }  // namespace gf

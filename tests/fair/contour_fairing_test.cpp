@@ -212,6 +212,25 @@ TEST(ContourFairing, AKinkWhoseFilletTakesAWholeLineIsFilleted) {
   for (const Join& j : joins_of(r.contour)) EXPECT_NE(j.kind, JoinKind::kink) << "node " << j.node;
 }
 
+// A closed outline as a TrueType font draws it: each on-curve point with the quadratic's control
+// point that follows it, none where a line follows.
+Contour quadratic_outline(std::initializer_list<std::pair<Vec2, std::optional<Vec2>>> points) {
+  Contour c;
+  const std::vector<std::pair<Vec2, std::optional<Vec2>>> p(points);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Vec2 from = p[i].first, to = p[(i + 1) % p.size()].first;
+    if (p[i].second) c.segments.push_back(Quad{{from, *p[i].second, to}});
+    else c.segments.push_back(Line{{from, to}});
+  }
+  c.nodes.assign(c.segments.size(), NodeFlags{});
+  return c;
+}
+
+// Every join of `c` smooth or a corner, none a kink.
+void expect_no_kink(const Contour& c) {
+  for (const Join& j : joins_of(c)) EXPECT_NE(j.kind, JoinKind::kink) << "node " << j.node << " at " << j.point.x << ", " << j.point.y;
+}
+
 TEST(ContourFairing, StrokesDrawnWithStraightQuadraticsLeaveNoKink) {
   // Liberation Sans Narrow's V and v (2,048 units): their inner strokes run into the notch as
   // lines and quadratics whose control point sits on their start, bending 0.1–2.8° at each
@@ -219,23 +238,12 @@ TEST(ContourFairing, StrokesDrawnWithStraightQuadraticsLeaveNoKink) {
   // (five); merged whole, the V's left stroke strays 8.6 units, so a line runs on only as far
   // as it stays within the tolerance, and the v's, whose curve leaves its last line along that
   // line's (1, 4) step, not into the curve.
-  const auto stroke = [](std::initializer_list<std::pair<Vec2, std::optional<Vec2>>> points) {
-    Contour c;
-    const std::vector<std::pair<Vec2, std::optional<Vec2>>> p(points);
-    for (std::size_t i = 0; i < p.size(); ++i) {
-      const Vec2 from = p[i].first, to = p[(i + 1) % p.size()].first;
-      if (p[i].second) c.segments.push_back(Quad{{from, *p[i].second, to}});
-      else c.segments.push_back(Line{{from, to}});
-    }
-    c.nodes.assign(c.segments.size(), NodeFlags{});
-    return c;
-  };
   const std::optional<Vec2> line;
-  const Contour upper = stroke({{{641, 0}, line}, {{479, 0}, line}, {{7, 1409}, line}, {{172, 1409}, line},
+  const Contour upper = quadratic_outline({{{641, 0}, line}, {{479, 0}, line}, {{7, 1409}, line}, {{172, 1409}, line},
                                 {{492, 417}, Vec2{492, 417}}, {{516, 328}, line}, {{539, 248}, Vec2{539, 248}},
                                 {{561, 168}, Vec2{561, 168}}, {{582, 246}, Vec2{582, 246}}, {{604, 325}, line},
                                 {{630, 417}, line}, {{948, 1409}, line}, {{1113, 1409}, line}});
-  const Contour lower = stroke({{{503, 0}, line}, {{328, 0}, line}, {{6, 1082}, line}, {{163, 1082}, line},
+  const Contour lower = quadratic_outline({{{503, 0}, line}, {{328, 0}, line}, {{6, 1082}, line}, {{163, 1082}, line},
                                 {{358, 378}, Vec2{358, 378}}, {{372, 324}, line}, {{388, 259}, line}, {{403, 194}, line},
                                 {{415, 141}, Vec2{415, 141}}, {{428, 194}, line}, {{444, 258}, Vec2{452, 291}},
                                 {{460.5, 322.5}, Vec2{469, 354}}, {{476, 376}, line}, {{678, 1082}, line},
@@ -247,8 +255,29 @@ TEST(ContourFairing, StrokesDrawnWithStraightQuadraticsLeaveNoKink) {
     const ContourFairing r = fair_contour(*v, settings);
     ASSERT_TRUE(r.faired) << r.reason;
     EXPECT_LE(brute_force_hausdorff(*v, r.contour), 1.01 * settings.tolerance_units);
-    for (const Join& j : joins_of(r.contour)) EXPECT_NE(j.kind, JoinKind::kink) << "node " << j.node << " at " << j.point.x << ", " << j.point.y;
+    expect_no_kink(r.contour);
   }
+}
+
+TEST(ContourFairing, CurvesMeetingStrokesOfLongStepLeaveNoKink) {
+  // FreeSerif Italic's V (1,000 units): each serif's curve meets a stroke whose grid step is
+  // far longer than the curve's handle there: (373, 615), 719 units, against 9. Rounding left
+  // the curve's end 0.77° off the stroke, and 1.15° and 2.94° at the other two; each stroke is
+  // now split where both its parts step short, and the turn there filleted.
+  const std::optional<Vec2> line;
+  const Contour v = quadratic_outline({{{738, 653}, line}, {{738, 637}, Vec2{706, 636}}, {{682, 597}, line},
+                                       {{309, -18}, line}, {{290, -18}, line}, {{205, 502}, Vec2{189, 596}},
+                                       {{178.5, 614}, Vec2{168, 632}}, {{126, 637}, line}, {{126, 653}, line},
+                                       {{367, 653}, line}, {{367, 637}, Vec2{320, 632}}, {{305, 622}, Vec2{290, 612}},
+                                       {{290, 586}, Vec2{290, 576}}, {{291, 571}, line}, {{357, 128}, line},
+                                       {{563, 484}, Vec2{615, 574}}, {{615, 603}, Vec2{615, 630}}, {{552, 637}, line}});
+  FairOptions fo;
+  fo.rounding = Rounding::integers;
+  const FairSettings settings = resolve_settings(fo, 1000.0);
+  const ContourFairing r = fair_contour(v, settings);
+  ASSERT_TRUE(r.faired) << r.reason;
+  EXPECT_LE(brute_force_hausdorff(v, r.contour), 1.01 * settings.tolerance_units);
+  expect_no_kink(r.contour);
 }
 
 TEST(ContourFairing, LinesMergedPassByPassLeaveNoKink) {

@@ -5,10 +5,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include "geom/curvature.hpp"
+#include "geom/join.hpp"
 #include "point_set_distance.hpp"
 #include "test_shapes.hpp"
 
@@ -55,6 +57,46 @@ TEST(KinkFillet, AKinkAgainstItsNeighboursStays) {
   const Contour source = polygon({{0, 0}, {1000, 0}, {1000, 100}, {600, 104}, {300, 100}, {0, 104}});
   const Contour out = fillet_line_kinks(source, 2.0, true);
   EXPECT_EQ(out.segments.size(), source.segments.size());
+}
+
+TEST(KinkFillet, AKinkBetweenBendsEachWayIsFilleted) {
+  // A stroke from a curve bending left, through a 0.92° kink left, into a curve bending right
+  // (a split italic stroke, Gentium Plus Italic's V): the contour already turns from one bend
+  // to the other along the lines, and the fillet, bending left with the first curve, adds no
+  // inflection. Mirrored, the kink turns right with the first curve.
+  for (const double m : {1.0, -1.0}) {
+    const auto at = [m](double x, double y) { return Vec2{m * x, y}; };
+    Contour source = test::closed({Cubic{{at(-200, 60), at(-120, 10), at(-60, 0), at(0, 0)}}, Line{{at(0, 0), at(500, 0)}},
+                                   Line{{at(500, 0), at(1000, 8)}},
+                                   Cubic{{at(1000, 8), at(1125, 10), at(1175, 0), at(1200, -40)}},
+                                   Line{{at(1200, -40), at(1200, -300)}}, Line{{at(1200, -300), at(-200, -300)}},
+                                   Line{{at(-200, -300), at(-200, 60)}}});
+    const Contour out = fillet_line_kinks(source, 1.0, true);
+    const auto fillet = std::find_if(out.segments.begin(), out.segments.end(), [&](const Segment& s) {
+      const Cubic* c = std::get_if<Cubic>(&s);
+      return c && c->p[1] == at(500, 0) && c->p[2] == at(500, 0);
+    });
+    ASSERT_NE(fillet, out.segments.end()) << "mirror " << m;
+    EXPECT_EQ(*end_curvature(*fillet, SegmentEnd::start).curvature, 0.0);
+    EXPECT_EQ(*end_curvature(*fillet, SegmentEnd::end).curvature, 0.0);
+    for (const Join& j : joins_of(out)) EXPECT_NE(j.kind, JoinKind::kink) << "node " << j.node;
+    EXPECT_LE(test::directed_to_polyline(dense(out), dense(source)), 1.0);
+  }
+}
+
+TEST(KinkFillet, TheLongerLegIsAtMostFourTimesTheShorterOrAStep) {
+  // An 8-unit line from a corner, bent 0.82° into a 700-unit line of step (70, 1) (a stroke split
+  // near its end): the fillet's leg on the long line is one step, not the whole line, which
+  // would be drawn as a curve for nothing gentler.
+  const Contour source = polygon({{0, 0}, {8, 0}, {708, 10}, {708, -200}, {0, -200}});
+  const Contour out = fillet_line_kinks(source, 2.0, true);
+  const std::vector<std::size_t> fillets = fillets_checked(out);
+  ASSERT_EQ(fillets.size(), 1u);
+  const Cubic& fillet = std::get<Cubic>(out.segments[fillets.front()]);
+  EXPECT_EQ(fillet.p[1], (Vec2{8, 0}));
+  EXPECT_EQ(fillet.p[0], (Vec2{0, 0}));  // the short line whole
+  EXPECT_EQ(fillet.p[3], (Vec2{78, 1}));  // one step of the long one
+  EXPECT_LE(test::directed_to_polyline(dense(out), dense(source)), 2.0);
 }
 
 // Liberation Sans's N: its left stem tapers, (5, −97) then (5, −167), kinks of 1.2° and 1.7°

@@ -44,8 +44,8 @@ TEST(OutlineFaults, JumpingJoinsAreWhereTheJumpsAre) {
   // joins are corners and have none.
   const Contour c = closed({Line{{{0, 0}, {100, 0}}}, Cubic{{{100, 0}, {130, 0}, {150, 10}, {160, 30}}},
                             Line{{{160, 30}, {0, 100}}}, Line{{{0, 100}, {0, 0}}}});
-  EXPECT_EQ(jumping_joins(c, upm), std::vector<Vec2>{Vec2(100, 0)});
-  EXPECT_TRUE(jumping_joins(square, upm).empty());
+  EXPECT_EQ(joins_at_fault(c, JoinFault::jump, upm), std::vector<Vec2>{Vec2(100, 0)});
+  EXPECT_TRUE(joins_at_fault(square, JoinFault::jump, upm).empty());
 }
 
 TEST(OutlineFaults, AJumpOfExactlyTheLimitIsAJump) {
