@@ -29,6 +29,9 @@ struct Split {
   Vec2 join, vertex, step;
 };
 
+// The curve's handle at the split's join, `length` long: behind the join along the step.
+Vec2 handle_on_step(const Split& split, double length) { return split.join - split.step / norm(split.step) * length; }
+
 // Whether `a` turns onto `b` the way `bend` says (+1 left) and by no more than `most` radians.
 bool turns_gently(Vec2 a, Vec2 b, double bend, double most) {
   const double angle = turning_angle(a, b);
@@ -98,7 +101,7 @@ std::optional<Split> best_split(const Cubic& curve, Vec2 far, const LineSplitLim
   const auto moves = [&](const Split& split) {
     Cubic moved = curve;
     moved.p[3] = split.join;
-    moved.p[2] = split.join - split.step / norm(split.step) * handle;
+    moved.p[2] = handle_on_step(split, handle);
     return outline_move({curve, Line{{j, far}}}, {moved, Line{{split.join, split.vertex}}, Line{{split.vertex, far}}},
                         sample_spacing, off);
   };
@@ -124,8 +127,8 @@ bool split_line_at(std::vector<OutlineNode>& nodes, bool closed, std::size_t k, 
   const std::optional<Split> s = best_split(join->curve, nodes[join->far].point, limits);
   if (!s) return false;
   OutlineNode& node = nodes[k];
-  // The handle keeps its length, along the step behind the join.
-  const Vec2 handle = s->join - s->step / norm(s->step) * distance(join->curve.p[2], join->curve.p[3]);
+  // The handle keeps its length.
+  const Vec2 handle = handle_on_step(*s, distance(join->curve.p[2], join->curve.p[3]));
   node.point = s->join;
   node.pinned = true;  // rounding moving it would turn J–K's step
   (join->arrives ? node.in_handle : node.out_handle) = handle;
