@@ -42,8 +42,9 @@ std::vector<OutlineNode> split_cubics_beside(const std::vector<OutlineNode>& nod
   };
   if (n == 0) return nodes;
   for (const Vec2 join : joins) {
-    const std::size_t at = nearest_node(nodes, join);
-    if (distance(nodes[at].point, join) > reach) continue;
+    const std::optional<std::size_t> node = node_within(nodes, join, reach);
+    if (!node) continue;
+    const std::size_t at = *node;
     for (const std::size_t i : {(at + n - 1) % n, at})
       if (is_cubic(i) && distance(nodes[i].point, nodes[(i + 1) % n].point) >= shortest_chord) split[i] = true;
   }

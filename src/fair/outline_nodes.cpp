@@ -182,4 +182,11 @@ void merge_tiny_cubics(std::vector<OutlineNode>& nodes, bool closed, double shor
   }
 }
 
+std::optional<std::size_t> node_within(const std::vector<OutlineNode>& nodes, Vec2 p, double reach) {
+  if (nodes.empty()) return std::nullopt;
+  const std::size_t k = nearest_node(nodes, p);
+  if (distance(nodes[k].point, p) > reach) return std::nullopt;
+  return k;
+}
+
 }  // namespace gf

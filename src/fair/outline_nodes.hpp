@@ -108,6 +108,10 @@ inline bool is_primitive(Vec2 d) { return primitive_step(d) == d; }
 /// The index of the node of `nodes` (not empty) nearest `p`, the first of equals.
 std::size_t nearest_node(const std::vector<OutlineNode>& nodes, Vec2 p);
 
+/// nearest_node where it lies within `reach` of `p` (a float node for a join rounding moved);
+/// none where it does not, or `nodes` is empty.
+std::optional<std::size_t> node_within(const std::vector<OutlineNode>& nodes, Vec2 p, double reach);
+
 /// The primitive integer directions with |d|² ≤ `longest`, both ways along each: where a span
 /// is cut or a cubic split, the node goes where its tangent runs along one of them, so that
 /// rounding keeps its handles exactly collinear with it in whole steps of |d|. The shortest,

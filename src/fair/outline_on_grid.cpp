@@ -180,8 +180,7 @@ std::optional<SplitOnGrid> rounded_with_line_splits(const Contour& source, const
       }
   } else {
     for (const Vec2 kink : joins_at_fault(rounded.contour, JoinFault::kink, settings.units_per_em))
-      if (const std::size_t k = nearest_node(nodes, kink); distance(nodes[k].point, kink) <= split_reach)
-        at.push_back(k);
+      if (const std::optional<std::size_t> k = node_within(nodes, kink, split_reach)) at.push_back(*k);
   }
   if (at.empty()) return std::nullopt;
   std::sort(at.begin(), at.end(), std::greater<>());
