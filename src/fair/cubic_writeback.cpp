@@ -664,7 +664,8 @@ std::vector<Piece> write_spans(SpanWriter& writer, std::span<const RequiredNode>
 // apart left a cubic so short that whole grid steps could only make it straight, against the
 // curvature beyond it. A corner drawn that may not turn so keeps its tangent, and loses the
 // extremum's node only where the two are one grid place across the axis; one too far off the
-// axis to turn, only where they are also within a unit of each other.
+// axis to turn, only where they are also within a unit of each other. Where no cubic may
+// carry an extremum off its nodes, the node goes only where the corner takes it.
 void snap_extremum_to_corner(ChainPath& path, double budget, double flat_curvature, SpanCutting cutting,
                              ChainEnds corners, std::vector<RequiredNode>& nodes, SegmentEnd end) {
   const std::size_t n = nodes.size();
@@ -683,10 +684,15 @@ void snap_extremum_to_corner(ChainPath& path, double budget, double flat_curvatu
   // straighten, a jump against the curve before (Bonum's e: 4 units, 0.15 across; Quicksand's
   // v 0.16 under its baseline).
   const auto drop_within_one_grid_place = [&] {
-    if (std::abs(cross(axis / norm(axis), from_corner)) < same_grid_place)
+    if (!cutting.no_inner_extrema && std::abs(cross(axis / norm(axis), from_corner)) < same_grid_place)
       nodes.erase(nodes.begin() + static_cast<std::ptrdiff_t>(e));
   };
-  if (std::abs(turning_angle(tangent, axis)) > snap_turn) {
+  // Where no cubic may carry an extremum off its nodes (handwriting), the node stays, or, within
+  // a unit of the corner, the corner takes it however it turns: turned onto the axis, its
+  // cubic arrives along it (Delphine's F: 0.10 across but 0.55 along, dropped for its corner,
+  // a cusp, the cubic leaning back 23° carried it 0.67 off the corner, 1.16 once rounded).
+  const bool beside = cutting.no_inner_extrema && norm(from_corner) < 1.0;
+  if (!beside && std::abs(turning_angle(tangent, axis)) > snap_turn) {
     // Too far off the axis to turn onto it, the corner keeps its tangent; an extremum within a
     // unit of it goes too, where rounding would put the two on one or neighbouring grid points
     // (Junicode's u: the bowl's extremum 0.68 units from the serif's corner, 12° off the level,
@@ -704,7 +710,7 @@ void snap_extremum_to_corner(ChainPath& path, double budget, double flat_curvatu
   const bool drawn_as_corner = end_as_planned.beyond != Vec2{} &&
                                std::abs(turning_angle(end_as_planned.beyond, end_as_planned.tangent)) >=
                                    radians(kink_limit_deg);
-  if (drawn_as_corner) {
+  if (!beside && drawn_as_corner) {
     const double onto = angle_of(axis);
     const std::optional<double> kept = kept_corner_angle(end_as_planned, start, angle_of(tangent), onto);
     if (!kept || std::abs(wrapped_angle(*kept - onto)) > 1e-12) {

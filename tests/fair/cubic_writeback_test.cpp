@@ -170,6 +170,48 @@ TEST(CubicWriteback, AnExtremumWithinAUnitOfACornerTooFarOffItsAxisGoes) {
   EXPECT_LT(distance(rightmost, p0), 1.0);
 }
 
+// Where no cubic may carry an extremum off its nodes (handwriting), the corner takes an
+// extremum within a unit of it however far off the axis it leaves: turned onto the axis, its
+// cubic arrives along it and the extremum lies on the corner (Delphine's F: 0.55 units on and
+// 0.10 across a cusp, whose cubic leaning back had carried it 0.67 units off, 1.16 once
+// rounded). One farther off keeps its node, however near the axis.
+TEST(CubicWriteback, WithoutInnerExtremaACornerTakesAnExtremumWithinAUnitAndKeepsOneFarther) {
+  const SpanCutting handwriting{.no_inner_extrema = true};
+  const ChainEnds at_a_corner{.start_corner = true, .start_axis = {}, .end_axis = {}};
+  const double budget = 2.0, flat = 5e-4;
+  const Vec2 p0{100, 0};
+  // As Junicode's u above: 0.64 units on, 12.5° off the axis.
+  const FairedChain near =
+      stroke_leaving_a_corner({.lean_deg = 12.5, .turn_deg = 40.0, .first_leg = 4.0, .second_leg = 40.0, .alpha = 0.5});
+  ASSERT_EQ(near.segments.size(), 1u);
+  const ChainCubics smooth = write_chain_as_cubics(near, budget, flat, {}, handwriting);
+  const ChainCubics taken = write_chain_as_cubics(near, budget, flat, at_a_corner, handwriting);
+  ASSERT_EQ(taken.nodes.size(), smooth.nodes.size() - 1);
+  const OutlineNode& c = taken.nodes.front();
+  EXPECT_EQ(c.point, p0);
+  ASSERT_TRUE(c.out_handle && c.grid_step);
+  EXPECT_EQ(*c.grid_step, (Vec2{0, 1}));
+  EXPECT_NEAR(c.out_handle->x, p0.x, 1e-9);
+  for (std::size_t k = 1; k < taken.nodes.size(); ++k) EXPECT_GT(distance(taken.nodes[k].point, p0), 20.0);
+  ASSERT_TRUE(taken.nodes[1].in_handle);
+  const Cubic first{c.point, *c.out_handle, *taken.nodes[1].in_handle, taken.nodes[1].point};
+  EXPECT_EQ(inner_axis_extrema_of(first).all, 0);
+  // As Bonum's e above: a few units on, 0.08 across a corner drawn turning by 4.6°.
+  const FairedChain farther =
+      stroke_leaving_a_corner({.lean_deg = 4.2, .turn_deg = 90.0, .first_leg = 30.0, .second_leg = 30.0});
+  ASSERT_EQ(farther.segments.size(), 1u);
+  ChainEnds drawn_corner = at_a_corner;
+  drawn_corner.start_run_end.tangent = direction_of(radians(90.0 - 4.6));
+  drawn_corner.start_run_end.beyond = Vec2{0, 1};
+  const ChainCubics text = write_chain_as_cubics(farther, budget, flat, drawn_corner);
+  const ChainCubics kept = write_chain_as_cubics(farther, budget, flat, drawn_corner, handwriting);
+  ASSERT_EQ(kept.nodes.size(), text.nodes.size() + 1);
+  ASSERT_TRUE(kept.nodes[1].grid_step);
+  EXPECT_EQ(*kept.nodes[1].grid_step, (Vec2{0, 1}));
+  EXPECT_LT(distance(kept.nodes[1].point, p0), 10.0);
+  EXPECT_GT(distance(kept.nodes[1].point, p0), 1.0);
+}
+
 // Halving a span that misses the budget stops short of `shortest_span_units`: cubics of two to
 // four units, as the default allows, round onto a few grid points whose whole steps cannot set
 // their curvature (Lato's W had two of four units at its middle apex, κ·UPM 1,333 and 4,000
