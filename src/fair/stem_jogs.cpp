@@ -21,7 +21,7 @@ constexpr double shortest_curve_share = 2.0;  // a moved curve's chord, in jog w
 // A jog read in the direction of travel: from the line's end `b` (the line along unit `u`),
 // the cubics `jog`, in order. How far across the line (signed, along u's left normal) the jog
 // ends, where it is one.
-std::optional<double> jog_offset(Vec2 b, Vec2 u, std::span<const Cubic> jog, double max_across) {
+std::optional<double> jog_offset(Vec2 b, Vec2 u, std::span<const Cubic> jog, double max_across, bool s_only) {
   const double kink = radians(kink_limit_deg);
   const Vec2 normal{-u.y, u.x};
   const std::optional<Vec2> leaves = end_tangent(Segment{jog.front()}, SegmentEnd::start);
@@ -35,13 +35,15 @@ std::optional<double> jog_offset(Vec2 b, Vec2 u, std::span<const Cubic> jog, dou
     return std::nullopt;
   // An S, not a bend: its tangent turns away from the line's direction and comes back, both
   // ends within a quarter of the farthest it turns (Liberation Sans's n: its stem's top bends
-  // 1.7° towards the corner, a taper the designer drew).
+  // 1.7° towards the corner, a taper the designer drew). Between two parallel lines a bend is
+  // a jog too (`s_only` false).
   double farthest = 0.0;
   for (const Cubic& c : jog)
     for (int k = 1; k < 16; ++k)
       if (const Vec2 d = c.hodograph().point_at(k / 16.0); norm(d) > 0.0)
         farthest = std::max(farthest, std::abs(turning_angle(u, d)));
-  if (std::abs(turning_angle(u, *leaves)) > s_return * farthest || std::abs(turning_angle(u, *arrives)) > s_return * farthest)
+  if (s_only && (std::abs(turning_angle(u, *leaves)) > s_return * farthest ||
+                 std::abs(turning_angle(u, *arrives)) > s_return * farthest))
     return std::nullopt;
   // Every control point between the line and the jog's far side, give or take the slack.
   const double low = std::min(0.0, across) - jog_slack_units, high = std::max(0.0, across) + jog_slack_units;
@@ -95,46 +97,57 @@ std::optional<std::pair<Contour, double>> straighten_first_jog(const Contour& c,
         // A node the source flags a corner (the line's end, or one inside the jog) ends the search.
         const std::size_t node = way > 0 ? *at(std::ptrdiff_t(i) + k) : *at(std::ptrdiff_t(i) - k + 1);
         if (!c.nodes[node].smooth.value_or(true)) break;
-        const std::optional<double> across = jog_offset(to, u, jog, 2.0 * limit);
-        if (!across) continue;
         // The curve after the jog (a cubic, or a line turning away from it) and the segment
         // before the line.
         const std::optional<std::size_t> after = at(std::ptrdiff_t(i) + way * (k + 1));
         const std::optional<std::size_t> before = at(std::ptrdiff_t(i) - way);
         if (!after || *after == i || (before && *before == *after)) break;
-        // A line going on along the jog's far side would meet the new line at a kink.
         const Segment& next_one = c.segments[*after];
         const Vec2 onwards = way > 0 ? end_point(next_one) - start_point(next_one) : start_point(next_one) - end_point(next_one);
-        if (is_straight_segment(next_one) && std::abs(turning_angle(u, onwards)) < radians(kink_limit_deg)) break;
+        const bool straight_on = is_straight_segment(next_one) && std::abs(turning_angle(u, onwards)) < radians(kink_limit_deg);
+        // Or a line going on parallel along the jog's far side: the jog is between two lines,
+        // which become one (Liberation Sans Narrow's d: its stem 674 units across up to 990,
+        // a quadratic bending 2.4° off it, then 673 across; on the grid a cubic between two
+        // parallel tangents a unit apart cannot leave both with κ = 0).
+        const bool onto_line = straight_on && is_line(next_one) && !is_degenerate(next_one);
+        const std::optional<double> across = jog_offset(to, u, jog, 2.0 * limit, !onto_line);
+        if (!across) continue;
+        const Vec2 normal{-u.y, u.x};
+        const Vec2 far = onto_line ? (way > 0 ? end_point(next_one) : start_point(next_one)) : jog.back().p[3];
+        // Another straight segment going on along the far side would meet the new line at a kink.
+        if (straight_on && (!onto_line || std::abs(dot(far - to, normal) - *across) > jog_slack_units)) break;
+        // Past a line, the segment beyond it moves instead of the curve after the jog.
+        const std::optional<std::size_t> moving = onto_line ? at(std::ptrdiff_t(i) + way * (k + 2)) : after;
+        if (!moving || *moving == i || (before && *before == *moving)) break;
         // A short curve at either end would be bent out of shape by the move.
         const auto too_short = [&](std::optional<std::size_t> j) {
           return j && !is_straight_segment(c.segments[*j]) &&
                  distance(start_point(c.segments[*j]), end_point(c.segments[*j])) < shortest_curve_share * std::abs(*across);
         };
-        if (too_short(before) || too_short(after)) break;
-        const Vec2 shift = Vec2{-u.y, u.x} * (0.5 * *across);
-        const Vec2 far = jog.back().p[3];
+        if (too_short(before) || too_short(moving)) break;
+        const Vec2 shift = normal * (0.5 * *across);
         Contour moved = c;
         double most = 0.5 * std::abs(*across);
-        // Forwards the line's start takes +shift and the curve after the jog −shift from its
-        // start; backwards the same, read the other way round.
+        // Forwards the line's start takes +shift and the segment after the jog (or after the
+        // line beyond it) −shift from its start; backwards the same, read the other way round.
         const SegmentEnd after_end = way > 0 ? SegmentEnd::start : SegmentEnd::end;
-        moved.segments[*after] = with_end_moved(c.segments[*after], after_end, -1.0 * shift);
+        moved.segments[*moving] = with_end_moved(c.segments[*moving], after_end, -1.0 * shift);
         if (before)
           moved.segments[*before] = with_end_moved(c.segments[*before], way > 0 ? SegmentEnd::end : SegmentEnd::start, shift);
-        for (const std::optional<std::size_t> j : {before, after})
+        for (const std::optional<std::size_t> j : {before, moving})
           if (j) most = std::max(most, largest_move(c.segments[*j], moved.segments[*j]));
         if (most > limit) break;
         const Vec2 start = from + shift, end = far - shift;
+        const int last = onto_line ? k + 1 : k;  // the segments the new line replaces after the line
         std::vector<std::size_t> gone;
         std::size_t line_at = i;
         if (way > 0) {
-          for (int g = 1; g <= k; ++g) gone.push_back(*at(std::ptrdiff_t(i) + g));
+          for (int g = 1; g <= last; ++g) gone.push_back(*at(std::ptrdiff_t(i) + g));
         } else {
-          // The new line starts where the jog did (node i − k): the segments from there to the
-          // old line go, and the new line takes the jog's first place.
-          line_at = *at(std::ptrdiff_t(i) - k);
-          for (int g = 0; g < k; ++g) gone.push_back(*at(std::ptrdiff_t(i) - g));
+          // The new line starts where the jog (or the line beyond it) did: the segments from
+          // there to the old line go, and the new line takes the first one's place.
+          line_at = *at(std::ptrdiff_t(i) - last);
+          for (int g = 0; g < last; ++g) gone.push_back(*at(std::ptrdiff_t(i) - g));
         }
         const Line straight = way > 0 ? Line{start, end} : Line{end, start};
         return std::pair{without(moved, line_at, straight, gone), most};

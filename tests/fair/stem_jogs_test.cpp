@@ -55,6 +55,48 @@ TEST(StemJogs, TheSameReadBackwardsIsStraightenedToo) {
   EXPECT_TRUE(found);
 }
 
+// Between two parallel lines a jog need not be an S: a stem down x = 100, a bend leaving it by
+// 1.4° (a quadratic, as TrueType draws it) that straightens down x = 98, a line on down it,
+// then a bowl (Liberation Sans Narrow's d: 674 units across, then 673). The two lines and the
+// bend become one line halfway across, and the bowl leaves it where the second line ended.
+TEST(StemJogs, ABendBetweenTwoParallelLinesBecomesOneLine) {
+  const Vec2 p0{100, 800}, control{98, 720}, p3{98, 500};
+  Contour c;
+  c.segments = {Line{{{100, 1000}, p0}}, Cubic{{p0, p0 + (control - p0) * (2.0 / 3.0), p3 + (control - p3) * (2.0 / 3.0), p3}},
+                Line{{p3, {98, 400}}}, Cubic{{{98, 400}, {98, 300}, {150, 250}, {250, 250}}},
+                Line{{{250, 250}, {250, 1000}}}, Line{{{250, 1000}, {100, 1000}}}};
+  c.nodes.assign(c.segments.size(), NodeFlags{});
+  const MovedContour r = straighten_stem_jogs(c, JogLimits{});
+  ASSERT_EQ(r.changes, 1);
+  EXPECT_DOUBLE_EQ(r.moved, 1.0);
+  ASSERT_EQ(r.contour.segments.size(), 4u);
+  const Line& stem = std::get<Line>(r.contour.segments[0]);
+  EXPECT_EQ(stem.start(), (Vec2{99, 1000}));
+  EXPECT_EQ(stem.end(), (Vec2{99, 400}));
+  const Cubic& bowl = std::get<Cubic>(r.contour.segments[1]);
+  EXPECT_EQ(bowl.p[0], (Vec2{99, 400}));
+  EXPECT_EQ(bowl.p[1], (Vec2{99, 300}));
+  EXPECT_EQ(std::get<Line>(r.contour.segments[3]).end(), (Vec2{99, 1000}));
+  EXPECT_LE(test::polyline_hausdorff(dense(c), dense(r.contour)), r.moved + 1e-9);
+  // Read backwards, the same.
+  Contour backwards;
+  for (auto s = c.segments.rbegin(); s != c.segments.rend(); ++s)
+    backwards.segments.push_back(std::visit([](const auto& b) { return Segment{b.reversed()}; }, *s));
+  backwards.nodes.assign(backwards.segments.size(), NodeFlags{});
+  const MovedContour b = straighten_stem_jogs(backwards, JogLimits{});
+  ASSERT_EQ(b.changes, 1);
+  ASSERT_EQ(b.contour.segments.size(), 4u);
+  bool found = false;
+  for (const Segment& s : b.contour.segments)
+    if (const Line* l = std::get_if<Line>(&s); l && l->start() == Vec2{99, 400}) found = l->end() == Vec2{99, 1000};
+  EXPECT_TRUE(found);
+  // The second line leaning a unit farther across by its end: not parallel to the first, left alone.
+  Contour apart = c;
+  apart.segments[2] = Line{{p3, {97, 400}}};
+  apart.segments[3] = Cubic{{{97, 400}, {97, 300}, {150, 250}, {250, 250}}};
+  EXPECT_EQ(straighten_stem_jogs(apart, JogLimits{}).changes, 0);
+}
+
 TEST(StemJogs, ABendATooWideOrTooSteepJogAFlaggedCornerAndALineOfNoLengthAreLeft) {
   // A taper: the curve bends 2 units over and ends still bending (not back along the line).
   EXPECT_EQ(straighten_stem_jogs(jogged(Cubic{{{100, 800}, {100, 700}, {99.5, 600}, {98, 500}}}), JogLimits{}).changes, 0);
