@@ -64,6 +64,13 @@ double longest_handle_near(const Contour& c, Vec2 p, double reach) {
   return longest;
 }
 
+// Whether `c` has a node within `reach` of `p`.
+bool rounded_node_within(const Contour& c, Vec2 p, double reach) {
+  for (std::size_t i = 0; i < c.segments.size(); ++i)
+    if (distance(c.node_point(i), p) <= reach) return true;
+  return false;
+}
+
 }  // namespace
 
 OutlineOnGrid settle_on_grid(const std::vector<OutlineNode>& nodes, bool closed, const SampledContour& sampled_source,
@@ -169,7 +176,7 @@ std::optional<SplitOnGrid> rounded_with_line_splits(const Contour& source, const
   // the end), and the nodes before stay where they are. Where rounding strayed, the joins of a
   // curve to a line where it stretched the curve's handle (to whole steps of the line:
   // FreeSerif Italic's V, 719 units against 9, and the rounding came out 256 units off); else
-  // those at kinks.
+  // those at kinks, and on text those rounding slid along their lines.
   std::vector<std::size_t> at;
   if (strayed) {
     for (std::size_t k = 0; k < nodes.size(); ++k)
@@ -181,6 +188,19 @@ std::optional<SplitOnGrid> rounded_with_line_splits(const Contour& source, const
   } else {
     for (const Vec2 kink : joins_at_fault(rounded.contour, JoinFault::kink, settings.units_per_em))
       if (const std::optional<std::size_t> k = node_within(nodes, kink, split_reach)) at.push_back(*k);
+    // On text, where rounding slid a curve's join far along its line (no rounded node within
+    // split_reach of it), for a shorter step, and stretched the handle to it, and the outline
+    // has faults (Gentium Book's A: a 28-unit handle into its stroke's (182, 553), the join
+    // moved 66 units up onto (19, 58) and the handle given two of those, 122 units; the
+    // serif's curve folded into an inflection).
+    if (settings.profile == FairProfile::text) {
+      std::vector<std::size_t> slid;
+      for (std::size_t k = 0; k < nodes.size(); ++k)
+        if (curve_line_join(nodes, source.closed, k) && !rounded_node_within(rounded.contour, nodes[k].point, split_reach))
+          slid.push_back(k);
+      if (!slid.empty() && FaultCounter(source, settings.units_per_em).count(rounded.contour).mendable())
+        at.insert(at.end(), slid.begin(), slid.end());
+    }
   }
   if (at.empty()) return std::nullopt;
   std::sort(at.begin(), at.end(), std::greater<>());

@@ -14,6 +14,7 @@
 #include "check/contour_checks.hpp"
 #include "fair/contour_plan.hpp"
 #include "fair/cubic_change.hpp"
+#include "fair/outline_faults.hpp"
 #include "geom/curvature.hpp"
 #include "geom/join.hpp"
 #include "io/source.hpp"
@@ -278,6 +279,31 @@ TEST(ContourFairing, CurvesMeetingStrokesOfLongStepLeaveNoKink) {
   ASSERT_TRUE(r.faired) << r.reason;
   EXPECT_LE(brute_force_hausdorff(v, r.contour), 1.01 * settings.tolerance_units);
   expect_no_kink(r.contour);
+}
+
+TEST(ContourFairing, ASerifCurveIntoAStrokeOfLongStepGainsNoInflection) {
+  // Gentium Book's A (2,048 units): the left foot's serif curves up into a stroke whose grid
+  // step is (182, 553), 582 units, against a 28-unit handle. Rounding slid the join 66 units up
+  // the stroke onto a (19, 58) step and gave the handle two of those, 122 units: the serif's
+  // curve folded into an inflection the source does not have. The stroke is now split where
+  // both its parts step short.
+  const std::optional<Vec2> line;
+  const Contour a = quadratic_outline(
+      {{{385, 440}, line}, {{279, 121}, Vec2{269, 90}}, {{305, 76}, Vec2{341, 62}}, {{423, 53}, line}, {{423, 0}, line},
+       {{0, 0}, line}, {{0, 53}, Vec2{68, 65}}, {{107, 78}, Vec2{146, 91}}, {{156, 121}, line},
+       {{520, 1227}, Vec2{551, 1257}}, {{594, 1279.5}, Vec2{637, 1302}}, {{672, 1317}, line},
+       {{1092, 121}, Vec2{1102, 93}}, {{1129, 77}, Vec2{1156, 61}}, {{1221, 53}, line}, {{1221, 0}, line},
+       {{774, 0}, line}, {{774, 53}, Vec2{851, 58}}, {{880.5, 73}, Vec2{910, 88}}, {{899, 121}, line}, {{789, 440}, line}});
+  FairOptions fo;
+  fo.rounding = Rounding::integers;
+  const FairSettings settings = resolve_settings(fo, 2048.0);
+  const ContourFairing r = fair_contour(a, settings);
+  ASSERT_TRUE(r.faired) << r.reason;
+  EXPECT_LE(brute_force_hausdorff(a, r.contour), 1.01 * settings.tolerance_units);
+  const OutlineFaults faults = FaultCounter(a, settings.units_per_em).count(r.contour);
+  EXPECT_EQ(faults.inflections, 0);
+  EXPECT_EQ(faults.at_smooth_joins(), 0);
+  EXPECT_EQ(faults.corners_lost, 0);
 }
 
 TEST(ContourFairing, LinesMergedPassByPassLeaveNoKink) {
