@@ -227,6 +227,23 @@ Contour quadratic_outline(std::initializer_list<std::pair<Vec2, std::optional<Ve
   return c;
 }
 
+// The text profile's settings on the integer grid, on an em of `units_per_em`.
+FairSettings text_on_grid(double units_per_em) {
+  FairOptions fo;
+  fo.rounding = Rounding::integers;
+  return resolve_settings(fo, units_per_em);
+}
+
+// Whether `r` faired `source` within the tolerance of `settings`.
+testing::AssertionResult faired_within_tolerance(const Contour& source, const ContourFairing& r,
+                                                 const FairSettings& settings) {
+  if (!r.faired) return testing::AssertionFailure() << "not faired: " << r.reason;
+  const double d = brute_force_hausdorff(source, r.contour);
+  if (d > 1.01 * settings.tolerance_units)
+    return testing::AssertionFailure() << d << " units from the source, tolerance " << settings.tolerance_units;
+  return testing::AssertionSuccess();
+}
+
 // Every join of `c` smooth or a corner, none a kink.
 void expect_no_kink(const Contour& c) {
   for (const Join& j : joins_of(c)) EXPECT_NE(j.kind, JoinKind::kink) << "node " << j.node << " at " << j.point.x << ", " << j.point.y;
@@ -249,13 +266,10 @@ TEST(ContourFairing, StrokesDrawnWithStraightQuadraticsLeaveNoKink) {
                                 {{415, 141}, Vec2{415, 141}}, {{428, 194}, line}, {{444, 258}, Vec2{452, 291}},
                                 {{460.5, 322.5}, Vec2{469, 354}}, {{476, 376}, line}, {{678, 1082}, line},
                                 {{834, 1082}, line}});
-  FairOptions fo;
-  fo.rounding = Rounding::integers;
-  const FairSettings settings = resolve_settings(fo, 2048.0);
+  const FairSettings settings = text_on_grid(2048.0);
   for (const Contour* v : {&upper, &lower}) {
     const ContourFairing r = fair_contour(*v, settings);
-    ASSERT_TRUE(r.faired) << r.reason;
-    EXPECT_LE(brute_force_hausdorff(*v, r.contour), 1.01 * settings.tolerance_units);
+    ASSERT_TRUE(faired_within_tolerance(*v, r, settings));
     expect_no_kink(r.contour);
   }
 }
@@ -272,12 +286,9 @@ TEST(ContourFairing, CurvesMeetingStrokesOfLongStepLeaveNoKink) {
                                        {{367, 653}, line}, {{367, 637}, Vec2{320, 632}}, {{305, 622}, Vec2{290, 612}},
                                        {{290, 586}, Vec2{290, 576}}, {{291, 571}, line}, {{357, 128}, line},
                                        {{563, 484}, Vec2{615, 574}}, {{615, 603}, Vec2{615, 630}}, {{552, 637}, line}});
-  FairOptions fo;
-  fo.rounding = Rounding::integers;
-  const FairSettings settings = resolve_settings(fo, 1000.0);
+  const FairSettings settings = text_on_grid(1000.0);
   const ContourFairing r = fair_contour(v, settings);
-  ASSERT_TRUE(r.faired) << r.reason;
-  EXPECT_LE(brute_force_hausdorff(v, r.contour), 1.01 * settings.tolerance_units);
+  ASSERT_TRUE(faired_within_tolerance(v, r, settings));
   expect_no_kink(r.contour);
 }
 
@@ -294,12 +305,9 @@ TEST(ContourFairing, ASerifCurveIntoAStrokeOfLongStepGainsNoInflection) {
        {{520, 1227}, Vec2{551, 1257}}, {{594, 1279.5}, Vec2{637, 1302}}, {{672, 1317}, line},
        {{1092, 121}, Vec2{1102, 93}}, {{1129, 77}, Vec2{1156, 61}}, {{1221, 53}, line}, {{1221, 0}, line},
        {{774, 0}, line}, {{774, 53}, Vec2{851, 58}}, {{880.5, 73}, Vec2{910, 88}}, {{899, 121}, line}, {{789, 440}, line}});
-  FairOptions fo;
-  fo.rounding = Rounding::integers;
-  const FairSettings settings = resolve_settings(fo, 2048.0);
+  const FairSettings settings = text_on_grid(2048.0);
   const ContourFairing r = fair_contour(a, settings);
-  ASSERT_TRUE(r.faired) << r.reason;
-  EXPECT_LE(brute_force_hausdorff(a, r.contour), 1.01 * settings.tolerance_units);
+  ASSERT_TRUE(faired_within_tolerance(a, r, settings));
   const OutlineFaults faults = FaultCounter(a, settings.units_per_em).count(r.contour);
   EXPECT_EQ(faults.inflections, 0);
   EXPECT_EQ(faults.at_smooth_joins(), 0);

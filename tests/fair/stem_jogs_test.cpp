@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "point_set_distance.hpp"
 #include "test_shapes.hpp"
 
@@ -22,37 +24,52 @@ Contour jogged(Cubic jog) {
   return c;
 }
 
-TEST(StemJogs, AFlatSAfterAStemBecomesPartOfIt) {
-  const Contour source = jogged(Cubic{{{100, 800}, {100, 700}, {98, 600}, {98, 500}}});
-  const MovedContour r = straighten_stem_jogs(source, JogLimits{});
+// `r`, `source` straightened once: the stem one line from (99, 1000) down to `foot`, half the
+// 2-unit jog across; the bowl leaving it there along it, its first handle at `handle`; the top
+// line ending on the stem; the outline within the move of the source.
+void expect_one_stem(const Contour& source, const MovedContour& r, Vec2 foot, Vec2 handle) {
   ASSERT_EQ(r.changes, 1);
   EXPECT_DOUBLE_EQ(r.moved, 1.0);  // half the jog
   ASSERT_EQ(r.contour.segments.size(), 4u);
   const Line& stem = std::get<Line>(r.contour.segments[0]);
   EXPECT_EQ(stem.start(), (Vec2{99, 1000}));
-  EXPECT_EQ(stem.end(), (Vec2{99, 500}));
-  // The bowl starts where the stem ends, leaving it along it; the top line stays level.
+  EXPECT_EQ(stem.end(), foot);
   const Cubic& bowl = std::get<Cubic>(r.contour.segments[1]);
-  EXPECT_EQ(bowl.p[0], (Vec2{99, 500}));
-  EXPECT_EQ(bowl.p[1], (Vec2{99, 400}));
-  EXPECT_EQ(bowl.p[3], (Vec2{250, 350}));
+  EXPECT_EQ(bowl.p[0], foot);
+  EXPECT_EQ(bowl.p[1], handle);
   EXPECT_EQ(std::get<Line>(r.contour.segments[3]).end(), (Vec2{99, 1000}));
   EXPECT_LE(test::polyline_hausdorff(dense(source), dense(r.contour)), r.moved + 1e-9);
 }
 
+// `c` walked the other way.
+Contour reversed(const Contour& c) {
+  Contour out;
+  for (auto s = c.segments.rbegin(); s != c.segments.rend(); ++s)
+    out.segments.push_back(std::visit([](const auto& b) { return Segment{b.reversed()}; }, *s));
+  out.nodes.assign(out.segments.size(), NodeFlags{});
+  return out;
+}
+
+// Whether `c` has the line from `a` to `b`.
+bool has_line(const Contour& c, Vec2 a, Vec2 b) {
+  return std::any_of(c.segments.begin(), c.segments.end(), [&](const Segment& s) {
+    const Line* l = std::get_if<Line>(&s);
+    return l && l->start() == a && l->end() == b;
+  });
+}
+
+TEST(StemJogs, AFlatSAfterAStemBecomesPartOfIt) {
+  const Contour source = jogged(Cubic{{{100, 800}, {100, 700}, {98, 600}, {98, 500}}});
+  const MovedContour r = straighten_stem_jogs(source, JogLimits{});
+  ASSERT_NO_FATAL_FAILURE(expect_one_stem(source, r, {99, 500}, {99, 400}));
+  EXPECT_EQ(std::get<Cubic>(r.contour.segments[1]).p[3], (Vec2{250, 350}));
+}
+
 TEST(StemJogs, TheSameReadBackwardsIsStraightenedToo) {
   // The contour reversed: the bowl, the S, then the stem.
-  const Contour forwards = jogged(Cubic{{{100, 800}, {100, 700}, {98, 600}, {98, 500}}});
-  Contour backwards;
-  for (auto s = forwards.segments.rbegin(); s != forwards.segments.rend(); ++s)
-    backwards.segments.push_back(std::visit([](const auto& b) { return Segment{b.reversed()}; }, *s));
-  backwards.nodes.assign(backwards.segments.size(), NodeFlags{});
-  const MovedContour r = straighten_stem_jogs(backwards, JogLimits{});
+  const MovedContour r = straighten_stem_jogs(reversed(jogged(Cubic{{{100, 800}, {100, 700}, {98, 600}, {98, 500}}})), JogLimits{});
   ASSERT_EQ(r.changes, 1);
-  bool found = false;
-  for (const Segment& s : r.contour.segments)
-    if (const Line* l = std::get_if<Line>(&s); l && l->start() == Vec2{99, 500}) found = l->end() == Vec2{99, 1000};
-  EXPECT_TRUE(found);
+  EXPECT_TRUE(has_line(r.contour, {99, 500}, {99, 1000}));
 }
 
 // Between two parallel lines a jog need not be an S: a stem down x = 100, a bend leaving it by
@@ -66,30 +83,12 @@ TEST(StemJogs, ABendBetweenTwoParallelLinesBecomesOneLine) {
                 Line{{p3, {98, 400}}}, Cubic{{{98, 400}, {98, 300}, {150, 250}, {250, 250}}},
                 Line{{{250, 250}, {250, 1000}}}, Line{{{250, 1000}, {100, 1000}}}};
   c.nodes.assign(c.segments.size(), NodeFlags{});
-  const MovedContour r = straighten_stem_jogs(c, JogLimits{});
-  ASSERT_EQ(r.changes, 1);
-  EXPECT_DOUBLE_EQ(r.moved, 1.0);
-  ASSERT_EQ(r.contour.segments.size(), 4u);
-  const Line& stem = std::get<Line>(r.contour.segments[0]);
-  EXPECT_EQ(stem.start(), (Vec2{99, 1000}));
-  EXPECT_EQ(stem.end(), (Vec2{99, 400}));
-  const Cubic& bowl = std::get<Cubic>(r.contour.segments[1]);
-  EXPECT_EQ(bowl.p[0], (Vec2{99, 400}));
-  EXPECT_EQ(bowl.p[1], (Vec2{99, 300}));
-  EXPECT_EQ(std::get<Line>(r.contour.segments[3]).end(), (Vec2{99, 1000}));
-  EXPECT_LE(test::polyline_hausdorff(dense(c), dense(r.contour)), r.moved + 1e-9);
+  EXPECT_NO_FATAL_FAILURE(expect_one_stem(c, straighten_stem_jogs(c, JogLimits{}), {99, 400}, {99, 300}));
   // Read backwards, the same.
-  Contour backwards;
-  for (auto s = c.segments.rbegin(); s != c.segments.rend(); ++s)
-    backwards.segments.push_back(std::visit([](const auto& b) { return Segment{b.reversed()}; }, *s));
-  backwards.nodes.assign(backwards.segments.size(), NodeFlags{});
-  const MovedContour b = straighten_stem_jogs(backwards, JogLimits{});
+  const MovedContour b = straighten_stem_jogs(reversed(c), JogLimits{});
   ASSERT_EQ(b.changes, 1);
   ASSERT_EQ(b.contour.segments.size(), 4u);
-  bool found = false;
-  for (const Segment& s : b.contour.segments)
-    if (const Line* l = std::get_if<Line>(&s); l && l->start() == Vec2{99, 400}) found = l->end() == Vec2{99, 1000};
-  EXPECT_TRUE(found);
+  EXPECT_TRUE(has_line(b.contour, {99, 400}, {99, 1000}));
   // The second line leaning a unit farther across by its end: not parallel to the first, left alone.
   Contour apart = c;
   apart.segments[2] = Line{{p3, {97, 400}}};
