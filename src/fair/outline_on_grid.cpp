@@ -166,43 +166,21 @@ std::optional<OutlineOnGrid> rounded_with_splits(const Contour& source, const st
   return again;
 }
 
-std::optional<SplitOnGrid> rounded_with_line_splits(const Contour& source, const std::vector<OutlineNode>& nodes,
-                                                    const OutlineOnGrid& rounded, const SampledContour& sampled_source,
-                                                    const FairSettings& settings, double available,
-                                                    bool halving_allowances) {
-  if (settings.rounding != Rounding::integers) return std::nullopt;
-  const bool strayed = rounded.deviation > settings.tolerance_units;
-  // The float nodes to split at, last first: a split puts its vertex in beside its node (or at
-  // the end), and the nodes before stay where they are. Where rounding strayed, the joins of a
-  // curve to a line where it stretched the curve's handle (to whole steps of the line:
-  // FreeSerif Italic's V, 719 units against 9, and the rounding came out 256 units off); else
-  // those at kinks, and on text those rounding slid along their lines.
-  std::vector<std::size_t> at;
-  if (strayed) {
-    for (std::size_t k = 0; k < nodes.size(); ++k)
-      if (const std::optional<CurveLineJoin> join = curve_line_join(nodes, source.closed, k)) {
-        const double handle = distance(join->curve.p[2], join->curve.p[3]);
-        if (longest_handle_near(rounded.contour, nodes[k].point, split_reach) > stretched_handle * handle + 1.0)
-          at.push_back(k);
-      }
-  } else {
-    for (const Vec2 kink : joins_at_fault(rounded.contour, JoinFault::kink, settings.units_per_em))
-      if (const std::optional<std::size_t> k = node_within(nodes, kink, split_reach)) at.push_back(*k);
-    // On text, where rounding slid a curve's join far along its line (no rounded node within
-    // split_reach of it), for a shorter step, and stretched the handle to it, and the outline
-    // has faults (Gentium Book's A: a 28-unit handle into its stroke's (182, 553), the join
-    // moved 66 units up onto (19, 58) and the handle given two of those, 122 units; the
-    // serif's curve folded into an inflection).
-    if (settings.profile == FairProfile::text) {
-      std::vector<std::size_t> slid;
-      for (std::size_t k = 0; k < nodes.size(); ++k)
-        if (curve_line_join(nodes, source.closed, k) && !rounded_node_within(rounded.contour, nodes[k].point, split_reach))
-          slid.push_back(k);
-      if (!slid.empty() && FaultCounter(source, settings.units_per_em).count(rounded.contour).mendable())
-        at.insert(at.end(), slid.begin(), slid.end());
-    }
-  }
+namespace {
+
+// How a split at the joins `at` must leave the rounded outline to be kept.
+enum class SplitKept { within_tolerance, with_fewer_faults, with_fewer_faults_and_inflections };
+
+// `nodes` with the lines at the curve joins `at` split (split_line_at), each split kept where
+// the float outline stays within `available`, and settled again: kept as `kept` says, counted
+// as the fillets will leave it (the kinks at the splits are theirs).
+std::optional<SplitOnGrid> split_and_settle(std::vector<std::size_t> at, const Contour& source,
+                                            const std::vector<OutlineNode>& nodes, const OutlineOnGrid& rounded,
+                                            const SampledContour& sampled_source, const FairSettings& settings,
+                                            double available, bool halving_allowances, SplitKept kept) {
   if (at.empty()) return std::nullopt;
+  // Last first: a split puts its vertex in beside its node (or at the end), and the nodes
+  // before stay where they are.
   std::sort(at.begin(), at.end(), std::greater<>());
   at.erase(std::unique(at.begin(), at.end()), at.end());
   LineSplitLimits limits;
@@ -220,13 +198,57 @@ std::optional<SplitOnGrid> rounded_with_line_splits(const Contour& source, const
   out.outline = settle_on_grid(out.nodes, source.closed, sampled_source, settings, halving_allowances);
   const double left = settings.tolerance_units - out.outline.deviation;
   if (left < 0.0) return std::nullopt;
-  if (strayed) return out;
-  // Counted as the fillets will leave it: the kinks are now theirs.
+  if (kept == SplitKept::within_tolerance) return out;
   const FaultCounter faults(source, settings.units_per_em);
-  if (!fewer_faults(faults.count(fillet_line_kinks(out.outline.contour, 0.95 * left, true)),
-                    faults.count(rounded.contour)))
-    return std::nullopt;
+  const OutlineFaults now = faults.count(fillet_line_kinks(out.outline.contour, 0.95 * left, true));
+  const OutlineFaults was = faults.count(rounded.contour);
+  if (!fewer_faults(now, was)) return std::nullopt;
+  if (kept == SplitKept::with_fewer_faults_and_inflections && now.inflections > was.inflections) return std::nullopt;
   return out;
+}
+
+}  // namespace
+
+std::optional<SplitOnGrid> rounded_with_line_splits(const Contour& source, const std::vector<OutlineNode>& nodes,
+                                                    const OutlineOnGrid& rounded, const SampledContour& sampled_source,
+                                                    const FairSettings& settings, double available,
+                                                    bool halving_allowances) {
+  if (settings.rounding != Rounding::integers) return std::nullopt;
+  const auto split = [&](std::vector<std::size_t> at, SplitKept kept) {
+    return split_and_settle(std::move(at), source, nodes, rounded, sampled_source, settings, available,
+                            halving_allowances, kept);
+  };
+  // Where rounding strayed, the joins of a curve to a line where it stretched the curve's
+  // handle (to whole steps of the line: FreeSerif Italic's V, 719 units against 9, and the
+  // rounding came out 256 units off).
+  if (rounded.deviation > settings.tolerance_units) {
+    std::vector<std::size_t> at;
+    for (std::size_t k = 0; k < nodes.size(); ++k)
+      if (const std::optional<CurveLineJoin> join = curve_line_join(nodes, source.closed, k)) {
+        const double handle = distance(join->curve.p[2], join->curve.p[3]);
+        if (longest_handle_near(rounded.contour, nodes[k].point, split_reach) > stretched_handle * handle + 1.0)
+          at.push_back(k);
+      }
+    return split(std::move(at), SplitKept::within_tolerance);
+  }
+  // Else those at kinks.
+  std::vector<std::size_t> at;
+  for (const Vec2 kink : joins_at_fault(rounded.contour, JoinFault::kink, settings.units_per_em))
+    if (const std::optional<std::size_t> k = node_within(nodes, kink, split_reach)) at.push_back(*k);
+  if (std::optional<SplitOnGrid> out = split(std::move(at), SplitKept::with_fewer_faults)) return out;
+  // On text, where those gave nothing and the outline has faults, the joins rounding slid far
+  // along their lines (no rounded node within split_reach), for a shorter step, stretching the
+  // handle to it (Gentium Book's A: a 28-unit handle into its stroke's (182, 553), the join
+  // moved 66 units up onto (19, 58) and the handle given two of those, 122 units; the serif's
+  // curve folded into an inflection); kept only with no more inflections (Pagella's w: one
+  // jump and one kink fewer for two inflections, and the kink came back once settled again).
+  if (settings.profile != FairProfile::text) return std::nullopt;
+  std::vector<std::size_t> slid;
+  for (std::size_t k = 0; k < nodes.size(); ++k)
+    if (curve_line_join(nodes, source.closed, k) && !rounded_node_within(rounded.contour, nodes[k].point, split_reach))
+      slid.push_back(k);
+  if (slid.empty() || !FaultCounter(source, settings.units_per_em).count(rounded.contour).mendable()) return std::nullopt;
+  return split(std::move(slid), SplitKept::with_fewer_faults_and_inflections);
 }
 
 }  // namespace gf
