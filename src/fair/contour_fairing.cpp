@@ -16,8 +16,8 @@
 #include "fair/g3_cubics.hpp"
 #include "fair/join_mending.hpp"
 #include "fair/kinked_corners.hpp"
-#include "fair/kink_fillet.hpp"
 #include "fair/leaning_line_ends.hpp"
+#include "fair/line_kinks.hpp"
 #include "fair/outline_faults.hpp"
 #include "fair/outline_on_grid.hpp"
 #include "fair/plan_fairing.hpp"
@@ -255,38 +255,11 @@ ContourFairing fair_planned(const Contour& source, const ContourPlan& plan,
 constexpr int kink_passes = 8;
 
 // The kinks left between two lines (no run passes through them, and merging the lines strays:
-// Inter's Q tail, Cantarell's y) filleted within what the faired contour leaves of the tolerance.
-// On the grid, those whose lines have no whole legs within that go to a moved vertex first
-// (with a same-way neighbour across a line, before that neighbour's own fillet takes half the
-// line), within the same allowance, then within nearly the whole tolerance: the lines are the
-// source's, and the contour's largest distance lies elsewhere, often a curve's (Liberation
-// Sans's M came 2.26 units from its source at a tolerance of 2.56, which left its stem's kinks
-// 0.28). The smaller allowance first keeps the vertex close: Open Sans's d, filleted at the
-// larger alone, had its stem tilted a unit off the vertical.
-// Straight quadratics and cubics are lines to these passes (Liberation Sans Narrow's V: its inner
-// vertex drawn as quadratics whose control point sits on their start, 0.2–2.8° apart), and are
-// written as lines where a pass changed the contour.
+// Inter's Q tail, Cantarell's y) taken away within the tolerance (fair/line_kinks.hpp).
 void fillet_kinks(ContourFairing& out, const Contour& source, const FairSettings& settings) {
-  const double t = settings.tolerance_units;
-  Contour lines = with_straight_segments_as_lines(out.contour);
-  double deviation = out.deviation;
-  bool changed = false;
-  const auto take = [&](const Contour& filleted) {
-    // Unchanged: no kink took a fillet (a fillet that takes a whole line leaves as many segments).
-    if (filleted.segments == lines.segments) return;
-    const double d = contour_distance(filleted, source);
-    if (d > t) return;
-    lines = filleted, changed = true;
-    deviation = std::max(deviation, d);
-  };
-  take(merge_line_kinks(lines, t));
-  const bool grid = settings.rounding == Rounding::integers;
-  const double left = 0.95 * (t - deviation);
-  if (grid)
-    for (const double allowance : {left, 0.9 * t}) take(fillet_legless_kinks_at_moved_vertices(lines, left, allowance));
-  take(fillet_line_kinks(lines, left, grid));
-  if (grid) take(fillet_kinks_at_moved_vertices(lines, 0.9 * t));
-  if (changed) out.contour = std::move(lines), out.deviation = deviation;
+  LineKinksTaken taken = without_line_kinks(out.contour, out.deviation, source, settings.tolerance_units,
+                                            settings.rounding == Rounding::integers);
+  if (taken.changed) out.contour = std::move(taken.contour), out.deviation = taken.deviation;
 }
 
 // The contour faired on `curve` (the source, or the same curve split at its tight `turns`, its

@@ -334,12 +334,16 @@ bool kinks_a_curve(const Contour& contour, std::size_t k, const std::array<Vec2,
 
 }  // namespace
 
-Contour merge_line_kinks(const Contour& contour, double allowance_units) {
+Contour merge_line_kinks(const Contour& contour, double allowance_units, bool only_against_neighbours) {
   const std::size_t n = contour.segments.size();
   std::vector<bool> kink(n, false);
   for (const Join& j : joins_of(contour)) {
     const bool between_lines = j.node < n && is_line(contour.segments[(j.node + n - 1) % n]) && is_line(contour.segments[j.node]);
     if (between_lines && small_kink(j)) kink[j.node] = true;
+  }
+  if (only_against_neighbours) {
+    const std::vector<bool> filleted = kinks_to_fillet(contour, joins_by_node(contour));
+    for (std::size_t k = 0; k < n; ++k) kink[k] = kink[k] && !filleted[k];
   }
   // Each chain of kinks walked from the node before it (a closed contour from a node that is no
   // kink): a kink goes where the line from the chain's last kept node to the kink's far node

@@ -33,8 +33,12 @@ std::optional<FilletLegs> fillet_legs(const Line& before, const Line& after, dou
 /// by under a degree below, and only the bends below go), so the kinks left are fewer, for the
 /// fillets. At a closed contour's first node, the contour then starts where its last line did.
 /// Contours with no such kink, or that would keep fewer than three segments, come back
-/// unchanged.
-Contour merge_line_kinks(const Contour& contour, double allowance_units);
+/// unchanged. With `only_against_neighbours`, only the kinks no fillet may take because it
+/// would bend against its neighbours (fillet_line_kinks) merge: the rest are left to the fillets
+/// (URW P052's Z: a top drawn as four lines sagging three units, bent 1.1° and 0.63° one way,
+/// then 0.28° back; merged whole it kept a 1.33° kink whose lines, steps (206, 3) and (347, 3),
+/// leave a fillet no legs).
+Contour merge_line_kinks(const Contour& contour, double allowance_units, bool only_against_neighbours = false);
 
 /// `contour` with every join of two lines that turns by more than the smooth limit and less
 /// than the kink limit (geom/join.hpp: no corner was drawn there) replaced by a fillet: the

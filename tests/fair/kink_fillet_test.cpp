@@ -192,6 +192,18 @@ TEST(MergeLineKinks, NoMergedLineTurnsACurvesJoinIntoAKink) {
   EXPECT_EQ(merge_line_kinks(lines, 2.0).segments.size(), 4u);
 }
 
+TEST(MergeLineKinks, OnlyAgainstTheirNeighboursMergesTheKinksNoFilletMayTake) {
+  // URW P052's Z, its top: bent 1.1° and 0.63° one way, then 0.28° back, which a fillet would
+  // turn into an inflection (AKinkAgainstItsNeighboursStays): only that bend merges.
+  const Contour top = polygon({{633, 692}, {477, 689}, {427, 689}, {245, 691}, {80, 692}, {80, 530}, {637, 530}});
+  EXPECT_EQ(merge_line_kinks(top, 1.25, true).segments,
+            polygon({{633, 692}, {477, 689}, {427, 689}, {80, 692}, {80, 530}, {637, 530}}).segments);
+  // Every bend merges where the allowance lets it: the second is 2.6 units off the line from
+  // (633, 692) past it.
+  EXPECT_EQ(merge_line_kinks(top, 1.25).segments,
+            polygon({{633, 692}, {427, 689}, {80, 692}, {80, 530}, {637, 530}}).segments);
+}
+
 TEST(KinkFillet, WithoutAKinkTheContourComesBackAsItWas) {
   const Contour square = polygon({{0, 0}, {100, 0}, {100, 100}, {0, 100}});
   EXPECT_EQ(fillet_line_kinks(square, 1.0, true).segments.size(), 4u);
