@@ -488,14 +488,12 @@ class MendedFaults {
     if (faults.at_smooth_joins() == 0) return faults;
     if (!sampled_source_) sampled_source_.emplace(source_);
     Contour mended = fairing.contour;
-    const int joins = mend_jumping_joins(mended, *sampled_source_, limits_);
-    if (joins == 0) return faults;
-    const OutlineFaults mended_faults = counter_.count(mended);
-    if (!fewer_faults(mended_faults, faults)) return faults;
+    const MendedJoins m = mend_where_fewer_faults(mended, faults, counter_, *sampled_source_, limits_);
+    if (m.mended == 0) return faults;
     fairing.deviation = std::max(fairing.deviation, distance_between(SampledContour(mended), *sampled_source_));
     fairing.contour = std::move(mended);
-    fairing.mended_joins = joins;
-    return mended_faults;
+    fairing.mended_joins = m.mended;
+    return m.faults;
   }
 
  private:

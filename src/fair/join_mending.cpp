@@ -366,4 +366,16 @@ int mend_jumping_joins(Contour& rounded, const SampledContour& sampled_source, c
   return mended;
 }
 
+MendedJoins mend_where_fewer_faults(Contour& rounded, const OutlineFaults& faults, const FaultCounter& counter,
+                                    const SampledContour& sampled_source, const JoinMendingLimits& limits) {
+  if (faults.at_smooth_joins() == 0) return {faults, 0};
+  Contour mended = rounded;
+  const int joins = mend_jumping_joins(mended, sampled_source, limits);
+  if (joins == 0) return {faults, 0};
+  const OutlineFaults mended_faults = counter.count(mended);
+  if (!fewer_faults(mended_faults, faults)) return {faults, 0};
+  rounded = std::move(mended);
+  return {mended_faults, joins};
+}
+
 }  // namespace gf

@@ -11,6 +11,7 @@
 
 #include <cstddef>
 
+#include "fair/outline_faults.hpp"
 #include "fair/sampled_contour.hpp"
 #include "geom/contour.hpp"
 
@@ -37,5 +38,16 @@ struct JoinMendingLimits {
 /// add no inflection, H/V extremum, fold or overreach to the cubics they change, and keep the
 /// contour within the tolerance of `sampled_source`. Returns how many joins it mended.
 int mend_jumping_joins(Contour& rounded, const SampledContour& sampled_source, const JoinMendingLimits& limits);
+
+/// A contour's faults once its joins are mended, and how many joins were.
+struct MendedJoins {
+  OutlineFaults faults;
+  int mended = 0;  ///< 0: the contour as it was
+};
+
+/// `rounded`, whose faults as `counter` counts them are `faults`, with its jumping joins mended
+/// (mend_jumping_joins) where that leaves fewer faults (fewer_faults), else as it was.
+MendedJoins mend_where_fewer_faults(Contour& rounded, const OutlineFaults& faults, const FaultCounter& counter,
+                                    const SampledContour& sampled_source, const JoinMendingLimits& limits);
 
 }  // namespace gf
