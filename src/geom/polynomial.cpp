@@ -174,7 +174,13 @@ std::vector<SignChange> sign_changes_in_unit_interval(const Polynomial& p, doubl
   const Polynomial trimmed(std::span<const double>(c.data(), n + 1));
   if (n == 0) return roots;
   Isolator iso{trimmed, n, roots};
-  iso.isolate(to_bernstein(trimmed), 0.0, 1.0, 0);
+  // An end where p is noise is a zero of p, not a change of sign a hair inside it (a cubic whose
+  // first or last three points lie on one line of the grid: its inflection polynomial vanishes
+  // at that end, and rounding left a sign change just inside).
+  Bernstein b = to_bernstein(trimmed);
+  if (std::abs(b[0]) <= negligible) b[0] = 0.0;
+  if (std::abs(b[n]) <= negligible) b[n] = 0.0;
+  iso.isolate(b, 0.0, 1.0, 0);
   // Neighbouring sub-intervals can both report a root that sits on their shared edge.
   std::sort(roots.begin(), roots.end(), [](SignChange a, SignChange b) { return a.t < b.t; });
   roots.erase(std::unique(roots.begin(), roots.end(),

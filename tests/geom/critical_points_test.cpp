@@ -81,6 +81,24 @@ TEST(CriticalPoints, ScaleAndTranslationDoNotChangeTheAnswer) {
   EXPECT_EQ(critical_points(small).inflections, critical_points(big).inflections);
 }
 
+TEST(CriticalPoints, ACubicLeavingALineOnTheGridHasNoInflectionInside) {
+  // Gentium Plus's W: a curve leaving its stroke of step (−11, −34) with its far handle on the
+  // stroke too, so κ = 0 at t = 0 exactly and one sign after (the curve bends the one way all
+  // along: its curvature sampled). The inflection polynomial vanishes at t = 0; rounding left its
+  // constant term as noise, and a change of sign a hair inside counted as an inflection. The
+  // cubic reversed has the zero at t = 1.
+  const Cubic leaving{{{581, 96}, {559, 28}, {548, -6}, {419, -31}}};
+  for (int k = 1; k <= 100; ++k) EXPECT_LT(*curvature(derivatives_at(Segment{leaving}, k / 100.0)), 0.0);
+  EXPECT_TRUE(inflections(leaving).empty());
+  EXPECT_TRUE(inflections(leaving.reversed()).empty());
+  // A real inflection near the end is still one: the far handle a unit across the stroke, κ > 0
+  // at t = 0 and < 0 by the middle.
+  const Cubic across{{{581, 96}, {559, 28}, {549, -3}, {419, -31}}};
+  EXPECT_GT(*curvature(derivatives_at(Segment{across}, 0.0)), 0.0);
+  EXPECT_LT(*curvature(derivatives_at(Segment{across}, 0.5)), 0.0);
+  EXPECT_EQ(inflections(across).size(), 1u);
+}
+
 TEST(CriticalPoints, LinesHaveNone) {
   const CriticalPoints cp = critical_points(Line{{{0, 0}, {10, 3}}});
   EXPECT_TRUE(cp.inflections.empty());
