@@ -49,10 +49,10 @@ LineKinksTaken without_line_kinks(const Contour& faired, double deviation, const
                                   double tolerance_units, bool integer_grid) {
   const SampledContour sampled_source(source);
   LineKinksTaken merged = taken(faired, deviation, sampled_source, tolerance_units, integer_grid, false);
-  const std::size_t left = kinks_in(merged.contour);
-  if (left == 0) return merged;
+  const std::size_t kinks_left = kinks_in(merged.contour);
+  if (kinks_left == 0) return merged;
   LineKinksTaken filleted = taken(faired, deviation, sampled_source, tolerance_units, integer_grid, true);
-  return kinks_in(filleted.contour) < left ? filleted : merged;
+  return kinks_in(filleted.contour) < kinks_left ? filleted : merged;
 }
 
 }  // namespace gf

@@ -1,6 +1,6 @@
 // The last pass over a faired contour: the kinks left between two lines (no run passes through
-// them) taken away by the passes of fair/kink_fillet.hpp, in the order that keeps the most
-// vertices where they were, each kept only where the contour stays within the tolerance.
+// them) merged or filleted by the passes of fair/kink_fillet.hpp, each pass kept only where the
+// contour stays within the tolerance.
 #pragma once
 
 #include "geom/contour.hpp"
