@@ -1,6 +1,7 @@
 #include "fair/line_kinks.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <vector>
 
 #include "fair/contour_plan.hpp"
@@ -19,15 +20,29 @@ std::size_t kinks_in(const Contour& c) {
       std::count_if(joins.begin(), joins.end(), [](const Join& j) { return j.kind == JoinKind::kink; }));
 }
 
+// The source sampled where a pass first changed a contour: most contours have no line kink.
+class LazilySampled {
+ public:
+  explicit LazilySampled(const Contour& source) : source_(source) {}
+  const SampledContour& get() {
+    if (!sampled_) sampled_.emplace(source_);
+    return *sampled_;
+  }
+
+ private:
+  const Contour& source_;
+  std::optional<SampledContour> sampled_;
+};
+
 // The passes, merging every kink that may go first or only those no fillet may take.
-LineKinksTaken taken(const Contour& faired, double deviation, const SampledContour& sampled_source,
-                     double tolerance_units, bool integer_grid, bool merging_only_against_neighbours) {
+LineKinksTaken taken(const Contour& faired, double deviation, LazilySampled& sampled_source, double tolerance_units,
+                     bool integer_grid, bool merging_only_against_neighbours) {
   const double t = tolerance_units;
   LineKinksTaken out{with_straight_segments_as_lines(faired), deviation, false};
   const auto take = [&](const Contour& filleted) {
     // Unchanged: no kink taken (a fillet that takes a whole line leaves as many segments).
     if (filleted.segments == out.contour.segments) return;
-    const double d = distance_between(SampledContour(filleted), sampled_source);
+    const double d = distance_between(SampledContour(filleted), sampled_source.get());
     if (d > t) return;
     out.contour = filleted, out.changed = true;
     out.deviation = std::max(out.deviation, d);
@@ -47,7 +62,7 @@ LineKinksTaken taken(const Contour& faired, double deviation, const SampledConto
 
 LineKinksTaken without_line_kinks(const Contour& faired, double deviation, const Contour& source,
                                   double tolerance_units, bool integer_grid) {
-  const SampledContour sampled_source(source);
+  LazilySampled sampled_source(source);
   LineKinksTaken merged = taken(faired, deviation, sampled_source, tolerance_units, integer_grid, false);
   const std::size_t kinks_left = kinks_in(merged.contour);
   if (kinks_left == 0) return merged;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <optional>
 
 #include "fair/curve_line_joins.hpp"
 #include "fair/grid_rounding.hpp"
@@ -70,6 +71,90 @@ bool rounded_node_within(const Contour& c, Vec2 p, double reach) {
   for (std::size_t i = 0; i < c.segments.size(); ++i)
     if (distance(c.node_point(i), p) <= reach) return true;
   return false;
+}
+
+
+// What a line split is judged by: an outline's faults as the last passes leave it, the line
+// kinks taken (fair/line_kinks) and the joins mended (fair/join_mending). The kinks at the
+// splits are the fillets', and the kinks between lines rounding left may be too (Liberation
+// Sans Narrow's A: a split kept for two kinks fewer than the rounded outline had, both of which
+// the fillets took, left one); and a split that leaves more jumps may leave fewer once the
+// joins are mended (URW P052's W: 5 against 3, then 1 against 2). The counter is built, and
+// the rounded outline counted, once, where first needed.
+class SplitJudge {
+ public:
+  SplitJudge(const Contour& source, const OutlineOnGrid& rounded, const SampledContour& sampled_source,
+             const FairSettings& settings)
+      : source_(source),
+        rounded_(rounded),
+        sampled_source_(sampled_source),
+        tolerance_units_(settings.tolerance_units),
+        units_per_em_(settings.units_per_em) {}
+
+  /// The faults of the rounded outline as rounding left it.
+  OutlineFaults rounded_as_left() { return counter().count(rounded_.contour); }
+
+  /// The faults of `o` as the last passes leave it.
+  OutlineFaults finished(const OutlineOnGrid& o) {
+    Contour c = without_line_kinks(o.contour, o.deviation, source_, tolerance_units_, true).contour;
+    const JoinMendingLimits mending{.tolerance_units = tolerance_units_, .units_per_em = units_per_em_};
+    return mend_where_fewer_faults(c, counter().count(c), counter(), sampled_source_, mending).faults;
+  }
+
+  /// The same of the rounded outline.
+  const OutlineFaults& rounded_finished() {
+    if (!rounded_finished_) rounded_finished_ = finished(rounded_);
+    return *rounded_finished_;
+  }
+
+ private:
+  const FaultCounter& counter() {
+    if (!counter_) counter_.emplace(source_, units_per_em_);
+    return *counter_;
+  }
+
+  const Contour& source_;
+  const OutlineOnGrid& rounded_;
+  const SampledContour& sampled_source_;
+  double tolerance_units_, units_per_em_;
+  std::optional<FaultCounter> counter_;
+  std::optional<OutlineFaults> rounded_finished_;
+};
+
+// How a split at the joins `at` must leave the rounded outline to be kept.
+enum class SplitKept { within_tolerance, with_fewer_faults, with_fewer_faults_and_inflections };
+
+// `nodes` with the lines at the curve joins `at` split (split_line_at), each split kept where
+// the float outline stays within `available`, and settled again: kept as `kept` says, its
+// faults and the rounded outline's as `judge` counts them.
+std::optional<SplitOnGrid> split_and_settle(std::vector<std::size_t> at, bool closed,
+                                            const std::vector<OutlineNode>& nodes, SplitJudge& judge,
+                                            const SampledContour& sampled_source, const FairSettings& settings,
+                                            double available, bool halving_allowances, SplitKept kept) {
+  if (at.empty()) return std::nullopt;
+  // Last first: a split puts its vertex in beside its node (or at the end), and the nodes
+  // before stay where they are.
+  std::sort(at.begin(), at.end(), std::greater<>());
+  at.erase(std::unique(at.begin(), at.end()), at.end());
+  LineSplitLimits limits;
+  limits.max_move_units = line_split_move_share * settings.tolerance_units;
+  SplitOnGrid out{nodes, {}};
+  bool split = false;
+  for (const std::size_t k : at) {
+    std::vector<OutlineNode> trial = out.nodes;
+    if (!split_line_at(trial, closed, k, limits)) continue;
+    if (distance_between(SampledContour(to_contour(trial, closed)), sampled_source) > available) continue;
+    out.nodes = std::move(trial);
+    split = true;
+  }
+  if (!split) return std::nullopt;
+  out.outline = settle_on_grid(out.nodes, closed, sampled_source, settings, halving_allowances);
+  if (out.outline.deviation > settings.tolerance_units) return std::nullopt;
+  if (kept == SplitKept::within_tolerance) return out;
+  const OutlineFaults now = judge.finished(out.outline), was = judge.rounded_finished();
+  if (!fewer_faults(now, was)) return std::nullopt;
+  if (kept == SplitKept::with_fewer_faults_and_inflections && now.inflections > was.inflections) return std::nullopt;
+  return out;
 }
 
 }  // namespace
@@ -167,64 +252,14 @@ std::optional<OutlineOnGrid> rounded_with_splits(const Contour& source, const st
   return again;
 }
 
-namespace {
-
-// How a split at the joins `at` must leave the rounded outline to be kept.
-enum class SplitKept { within_tolerance, with_fewer_faults, with_fewer_faults_and_inflections };
-
-// `nodes` with the lines at the curve joins `at` split (split_line_at), each split kept where
-// the float outline stays within `available`, and settled again: kept as `kept` says, the
-// faults of both outlines counted as the last passes leave them (fair/line_kinks, then
-// fair/join_mending).
-std::optional<SplitOnGrid> split_and_settle(std::vector<std::size_t> at, const Contour& source,
-                                            const std::vector<OutlineNode>& nodes, const OutlineOnGrid& rounded,
-                                            const SampledContour& sampled_source, const FairSettings& settings,
-                                            double available, bool halving_allowances, SplitKept kept) {
-  if (at.empty()) return std::nullopt;
-  // Last first: a split puts its vertex in beside its node (or at the end), and the nodes
-  // before stay where they are.
-  std::sort(at.begin(), at.end(), std::greater<>());
-  at.erase(std::unique(at.begin(), at.end()), at.end());
-  LineSplitLimits limits;
-  limits.max_move_units = line_split_move_share * settings.tolerance_units;
-  SplitOnGrid out{nodes, {}};
-  bool split = false;
-  for (const std::size_t k : at) {
-    std::vector<OutlineNode> trial = out.nodes;
-    if (!split_line_at(trial, source.closed, k, limits)) continue;
-    if (distance_between(SampledContour(to_contour(trial, source.closed)), sampled_source) > available) continue;
-    out.nodes = std::move(trial);
-    split = true;
-  }
-  if (!split) return std::nullopt;
-  out.outline = settle_on_grid(out.nodes, source.closed, sampled_source, settings, halving_allowances);
-  if (out.outline.deviation > settings.tolerance_units) return std::nullopt;
-  if (kept == SplitKept::within_tolerance) return out;
-  // The kinks at the splits are the fillets', and the kinks between lines rounding left may be
-  // too (Liberation Sans Narrow's A: a split kept for two kinks fewer than the rounded outline
-  // had, both of which the fillets took, left one); and a split that leaves more jumps may
-  // leave fewer once the joins are mended (URW P052's W: 5 against 3, then 1 against 2).
-  const FaultCounter faults(source, settings.units_per_em);
-  const JoinMendingLimits mending{.tolerance_units = settings.tolerance_units, .units_per_em = settings.units_per_em};
-  const auto finished = [&](const OutlineOnGrid& o) {
-    Contour c = without_line_kinks(o.contour, o.deviation, source, settings.tolerance_units, true).contour;
-    return mend_where_fewer_faults(c, faults.count(c), faults, sampled_source, mending).faults;
-  };
-  const OutlineFaults now = finished(out.outline), was = finished(rounded);
-  if (!fewer_faults(now, was)) return std::nullopt;
-  if (kept == SplitKept::with_fewer_faults_and_inflections && now.inflections > was.inflections) return std::nullopt;
-  return out;
-}
-
-}  // namespace
-
 std::optional<SplitOnGrid> rounded_with_line_splits(const Contour& source, const std::vector<OutlineNode>& nodes,
                                                     const OutlineOnGrid& rounded, const SampledContour& sampled_source,
                                                     const FairSettings& settings, double available,
                                                     bool halving_allowances) {
   if (settings.rounding != Rounding::integers) return std::nullopt;
+  SplitJudge judge(source, rounded, sampled_source, settings);
   const auto split = [&](std::vector<std::size_t> at, SplitKept kept) {
-    return split_and_settle(std::move(at), source, nodes, rounded, sampled_source, settings, available,
+    return split_and_settle(std::move(at), source.closed, nodes, judge, sampled_source, settings, available,
                             halving_allowances, kept);
   };
   // Where rounding strayed, the joins of a curve to a line where it stretched the curve's
@@ -256,7 +291,7 @@ std::optional<SplitOnGrid> rounded_with_line_splits(const Contour& source, const
   for (std::size_t k = 0; k < nodes.size(); ++k)
     if (curve_line_join(nodes, source.closed, k) && !rounded_node_within(rounded.contour, nodes[k].point, split_reach))
       slid.push_back(k);
-  if (slid.empty() || !FaultCounter(source, settings.units_per_em).count(rounded.contour).mendable()) return std::nullopt;
+  if (slid.empty() || !judge.rounded_as_left().mendable()) return std::nullopt;
   return split(std::move(slid), SplitKept::with_fewer_faults_and_inflections);
 }
 

@@ -244,6 +244,15 @@ testing::AssertionResult faired_within_tolerance(const Contour& source, const Co
   return testing::AssertionSuccess();
 }
 
+// No jump or kink at a smooth join of `faired`, no inflection beyond `source`'s and no corner
+// of it lost, as the check counts them.
+void expect_no_faults(const Contour& source, const Contour& faired, const FairSettings& settings) {
+  const OutlineFaults faults = FaultCounter(source, settings.units_per_em).count(faired);
+  EXPECT_EQ(faults.at_smooth_joins(), 0);
+  EXPECT_EQ(faults.inflections, 0);
+  EXPECT_EQ(faults.corners_lost, 0);
+}
+
 // Every join of `c` smooth or a corner, none a kink.
 void expect_no_kink(const Contour& c) {
   for (const Join& j : joins_of(c)) EXPECT_NE(j.kind, JoinKind::kink) << "node " << j.node << " at " << j.point.x << ", " << j.point.y;
@@ -308,10 +317,7 @@ TEST(ContourFairing, ASerifCurveIntoAStrokeOfLongStepGainsNoInflection) {
   const FairSettings settings = text_on_grid(2048.0);
   const ContourFairing r = fair_contour(a, settings);
   ASSERT_TRUE(faired_within_tolerance(a, r, settings));
-  const OutlineFaults faults = FaultCounter(a, settings.units_per_em).count(r.contour);
-  EXPECT_EQ(faults.inflections, 0);
-  EXPECT_EQ(faults.at_smooth_joins(), 0);
-  EXPECT_EQ(faults.corners_lost, 0);
+  expect_no_faults(a, r.contour, settings);
 }
 
 TEST(ContourFairing, ALineSplitIsKeptOnlyForFewerFaultsThanTheFilletsLeave) {
@@ -328,10 +334,7 @@ TEST(ContourFairing, ALineSplitIsKeptOnlyForFewerFaultsThanTheFilletsLeave) {
   const FairSettings settings = text_on_grid(2048.0);
   const ContourFairing r = fair_contour(counter, settings);
   ASSERT_TRUE(faired_within_tolerance(counter, r, settings));
-  const OutlineFaults faults = FaultCounter(counter, settings.units_per_em).count(r.contour);
-  EXPECT_EQ(faults.at_smooth_joins(), 0);
-  EXPECT_EQ(faults.inflections, 0);
-  EXPECT_EQ(faults.corners_lost, 0);
+  expect_no_faults(counter, r.contour, settings);
 }
 
 TEST(ContourFairing, LinesMergedPassByPassLeaveNoKink) {
