@@ -157,7 +157,6 @@ TEST(GridRounding, ALineADegreeOffTheVerticalLeavesItsCurveRoom) {
   limits.allowance = 9.0;  // what the unrounded outline leaves of the 12-unit tolerance
   const std::vector<OutlineNode> r = round_to_grid(nodes, false, limits);
 
-  for (const auto& q : r) printf("DBG (%g,%g) in %s out %s\n", q.point.x, q.point.y, q.in_handle ? (std::to_string(q.in_handle->x)+","+std::to_string(q.in_handle->y)).c_str() : "-", q.out_handle ? (std::to_string(q.out_handle->x)+","+std::to_string(q.out_handle->y)).c_str() : "-");
   ASSERT_EQ(r.size(), nodes.size());
   // G1 exact where the foot meets the line.
   ASSERT_TRUE(r[2].in_handle && !r[2].out_handle);
