@@ -336,13 +336,14 @@ bool kinks_a_curve(const Contour& contour, std::size_t k, const std::array<Vec2,
 
 Contour merge_line_kinks(const Contour& contour, double allowance_units, bool only_against_neighbours) {
   const std::size_t n = contour.segments.size();
+  const std::vector<std::optional<Join>> join_at = joins_by_node(contour);
   std::vector<bool> kink(n, false);
-  for (const Join& j : joins_of(contour)) {
-    const bool between_lines = j.node < n && is_line(contour.segments[(j.node + n - 1) % n]) && is_line(contour.segments[j.node]);
-    if (between_lines && small_kink(j)) kink[j.node] = true;
+  for (std::size_t k = 0; k < n && k < join_at.size(); ++k) {
+    const bool between_lines = is_line(contour.segments[(k + n - 1) % n]) && is_line(contour.segments[k]);
+    if (join_at[k] && between_lines && small_kink(*join_at[k])) kink[k] = true;
   }
   if (only_against_neighbours) {
-    const std::vector<bool> filleted = kinks_to_fillet(contour, joins_by_node(contour));
+    const std::vector<bool> filleted = kinks_to_fillet(contour, join_at);
     for (std::size_t k = 0; k < n; ++k) kink[k] = kink[k] && !filleted[k];
   }
   // Each chain of kinks walked from the node before it (a closed contour from a node that is no

@@ -73,7 +73,6 @@ bool rounded_node_within(const Contour& c, Vec2 p, double reach) {
   return false;
 }
 
-
 // What a line split is judged by: an outline's faults as the last passes leave it, the line
 // kinks taken (fair/line_kinks) and the joins mended (fair/join_mending). The kinks at the
 // splits are the fillets', and the kinks between lines rounding left may be too (Liberation
