@@ -1,9 +1,11 @@
-// Shapes tests build by hand: a closed contour of given segments, a closed polygon of lines, a node of an unrounded outline, a stem
-// with round ends (upright, or leaning as Comic Neue's i stem does), and DejaVu Sans Bold's u;
-// and whether a point a test reads back lies on the integer grid.
+// Shapes tests build by hand: a closed contour of given segments, a closed polygon of lines,
+// the usual four-cubic circle, a node of an unrounded outline, a stem with round ends (upright,
+// or leaning as Comic Neue's i stem does), and DejaVu Sans Bold's u; and whether a point a test
+// reads back lies on the integer grid.
 #pragma once
 
 #include <cmath>
+#include <numbers>
 #include <optional>
 #include <vector>
 
@@ -21,6 +23,20 @@ inline Contour closed(std::vector<Segment> segments) {
   c.nodes.assign(segments.size(), NodeFlags{});
   c.segments = std::move(segments);
   return c;
+}
+
+/// The usual circle of four cubics (handles (4/3)·tan(π/8) of the radius) about `centre`, its
+/// first node `turned` radians round from the +x axis, anticlockwise.
+inline Contour circle(Vec2 centre, double radius, double turned = 0.0) {
+  const double h = (4.0 / 3.0) * std::tan(std::numbers::pi / 8.0) * radius;
+  std::vector<Segment> quarters;
+  for (int q = 0; q < 4; ++q) {
+    const double a = turned + q * 0.5 * std::numbers::pi, b = a + 0.5 * std::numbers::pi;
+    const Vec2 ua{std::cos(a), std::sin(a)}, ub{std::cos(b), std::sin(b)};
+    const Vec2 p0 = centre + ua * radius, p3 = centre + ub * radius;
+    quarters.push_back(Cubic{{p0, p0 + Vec2{-ua.y, ua.x} * h, p3 - Vec2{-ub.y, ub.x} * h, p3}});
+  }
+  return closed(std::move(quarters));
 }
 
 /// The closed contour of lines through `corners`, in order, no node flagged.

@@ -9,6 +9,7 @@
 #include <optional>
 #include <span>
 #include <sstream>
+#include <utility>
 
 #include "fair/contour_plan.hpp"
 #include "fair/corner_end_lobes.hpp"
@@ -204,6 +205,7 @@ ContourFairing fair_within_budgets(const Contour& source, const ContourPlan& pla
       out.max_curvature_mismatch = a.mismatch;
       out.g1_nodes = a.g1_nodes;
       out.guide_stretches = a.guide_stretches;
+      out.basis = basis;
       out.split_nodes = split_nodes;
       out.g3_runs = a.g3_runs;
       out.g2_line_joins = a.g2_line_joins;
@@ -310,17 +312,33 @@ ContourFairing fair_curve(const Contour& source, const Contour& curve, const Con
     };
     return fair_planned(curve, p, opened, sampled_source, settings, cache, tries, kinks);
   };
+  // The contour faired with the kinks where curves meet lines corners, as drawn, and no kink
+  // pass making them smooth again; none where it has no such kink.
+  const auto fair_cornered = [&]() -> std::optional<ContourFairing> {
+    const double tangential_line_deg = std::exchange(options.tangential_line_deg, JoinThresholds{}.smooth_max_deg);
+    const ContourPlan cornered_plan = plan_with({});
+    options.tangential_line_deg = tangential_line_deg;
+    if (cornered_plan.pieces == plan.pieces) return std::nullopt;
+    std::vector<std::size_t> as_drawn;
+    return fair_plans(cornered_plan, {}, as_drawn);
+  };
+  if (settings.line_kinks_as_drawn) {
+    std::optional<ContourFairing> cornered = fair_cornered();
+    if (!cornered) {
+      out.reason = "no kink where a curve meets a line";
+      return out;
+    }
+    if (!cornered->faired) cornered->contour = source;  // as it was, not split at its turns
+    return std::move(*cornered);
+  }
   out = fair_plans(plan, {}, kinked);
   // A contour that does not fair with its curves made tangential to the lines they meet at a
-  // kink is faired with those kinks corners, as drawn, and no kink pass makes them smooth again
-  // (Comic Neue's u and i: stems' lines 0.8° off the vertical, kinked so at both ends against
-  // their curves' vertical tangents; the i's foot had no drawable G2 chain, and the u's line has
-  // grid steps of 60 units or more, so no handle on it seats a curve within the tolerance: each
-  // contour had been kept unfaired).
+  // kink is faired with those kinks corners (Comic Neue's u and i: stems' lines 0.8° off the
+  // vertical, kinked so at both ends against their curves' vertical tangents; the i's foot had
+  // no drawable G2 chain, and the u's line has grid steps of 60 units or more, so no handle on
+  // it seats a curve within the tolerance: each contour had been kept unfaired).
   if (!out.faired) {
-    options.tangential_line_deg = JoinThresholds{}.smooth_max_deg;
-    ContourFairing cornered = fair_plans(plan_with({}), {}, kinked);
-    if (cornered.faired) out = std::move(cornered);
+    if (std::optional<ContourFairing> cornered = fair_cornered(); cornered && cornered->faired) out = std::move(*cornered);
     kinked.clear();
   }
   // A corner whose faired pieces meet by less than the kink limit was noise the fairing
@@ -596,6 +614,19 @@ ContourFairing fair_contour(const Contour& source, const FairSettings& requested
   MendedFaults count(source, settings);
   OutlineFaults faults = out.faired ? count(out) : OutlineFaults{};
   fair_again_while_faulty(out, faults, source, settings, first, memo, count);
+  // Last, a contour whose runs faired only on another basis than their own outlines, faults
+  // left, is faired with the kinks where its curves meet lines corners as drawn, and that kept
+  // where the other has no fewer faults: the source's own kink is truer to the design than a
+  // smoothing guide's curve (Comic Neue's u, its foot's curve cut beside the stem where
+  // rounding strayed: on the guide, a jump for the kink and 1.8 times the source's curvature
+  // variation).
+  if (out.faired && out.basis != RunBasis::own && faults.mendable()) {
+    settings.line_kinks_as_drawn = true;
+    Tries cornered_tries;
+    if (ContourFairing cornered = fair_contour_once(source, settings, cornered_tries, memo); cornered.faired)
+      if (const OutlineFaults cornered_faults = count(cornered); !fewer_faults(faults, cornered_faults))
+        out = std::move(cornered);
+  }
   return out;
 }
 

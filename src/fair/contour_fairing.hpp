@@ -11,6 +11,7 @@
 #include "fair/faired_piece.hpp"
 #include "fair/g3_cubics.hpp"
 #include "fair/outline_faults.hpp"
+#include "fair/run_fairing.hpp"
 #include "geom/contour.hpp"
 
 namespace gf {
@@ -23,6 +24,8 @@ struct ContourFairing {
   double max_curvature_mismatch = 0.0;  ///< of the log-aesthetic chains, relative
   int g1_nodes = 0;        ///< smooth nodes with G1 only: no G2 Hermite cubic was found for a span
   int guide_stretches = 0; ///< spans written from the smoothing guide: no G2 log-aesthetic chain within the budget
+  /// What the runs that failed on their own outlines were faired on (text; own where none failed).
+  RunBasis basis = RunBasis::own;
   int split_nodes = 0;     ///< nodes added where cubics beside a jump rounding left were split (fair/jump_splits.hpp)
   int mended_joins = 0;    ///< jumps and kinks rounding left, mended on the grid (fair/join_mending.hpp)
   int g3_runs = 0;         ///< --continuity g3: smooth runs that came out G3

@@ -88,6 +88,10 @@ struct FairSettings {
   /// with the spare nodes kept, 1.15–1.19× the nodes of the pruned G2 output, under the G3
   /// bar's 1.2×).
   bool remove_spare_nodes = false;
+  /// Text: the kinks where curves meet lines kept as corners, as drawn, instead of the curves
+  /// made tangential to the lines (fair_contour's last fairing again of a contour whose runs
+  /// faired only on another basis than their own outlines).
+  bool line_kinks_as_drawn = false;
   /// The share of the tolerance (after rounding's reserve) the log-aesthetic chain may use;
   /// the cubics get the rest. Text 0.4; handwriting 0.7, where the chain follows a smoothed
   /// guide and the cubics follow the chain closely.

@@ -23,6 +23,9 @@ constexpr double step_weight = 1e-5;
 // Units: K–F's step no longer, so that the fillet's leg on it (a whole step at least) leaves
 // the stroke a line beyond it.
 constexpr double longest_on_step = 2.0 * longest_leg;
+// A curve split beside its line (split_curve_beside_line) at a node whose tangent runs along a
+// grid direction of components up to this.
+constexpr int most_cut_step = 3;
 
 // A split: the curve's end moved to `join`, the line turned there onto `step` and on at `vertex`.
 struct Split {
@@ -141,6 +144,60 @@ bool split_line_at(std::vector<OutlineNode>& nodes, bool closed, std::size_t k, 
   // join is the first (the contour keeps its start).
   const std::size_t at = join->arrives ? k + 1 : k == 0 ? nodes.size() : k;
   nodes.insert(nodes.begin() + static_cast<std::ptrdiff_t>(at), vertex);
+  return true;
+}
+
+bool split_curve_beside_line(std::vector<OutlineNode>& nodes, bool closed, std::size_t k) {
+  const std::optional<CurveLineJoin> join = curve_line_join(nodes, closed, k);
+  if (!join) return false;
+  const Vec2 j = join->curve.p[3], far = nodes[join->far].point;
+  const double step = shortest_line_step(j, far);
+  if (step <= distance(join->curve.p[2], j) || 2.0 * step > distance(j, far)) return false;
+  // N's direction: the shortest grid direction turned from J's tangent between a third and two
+  // thirds of the way the cubic turns (the piece from J then bends the way the cubic does, on
+  // the grid too); N where the tangent, turning from J, reaches it.
+  const Cubic& c = join->curve;
+  const auto velocity = c.hodograph();
+  const Vec2 at_j = c.p[3] - c.p[2];
+  const double whole = turning_angle(velocity.point_at(0.0), at_j);
+  std::optional<Vec2> direction;
+  double turn = 0.0;
+  for (int dx = -most_cut_step; dx <= most_cut_step; ++dx)
+    for (int dy = -most_cut_step; dy <= most_cut_step; ++dy) {
+      const Vec2 d{double(dx), double(dy)};
+      if (!is_primitive(d) || dot(d, at_j) <= 0.0) continue;
+      const double a = turning_angle(d, at_j);
+      if (a * whole <= 0.0 || std::abs(a) < std::abs(whole) / 3.0 || std::abs(a) > 2.0 * std::abs(whole) / 3.0) continue;
+      if (!direction || norm(d) < norm(*direction)) direction = d, turn = std::abs(a);
+    }
+  if (!direction) return false;
+  double lo = 0.0, hi = 1.0;  // turned from J's tangent by more than `turn` at lo, by less at hi
+  for (int i = 0; i < 60; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (std::abs(turning_angle(velocity.point_at(mid), at_j)) > turn ? lo : hi) = mid;
+  }
+  const double t = 0.5 * (lo + hi);
+  // A cubic that turns back somewhere has its tangent elsewhere than on the direction there.
+  if (std::abs(turning_angle(velocity.point_at(t), *direction)) > 1e-6) return false;
+  // The cubic as it ends at J: from its other node B to N, then N to J.
+  const auto [b_to_n, n_to_j] = c.split(t);
+  const std::size_t n = nodes.size(), other = join->arrives ? (k + n - 1) % n : (k + 1) % n;
+  OutlineNode cut;
+  cut.point = n_to_j.p[0];
+  cut.grid_step = join->arrives ? *direction : -*direction;
+  if (join->arrives) {
+    nodes[other].out_handle = b_to_n.p[1];
+    cut.in_handle = b_to_n.p[2], cut.out_handle = n_to_j.p[1];
+    nodes[k].in_handle = n_to_j.p[2];
+  } else {
+    nodes[k].out_handle = n_to_j.p[2];
+    cut.in_handle = n_to_j.p[1], cut.out_handle = b_to_n.p[2];
+    nodes[other].in_handle = b_to_n.p[1];
+  }
+  // Between J and B: before J where the cubic arrives (after the last node where J is the
+  // first, so that the contour keeps its start), else after it.
+  const std::size_t at = join->arrives ? (k == 0 ? n : k) : k + 1;
+  nodes.insert(nodes.begin() + static_cast<std::ptrdiff_t>(at), cut);
   return true;
 }
 

@@ -35,4 +35,17 @@ struct LineSplitLimits {
 /// no such split is.
 bool split_line_at(std::vector<OutlineNode>& nodes, bool closed, std::size_t k, const LineSplitLimits& limits);
 
+/// Where no such split is, the line turning against the curve's bend whichever short step
+/// J–K takes (Gentium Plus's M: a 4-unit handle into a leg of step (1, −111), the curve bending
+/// away from the vertical), the curve is given room instead: where node k, a smooth node J,
+/// joins a cubic to a line whose shortest grid step is longer than the cubic's handle there and
+/// fits in the line twice, the cubic is split exactly (de Casteljau) at a node N whose tangent
+/// runs along a short primitive grid direction, N's grid step, turned from J's tangent between
+/// a third and two thirds of the way to the tangent at the cubic's far end. Rounding can then
+/// slide J back along the line by a whole step, and the piece from J to N takes over that
+/// stretch (fair/line_rounding.hpp); whole, the cubic would have had to turn within its last
+/// few units, and strayed. False (the nodes unchanged) where node k is no such join or no such
+/// direction is.
+bool split_curve_beside_line(std::vector<OutlineNode>& nodes, bool closed, std::size_t k);
+
 }  // namespace gf

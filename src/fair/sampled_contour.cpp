@@ -1,9 +1,28 @@
 #include "fair/sampled_contour.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace gf {
+
+namespace {
+
+// Units: how far a chord between samples may stray from a tight curve's arc.
+constexpr double chord_sag = 0.01;
+
+// A sample every 3 units of control polygon, and, on a tight curve, enough that its chords sag
+// by no more than chord_sag: n chords of a curve L long turning by θ sag by about L·θ / (8 n²)
+// each (the control polygon's turning bounds θ). At 3 units alone, a 45-unit quarter turn
+// sagged 0.07 units, and a rounded outline measured 1.248 units from it was 1.270 (Comic
+// Neue's u, at a tolerance of 1.25).
+int samples_for(const Segment& s) {
+  const double length = control_polygon_length(s), turning = control_polygon_turning(s);
+  const double by_sag = std::sqrt(length * turning / (8.0 * chord_sag));
+  return std::clamp(static_cast<int>(std::max(length / 3.0, by_sag)), 16, 256);
+}
+
+}  // namespace
 
 ContourSamples contour_samples(const Contour& c) {
   ContourSamples out;
@@ -13,7 +32,7 @@ ContourSamples contour_samples(const Contour& c) {
       out.points.push_back(start_point(s)), out.segment_of.push_back(i);
       continue;
     }
-    const int n = std::clamp(static_cast<int>(control_polygon_length(s) / 3.0), 16, 256);
+    const int n = samples_for(s);
     for (int k = 0; k < n; ++k) out.points.push_back(point_at(s, static_cast<double>(k) / n)), out.segment_of.push_back(i);
   }
   if (!c.segments.empty()) {

@@ -13,9 +13,10 @@
 
 namespace gf {
 
-/// Points along a contour, dense enough that chords stay within a small fraction of a unit of
-/// the curve for glyph-sized curvature, and for each the segment whose stretch of polyline (to
-/// the next point) it starts.
+/// Points along a contour, at least one every 3 units and dense enough by each curve's turning
+/// that chords keep within about a hundredth of a unit of it (two hundredths on unevenly
+/// parametrised cubics), and for each the segment whose stretch of polyline (to the next point)
+/// it starts.
 struct ContourSamples {
   std::vector<Vec2> points;
   std::vector<std::size_t> segment_of;

@@ -42,6 +42,19 @@ inline double control_polygon_length(const Segment& s) {
   for_each_point(s, [&](Vec2 q) { length += distance(last, q), last = q; });
   return length;
 }
+/// How far the control polygon turns, each bend by its size (radians): at least how far a
+/// planar Bézier segment turns.
+inline double control_polygon_turning(const Segment& s) {
+  double turning = 0.0;
+  Vec2 last_point = start_point(s), last_leg{};
+  for_each_point(s, [&](Vec2 q) {
+    if (q == last_point) return;
+    const Vec2 leg = q - last_point;
+    if (last_leg != Vec2{}) turning += std::abs(turning_angle(last_leg, leg));
+    last_leg = leg, last_point = q;
+  });
+  return turning;
+}
 /// Every point the same: no length and no direction.
 inline bool is_degenerate(const Segment& s) {
   bool same = true;

@@ -9,6 +9,8 @@
 
 #include <cmath>
 
+#include "fair/cubic_change.hpp"
+#include "fair/grid_rounding.hpp"
 #include "point_set_distance.hpp"
 #include "test_shapes.hpp"
 
@@ -85,6 +87,112 @@ TEST(LineSplits, ALineWhoseStepTheHandleTakesStays) {
   const std::vector<OutlineNode> before = nodes;
   EXPECT_FALSE(split_line_at(nodes, true, 1, LineSplitLimits{}));
   EXPECT_EQ(nodes, before);
+}
+
+// Gentium Plus's M (2,048 units), its right leg as the guide basis faired it: the leg's
+// 1,110-unit line steps (1, −111) down to J = (1425, 104), where a cubic leaves it G2 with a
+// 4.4-unit handle and bends left, away from the vertical, onto the foot's (2, −1). `reversed`:
+// the contour runs the other way round (the cubic arrives at J).
+std::vector<OutlineNode> m_leg(bool reversed) {
+  std::vector<OutlineNode> nodes{
+      test::node({1115, 0}, std::nullopt, std::nullopt, false),
+      test::node({1115, 43}, std::nullopt, Vec2{1174.3512397558948, 55.169821489996089}, false),
+      test::node({1249.2288464008138, 83.820048777745228}, Vec2{1224.5327953366461, 71.472023245604305},
+                 Vec2{1270.0, 94.251912791103862}, true, Vec2{2, 1}),
+      test::node({1270.0, 104.0}, Vec2{1270.0, 100.49470700443109}, Vec2{1270.0, 162.50213671311499}, true,
+                 Vec2{0, 1}),
+      test::node({1268.8235433873954, 279.50049546159767}, Vec2{1270.0, 162.50213671311499}, std::nullopt),
+      test::node({1260, 1157}, std::nullopt, std::nullopt, false),
+      test::node({1415, 1214}, std::nullopt, std::nullopt, false),
+      test::node({1425, 104}, std::nullopt, Vec2{1425.0399194780855, 99.568937932501356}),
+      test::node({1453.8338232794056, 78.211618996378817}, Vec2{1425.102909225013, 92.577076023541039},
+                 Vec2{1477.4462567683197, 66.405402251949667}, true, Vec2{2, -1}),
+      test::node({1570, 43}, Vec2{1510.8002773402809, 54.429657168040194}, std::nullopt, false),
+      test::node({1570, 0}, std::nullopt, std::nullopt, false),
+  };
+  if (!reversed) return nodes;
+  std::vector<OutlineNode> back;
+  for (auto it = nodes.rbegin(); it != nodes.rend(); ++it) {
+    OutlineNode n = *it;
+    std::swap(n.in_handle, n.out_handle);
+    if (n.grid_step) n.grid_step = -*n.grid_step;
+    back.push_back(n);
+  }
+  return back;
+}
+
+// Whether every point of `a`, sampled, lies on `b` (densely sampled).
+bool lies_on(const Cubic& a, const Cubic& b) {
+  std::vector<Vec2> on_b;
+  for (int i = 0; i <= 20000; ++i) on_b.push_back(b.point_at(i / 20000.0));
+  for (int i = 0; i <= 200; ++i) {
+    const Vec2 p = a.point_at(i / 200.0);
+    double nearest = 1e300;
+    for (const Vec2 q : on_b) nearest = std::min(nearest, distance(p, q));
+    if (nearest > 0.01) return false;
+  }
+  return true;
+}
+
+TEST(LineSplits, ACurveBendingAwayFromItsLegsAxisIsSplitWhereItTurnsOntoAShortStep) {
+  for (const bool reversed : {false, true}) {
+    const std::vector<OutlineNode> before = m_leg(reversed);
+    const std::size_t n = before.size(), j = reversed ? n - 1 - 7 : 7;
+    std::vector<OutlineNode> nodes = before;
+    // No split of the leg: every short step near the vertical turns the line against the bend.
+    ASSERT_FALSE(split_line_at(nodes, true, j, LineSplitLimits{})) << "reversed " << reversed;
+    ASSERT_TRUE(split_curve_beside_line(nodes, true, j)) << "reversed " << reversed;
+    ASSERT_EQ(nodes.size(), n + 1);
+    // The cut goes in between J and the foot's node; reversed, J moves up one.
+    const std::size_t cut = reversed ? j : j + 1, join = reversed ? j + 1 : j;
+    EXPECT_EQ(nodes[join].point, before[j].point);
+    const OutlineNode& c = nodes[cut];
+    ASSERT_TRUE(c.smooth && c.in_handle && c.out_handle && c.grid_step);
+    // The two cubics are the one cubic, cut: the outline does not move.
+    const Cubic whole = outline_cubic(before, reversed ? j - 1 : j);
+    EXPECT_TRUE(lies_on(outline_cubic(nodes, reversed ? j - 1 : j), whole));
+    EXPECT_TRUE(lies_on(outline_cubic(nodes, reversed ? j : j + 1), whole));
+    // The cut's tangent runs along its grid step, a short primitive direction, turned from J's
+    // between a third and two thirds of the way the cubic turns, the way it bends.
+    const Vec2 step = *c.grid_step;
+    EXPECT_EQ(primitive_step(step), step);
+    EXPECT_LE(std::max(std::abs(step.x), std::abs(step.y)), 3.0);
+    EXPECT_NEAR(cross(step, *c.out_handle - c.point) / norm(*c.out_handle - c.point), 0.0, 1e-9);
+    EXPECT_NEAR(cross(step, c.point - *c.in_handle) / norm(c.point - *c.in_handle), 0.0, 1e-9);
+    EXPECT_GT(dot(step, *c.out_handle - c.point), 0.0);
+    const double j_angle = std::atan2(99.568937932501356 - 104.0, 0.0399194780855);  // J's tangent, leaving
+    const double foot = std::atan2(-1.0, 2.0);
+    const double cut_angle = std::atan2(reversed ? -step.y : step.y, reversed ? -step.x : step.x);
+    EXPECT_GT(cut_angle - j_angle, (foot - j_angle) / 3.0);
+    EXPECT_LT(cut_angle - j_angle, 2.0 * (foot - j_angle) / 3.0);
+  }
+}
+
+TEST(LineSplits, ACurveCutBesideItsLegRoundsWithinTheToleranceWithoutAnInflection) {
+  // What the cut is for: on its own, the cubic at J takes a whole (1, −111) step of the leg as
+  // its handle and strays tens of units; cut, rounding slides J a step up the leg and the short
+  // piece takes that stretch over, bending one way as the cubic did.
+  const std::vector<OutlineNode> before = m_leg(false);
+  HandleStepLimits limits;
+  limits.allowance = 1.78;  // what the float outline leaves of the 2.56-unit tolerance, less 5 %
+  limits.flat_curvature = 0.5 / 2048.0;
+  const Contour exact = to_contour(before, true);
+  const auto strays = [&](const std::vector<OutlineNode>& rounded) {
+    return test::point_set_hausdorff(dense(rounded), test::contour_points(exact, 600));
+  };
+  EXPECT_GT(strays(round_to_grid(before, true, limits)), 10.0);
+  std::vector<OutlineNode> nodes = before;
+  ASSERT_TRUE(split_curve_beside_line(nodes, true, 7));
+  const std::vector<OutlineNode> rounded = round_to_grid(nodes, true, limits);
+  EXPECT_LE(strays(rounded), 2.56);
+  for (std::size_t i = 0; i < rounded.size(); ++i) {
+    const std::size_t next = (i + 1) % rounded.size();
+    if (!rounded[i].out_handle || !rounded[next].in_handle) continue;
+    const Cubic c = outline_cubic(rounded, i);
+    if (c.p[3].y > 300.0 || c.p[0].x < 1400.0) continue;  // the right leg's foot
+    EXPECT_EQ(curvature_shape(c, 0.0).sign_changes, 0) << "cubic " << i;
+    EXPECT_GE(cross(c.p[1] - c.p[0], c.p[3] - c.p[2]), 0.0) << "cubic " << i;  // bends left
+  }
 }
 
 }  // namespace
