@@ -45,12 +45,12 @@ struct SplitOnGrid {
 /// where it has faults and slid such a join along its line, no rounded node within 3 units of
 /// it), or strays past it (at each join of a curve to a line where it stretched the curve's
 /// handle then): `nodes` with each such line split where both its parts step short
-/// (fair/line_splits.hpp; where it strayed and the line has no such split, its curve split
-/// beside it instead), each split kept where the float outline stays within `available` of
-/// the source, settled again. None where nothing was split, or that strays, or (where
-/// `rounded` did not) has no fewer faults than `rounded`, both counted as the last passes
-/// leave them (fair/line_kinks.hpp, then fair/join_mending.hpp), or (at slid joins) has more
-/// inflections.
+/// (fair/line_splits.hpp; where it strayed or slid the join and the line has no such split,
+/// its curve split beside it instead), each split kept where the float outline stays within
+/// `available` of the source, settled again. None where nothing was split, or that strays, or
+/// (where `rounded` did not) has no fewer faults than `rounded`, both counted as the last
+/// passes leave them (fair/line_kinks.hpp, then fair/join_mending.hpp), or (at slid joins) has
+/// more inflections.
 std::optional<SplitOnGrid> rounded_with_line_splits(const Contour& source, const std::vector<OutlineNode>& nodes,
                                                     const OutlineOnGrid& rounded, const SampledContour& sampled_source,
                                                     const FairSettings& settings, double available,

@@ -1501,6 +1501,27 @@ TEST(ContourFairing, AShortCurveIntoACornerDoesNotFoldOnTheGrid) {
             << "segment " << k << " at " << step / 256.0;
 }
 
+TEST(ContourFairing, ACurveBendingAwayFromALongStepLegIsCutBesideIt) {
+  // Gentium Plus's M (2,048 units): a 4.4-unit handle leaves a leg of step (1, −111) and the
+  // curve bends away from the leg's axis, so neither the leaning fillet nor a split of the leg
+  // applies. Its guide basis rounded 37 units off, and the contour fell to stalled chains and
+  // an inflection the source lacks; the curve is now cut where its tangent runs along a short
+  // grid direction (fair/line_splits' split_curve_beside_line).
+  expect_no_inflection_added(test::gentium_plus, "M");
+}
+
+TEST(ContourFairing, ACurveWhoseJoinRoundingSlidIsCutBesideItsLine) {
+  // Quicksand's W (1,000 units): the right arm's line, of grid step (221, 640), ends at
+  // (713, 19) where the foot's tight curve begins. Rounding slid the join 120 units up the line,
+  // which has no split whose parts both step short, and the curve from there kept a jump
+  // (κ·UPM −78.6 against −67.3) where it turns onto the baseline. Cut beside the line, as where
+  // rounding strays, the glyph has no jump.
+  FairedGlyph f;
+  expect_faired(test::quicksand, "W", FairProfile::text, &f);
+  EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm), 0);
+  EXPECT_LE(inflections(f.result.glyph.outline, f.upm), inflections(f.source.outline, f.upm));
+}
+
 // A contour's plan faired as a text contour's last resort on the grid (fair_contour's
 // fair_planned): on its own outlines with stalled chains kept (RunBasis::own_with_jumps), the
 // runs that fail there kept as drawn, within the budgets of its first fairing.
