@@ -529,8 +529,9 @@ int g2_jumps(const Outline& faired, double upm, std::optional<std::pair<Vec2, Ve
 }
 
 // A text glyph faired within every check (expect_faired), with no g2-jump left.
-void expect_faired_g2(const std::string& font, const std::string& glyph) {
-  FairedGlyph f;
+void expect_faired_g2(const std::string& font, const std::string& glyph, FairedGlyph* faired = nullptr) {
+  FairedGlyph local;
+  FairedGlyph& f = faired ? *faired : local;
   expect_faired(font, glyph, FairProfile::text, &f);
   EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm), 0) << glyph;
 }
@@ -832,8 +833,7 @@ TEST(ContourFairing, ALineIsPlacedWhereTheExtremumItsCurveReachesCanSeatIt) {
 // Faired as text and rounded with no curvature jump, kink or lost corner.
 void expect_faired_without_faults(const std::string& font, const std::string& glyph) {
   FairedGlyph f;
-  expect_faired(font, glyph, FairProfile::text, &f);
-  EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm), 0) << glyph;
+  expect_faired_g2(font, glyph, &f);
   EXPECT_EQ(kinks(f.result.glyph.outline), 0) << glyph;
   EXPECT_EQ(corners_lost(f.source.outline, f.result.glyph.outline, f.upm), 0) << glyph;
 }
@@ -886,8 +886,7 @@ TEST(ContourFairing, TheCubicsBesideAJumpRoundingLeftAreSplitAndRoundedAgain) {
   // direction (fair/jump_splits), the new nodes' handles set κ finely and the glyph has none.
   // The oracle that the splits mend them: the same glyph faired without them still jumps.
   FairedGlyph f;
-  expect_faired(test::eb_garamond, "W", FairProfile::text, &f);
-  EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm), 0);
+  expect_faired_g2(test::eb_garamond, "W", &f);
   FairSettings unsplit = f.settings;
   unsplit.split_beside_jumps = false;
   EXPECT_GT(g2_jumps(fair_glyph(f.source, unsplit).glyph.outline, f.upm), 0);
@@ -986,8 +985,7 @@ TEST(ContourFairing, RoundingMayMoveAnInflectionAcrossItsNode) {
   // run. Weighed per cubic, it was an inflection added, and the handle a unit off kept κ·UPM
   // 0.073 against 0 there.
   FairedGlyph f;
-  expect_faired(test::lato, "g", FairProfile::text, &f);
-  EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm), 0);
+  expect_faired_g2(test::lato, "g", &f);
   EXPECT_LE(inflections(f.result.glyph.outline, f.upm), inflections(f.source.outline, f.upm));
   // Cantarell's S under G3: the spine's inflection node kept κ·UPM 0.012 against −0.110.
   FairOptions g3;
@@ -1517,8 +1515,7 @@ TEST(ContourFairing, ACurveWhoseJoinRoundingSlidIsCutBesideItsLine) {
   // (κ·UPM −78.6 against −67.3) where it turns onto the baseline. Cut beside the line, as where
   // rounding strays, the glyph has no jump.
   FairedGlyph f;
-  expect_faired(test::quicksand, "W", FairProfile::text, &f);
-  EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm), 0);
+  expect_faired_g2(test::quicksand, "W", &f);
   EXPECT_LE(inflections(f.result.glyph.outline, f.upm), inflections(f.source.outline, f.upm));
 }
 
