@@ -8,6 +8,7 @@
 #include <variant>
 #include <vector>
 
+#include "fair/cubic_change.hpp"
 #include "fair/node_change.hpp"
 #include "fair/outline_faults.hpp"
 #include "fair/outline_nodes.hpp"
@@ -102,7 +103,7 @@ struct Edit {
 };
 struct Candidate {
   double cost = 0.0;
-  std::array<Edit, 8> edits{};
+  std::array<Edit, 10> edits{};
   int count = 0;
   void add(std::size_t segment, int point, Vec2 to) { edits[count++] = {segment, point, to}; }
 };
@@ -179,10 +180,16 @@ std::vector<Cubic> cubics_at(const Contour& c, std::span<const std::size_t> indi
 
 // The cheapest of `found` whose changed cubics (`cubics`, indices into c's segments) gain
 // no extremum, inflection, fold, overreach, crowded handle or spike in total, and that keeps the
-// contour within the tolerance of the source.
+// contour within the tolerance of the source. With `turning_together` the cubics redraw one
+// curve, and either may turn as far as they did together.
 std::optional<Contour> cheapest_within(const Contour& c, Cheapest&& found, std::span<const std::size_t> cubics,
-                                       const SampledContour& sampled_source, const JoinMendingLimits& limits) {
-  const ShapeTraits old = shape_traits(cubics_at(c, cubics));
+                                       const SampledContour& sampled_source, const JoinMendingLimits& limits,
+                                       bool turning_together = false) {
+  ShapeTraits old = shape_traits(cubics_at(c, cubics));
+  if (turning_together) {
+    old.turning = 0.0;
+    for (const Cubic& b : cubics_at(c, cubics)) old.turning += cubic_turning(b);
+  }
   for (const Candidate& k : std::move(found).sorted()) {
     Contour t = c;
     apply(t, k);
@@ -324,6 +331,153 @@ std::optional<Contour> mend_line_join(const Contour& c, const std::vector<Join>&
   return cheapest_within(c, std::move(found), cubics, sampled_source, limits);
 }
 
+// The whole steps of `step` from `origin` to p, where p lies on that line at one (its grid points
+// are exactly those: `step` is primitive); none otherwise.
+std::optional<int> steps_along(Vec2 origin, Vec2 step, Vec2 p) {
+  if (cross(p - origin, step) != 0.0) return std::nullopt;
+  return static_cast<int>(std::lround(dot(p - origin, step) / dot(step, step)));
+}
+
+// The whole steps t of primitive d from m to where m + t·d crosses the line through `origin`
+// along `step`, where that is a grid point; none where the lines are parallel or it is not.
+std::optional<int> crossing_steps(Vec2 m, Vec2 d, Vec2 origin, Vec2 step) {
+  const double across = cross(d, step);
+  if (across == 0.0) return std::nullopt;
+  const double t = cross(origin - m, step) / across;
+  const double whole = std::round(t);
+  if (std::abs(t - whole) > 1e-9) return std::nullopt;
+  return static_cast<int>(whole);
+}
+
+// The grid points within a unit of the curve the cubics draw, each with the curve's tangent
+// where it passes nearest (of 48 samples a cubic).
+std::vector<std::pair<Vec2, Vec2>> grid_points_along(std::span<const Cubic> cubics) {
+  struct Near {
+    Vec2 point, tangent;
+    double off;
+  };
+  std::vector<Near> all;
+  constexpr int samples = 48;
+  for (const Cubic& c : cubics) {
+    const auto velocity = c.hodograph();
+    for (int i = 0; i <= samples; ++i) {
+      const double t = static_cast<double>(i) / samples;
+      const Vec2 p = c.point_at(t), tangent = velocity.point_at(t);
+      if (norm(tangent) == 0.0) continue;
+      for (int dx = -1; dx <= 1; ++dx)
+        for (int dy = -1; dy <= 1; ++dy) {
+          const Vec2 g{std::round(p.x) + dx, std::round(p.y) + dy};
+          all.push_back({g, tangent, distance(g, p)});
+        }
+    }
+  }
+  const auto by_place = [](const Near& a, const Near& b) {
+    return a.point.x != b.point.x ? a.point.x < b.point.x : a.point.y != b.point.y ? a.point.y < b.point.y : a.off < b.off;
+  };
+  std::sort(all.begin(), all.end(), by_place);
+  std::vector<std::pair<Vec2, Vec2>> out;
+  for (const Near& e : all)
+    if (out.empty() || out.back().first != e.point) out.push_back({e.point, e.tangent});
+  return out;
+}
+
+// c with its cubic k split at its middle into two (the curve unchanged), their node smooth.
+Contour split_at_middle(const Contour& c, std::size_t k) {
+  Contour w = c;
+  const std::array<Cubic, 2> halves = std::get<Cubic>(c.segments[k]).split(0.5);
+  w.segments[k] = halves[0];
+  w.segments.insert(w.segments.begin() + static_cast<std::ptrdiff_t>(k) + 1, halves[1]);
+  if (w.nodes.size() == c.segments.size())
+    w.nodes.insert(w.nodes.begin() + static_cast<std::ptrdiff_t>(k) + 1, NodeFlags{false, true});
+  return w;
+}
+
+// The curve between two lines (line h, cubic k, cubic k + 1, then a line; a lone cubic split at
+// its middle first) whose join with line h jumps, redrawn as two cubics that leave and reach
+// the lines with κ = 0 exactly. The node M between them goes to any grid point within a unit of
+// the curve, its direction near the curve's tangent there, where its tangent line crosses both
+// lines at grid points: M's handles there lie on the lines, and a cubic whose far handle lies
+// on the line it leaves has κ = 0 there whatever its lengths ((P1 − P0) × (P2 − P1) = 0). The
+// lines' ends and the cubics' other handles are whole steps of the lines between, the second
+// line's end up to its far end (the line then goes), and κ at M matches from both sides.
+// TeX Gyre Pagella's W: a (2, 7) leg into a turn of 68° in 45 units, κ·UPM 10 where it leaves
+// the leg; the rounding passes move a node two or three units, and no such place reaches the
+// leg's grid points.
+std::optional<Contour> mend_curve_between_lines(const Contour& c, std::size_t k, const SampledContour& sampled_source,
+                                                const JoinMendingLimits& limits) {
+  std::size_t n = c.segments.size();
+  const std::size_t h = (k + n - 1) % n;
+  if (n < 4 || !std::holds_alternative<Line>(c.segments[h]) || !std::holds_alternative<Cubic>(c.segments[k]))
+    return std::nullopt;
+  const bool lone = std::holds_alternative<Line>(c.segments[(k + 1) % n]);
+  const Contour w = lone ? split_at_middle(c, k) : c;
+  n = w.segments.size();
+  const bool flagged = w.nodes.size() == n;  // the nodes' flags, kept in step with the segments'
+
+  const std::size_t j = (k + 1) % n, l = (k + 2) % n;
+  if (!std::holds_alternative<Cubic>(w.segments[j]) || !std::holds_alternative<Line>(w.segments[l]) || l == h)
+    return std::nullopt;
+  const Line& first = std::get<Line>(w.segments[h]);
+  const Line& second = std::get<Line>(w.segments[l]);
+  const Vec2 a1 = first.p[0], join = first.p[1], q0 = second.p[0], a2 = second.p[1];
+  const std::optional<Vec2> u = primitive_step(join - a1), v = primitive_step(a2 - q0);
+  if (!u || !v) return std::nullopt;
+  const std::array<Cubic, 2> old{std::get<Cubic>(w.segments[k]), std::get<Cubic>(w.segments[j])};
+  const Vec2 old_m = old[0].p[3];
+  const double reach = distance(join, q0);  // the curve's chord: how far its handles reach
+  const double upm = limits.units_per_em;
+  // The lines' ends a few of their steps either way along them (the first line keeps a step);
+  // in steps from the first line's start and back from the second line's end.
+  const int slide = limits.line_slide_steps;
+  const int join_steps = *steps_along(a1, *u, join), q0_steps = *steps_along(a2, *v * -1.0, q0);
+  Cheapest found(limits.most_judged);
+  for (const auto& [m, tangent] : grid_points_along(old))
+    for (const Vec2 d : directions_near(tangent, limits.most_turn_rad, limits.longest_step)) {
+      const std::optional<int> back = crossing_steps(m, d, a1, *u), ahead = crossing_steps(m, d, a2, *v);
+      if (!back || !ahead || *back > -1 || *ahead < 1) continue;
+      const Vec2 near_first = m + d * *back, near_second = m + d * *ahead;
+      if (distance(near_first, m) > reach || distance(near_second, m) > reach) continue;
+      const int s2 = *steps_along(a1, *u, near_first), r2 = *steps_along(a2, *v * -1.0, near_second);
+      const int s0_first = std::max(1, join_steps - slide), s0_last = std::min(join_steps + slide, s2 - 2);
+      const int r0_first = std::max(0, q0_steps - slide), r0_last = std::min(q0_steps + slide, r2 - 2);
+      if (s0_first > s0_last || r0_first > r0_last) continue;
+      // κ at M is linear in how far each cubic's other handle lies from M's along its line:
+      // α·k1 from the first cubic (its P1 α steps behind P2), β·k2 from the second.
+      const double k1 = end_curvature_of(near_first - *u, near_first, m);
+      const double k2 = start_curvature(m, near_second, near_second + *v);
+      if (k1 == 0.0 || k2 == 0.0) continue;
+      for (int alpha = 1; alpha <= s2 - 1 - s0_first; ++alpha) {
+        const double ka = alpha * k1;
+        const double centre = std::round(ka / k2);
+        for (int beta = static_cast<int>(centre) - 1; beta <= static_cast<int>(centre) + 1; ++beta) {
+          if (beta < 1 || beta > r2 - 1 - r0_first || jumps(ka, beta * k2, upm)) continue;
+          const Vec2 p1 = near_first - *u * alpha, p2 = near_second + *v * beta;
+          for (int s0 = s0_first; s0 <= std::min(s0_last, s2 - alpha - 1); ++s0)
+            for (int r0 = r0_first; r0 <= std::min(r0_last, r2 - beta - 1); ++r0) {
+              const Vec2 p0 = a1 + *u * s0, q = a2 - *v * r0;
+              Candidate cand;
+              cand.cost = distance(p0, join) + distance(m, old_m) + distance(q, q0) + distance(p1, old[0].p[1]) +
+                          distance(near_first, old[0].p[2]) + distance(near_second, old[1].p[1]) +
+                          distance(p2, old[1].p[2]);
+              cand.add(h, 1, p0);
+              cand.add(k, 0, p0), cand.add(k, 1, p1), cand.add(k, 2, near_first), cand.add(k, 3, m);
+              cand.add(j, 0, m), cand.add(j, 1, near_second), cand.add(j, 2, p2), cand.add(j, 3, q);
+              cand.add(l, 0, q);
+              found.offer(cand);
+            }
+        }
+      }
+    }
+  const std::array<std::size_t, 2> cubics{k, j};
+  std::optional<Contour> mended = cheapest_within(w, std::move(found), cubics, sampled_source, limits, true);
+  // The second line's end at its far end: the line goes, its far node the corner it was.
+  if (mended && std::get<Line>(mended->segments[l]).p[0] == a2) {
+    mended->segments.erase(mended->segments.begin() + static_cast<std::ptrdiff_t>(l));
+    if (flagged) mended->nodes.erase(mended->nodes.begin() + static_cast<std::ptrdiff_t>(l));
+  }
+  return mended;
+}
+
 // The closed contour walked the other way: its segment i is segment n − 1 − i reversed, and
 // its node i node (n − i) mod n.
 Contour walked_back(const Contour& c) {
@@ -339,11 +493,11 @@ Contour walked_back(const Contour& c) {
 }  // namespace
 
 int mend_jumping_joins(Contour& rounded, const SampledContour& sampled_source, const JoinMendingLimits& limits) {
-  const std::size_t n = rounded.segments.size();
-  if (!rounded.closed || n < 3) return 0;
+  if (!rounded.closed || rounded.segments.size() < 3) return 0;
   int mended = 0;
   std::vector<Join> joins = joins_of(rounded);
-  for (std::size_t k = 0; k < n; ++k) {
+  for (std::size_t k = 0; k < rounded.segments.size(); ++k) {
+    const std::size_t n = rounded.segments.size();
     const JoinFault fault = join_fault(joins[k], {}, limits.units_per_em);
     if (fault != JoinFault::jump && fault != JoinFault::kink) continue;
     const Segment& in = rounded.segments[(k + n - 1) % n];
@@ -353,12 +507,15 @@ int mend_jumping_joins(Contour& rounded, const SampledContour& sampled_source, c
       done = mend_between_cubics(rounded, joins, k, sampled_source, limits);
     } else if (std::holds_alternative<Line>(in) && std::holds_alternative<Cubic>(out)) {
       done = mend_line_join(rounded, joins, k, sampled_source, limits);
+      if (!done) done = mend_curve_between_lines(rounded, k, sampled_source, limits);
     } else if (std::holds_alternative<Cubic>(in) && std::holds_alternative<Line>(out)) {
       const Contour back = walked_back(rounded);
-      if (std::optional<Contour> mended_back = mend_line_join(back, joins_of(back), (n - k) % n, sampled_source, limits))
-        done = walked_back(*mended_back);
+      std::optional<Contour> mended_back = mend_line_join(back, joins_of(back), (n - k) % n, sampled_source, limits);
+      if (!mended_back) mended_back = mend_curve_between_lines(back, (n - k) % n, sampled_source, limits);
+      if (mended_back) done = walked_back(*mended_back);
     }
     if (!done) continue;
+    rounded.nodes = std::move(done->nodes);
     rounded.segments = std::move(done->segments);
     joins = joins_of(rounded);
     ++mended;

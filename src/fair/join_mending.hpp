@@ -6,7 +6,10 @@
 // handles of both its cubics and, where a curve meets a line, the line's end and the curve's far
 // node move together, anywhere the whole contour stays within the tolerance of the source.
 // Noto Serif's W: a curve leaving a (−8, 27) leg with κ·UPM 0.149, mended by its near handle two
-// of the leg's steps long and its far node a unit over, turned to (−3, 7).
+// of the leg's steps long and its far node a unit over, turned to (−3, 7). Where no such move
+// mends a line join and the curve runs on to another line within two cubics, the curve is
+// redrawn as two cubics seated on both lines, their node anywhere along it (TeX Gyre Pagella's
+// W); its second line may go, the curve then reaching that line's far corner along it.
 #pragma once
 
 #include <cstddef>

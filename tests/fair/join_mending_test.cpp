@@ -51,6 +51,22 @@ Contour circle(double first, double handle = 110.0) {
                  cubic({0, -200}, {handle, -200}, {200, -handle}, {200, 0})});
 }
 
+// TeX Gyre Pagella's W (1,000 units to the em) about its right arm's top: a (2, 7) leg, a turn
+// of 68° in 45 units, a (10, 1) line to the serif's corner. `rounded`: two cubics as the
+// fairing rounded them at stop 101, κ·UPM 9.9 where they leave the leg; else the source's one.
+Contour pagella_w_arm(bool rounded) {
+  std::vector<Segment> segments;
+  if (rounded)
+    segments = {line({771, 128}, {913, 625}), cubic({913, 625}, {917, 639}, {922, 645}, {925, 648}),
+                cubic({925, 648}, {934, 657}, {944, 658}, {954, 659}), line({954, 659}, {984, 662})};
+  else
+    segments = {line({771, 128}, {914, 630}), cubic({914, 630}, {919, 647}, {930, 657}, {952, 659}),
+                line({952, 659}, {984, 662})};
+  for (const Line& l : {line({984, 662}, {984, 692}), line({984, 692}, {771, 692}), line({771, 692}, {771, 128})})
+    segments.push_back(l);
+  return closed(segments);
+}
+
 bool all_on_grid(const Contour& c) {
   bool on = true;
   for (const Segment& s : c.segments) for_each_point(s, [&](Vec2 p) { on = on && test::on_grid(p); });
@@ -105,6 +121,38 @@ TEST(JoinMending, AJoinEveryMendOfWhichStraysPastTheToleranceIsLeftAsItWas) {
   EXPECT_EQ(mend_jumping_joins(mended, SampledContour(source), limits_for(0.05)), 1);
   EXPECT_EQ(std::get<Line>(mended.segments.back()).p[1], (Vec2{141, 459}));
   EXPECT_EQ(FaultCounter(source, upm).count(mended).jumps, 0);
+}
+
+TEST(JoinMending, ATightCurveBetweenTwoLinesIsRedrawnSeatedOnBoth) {
+  const Contour source = pagella_w_arm(false);
+  const FaultCounter counter(source, upm);
+  Contour mended = pagella_w_arm(true);
+  ASSERT_EQ(counter.count(mended).jumps, 1);
+  // Two or three units from its node, no grid point gives the curve's handle a place on the
+  // leg: the node goes 18 units up the curve, where its tangent line crosses both lines on the
+  // grid, and the line to the corner goes, the second cubic reaching the corner along it.
+  EXPECT_EQ(mend_jumping_joins(mended, SampledContour(source), limits_for(1.25)), 1);
+  const OutlineFaults after = counter.count(mended);
+  EXPECT_EQ(after.jumps, 0);
+  EXPECT_EQ(after.kinks, 0);
+  EXPECT_EQ(after.inflections, 0);
+  EXPECT_EQ(after.corners_lost, 0);
+  EXPECT_TRUE(all_on_grid(mended));
+  EXPECT_LE(distance_between(SampledContour(mended), SampledContour(source)), 1.25);
+  ASSERT_EQ(mended.segments.size(), 6u);
+  ASSERT_EQ(mended.nodes.size(), 6u);
+  const Line& leg = std::get<Line>(mended.segments[0]);
+  const Cubic& leaving = std::get<Cubic>(mended.segments[1]);
+  const Cubic& arriving = std::get<Cubic>(mended.segments[2]);
+  // κ = 0 exactly where the curve leaves the leg and where it meets the corner's line: each
+  // cubic's handles on its line.
+  const Vec2 along_leg = leg.p[1] - leg.p[0], along_top = Vec2{10, 1};
+  EXPECT_EQ(leaving.p[0], leg.p[1]);
+  EXPECT_EQ(cross(leaving.p[1] - leg.p[0], along_leg), 0.0);
+  EXPECT_EQ(cross(leaving.p[2] - leg.p[0], along_leg), 0.0);
+  EXPECT_EQ(arriving.p[3], (Vec2{984, 662}));
+  EXPECT_EQ(cross(arriving.p[1] - arriving.p[3], along_top), 0.0);
+  EXPECT_EQ(cross(arriving.p[2] - arriving.p[3], along_top), 0.0);
 }
 
 }  // namespace
