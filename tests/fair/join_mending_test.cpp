@@ -73,6 +73,14 @@ bool all_on_grid(const Contour& c) {
   return on;
 }
 
+// No jump or kink at a smooth join, no inflection beyond the source's, no corner lost.
+void expect_no_faults(const OutlineFaults& f) {
+  EXPECT_EQ(f.jumps, 0);
+  EXPECT_EQ(f.kinks, 0);
+  EXPECT_EQ(f.inflections, 0);
+  EXPECT_EQ(f.corners_lost, 0);
+}
+
 JoinMendingLimits limits_for(double tolerance) { return {.tolerance_units = tolerance, .units_per_em = upm}; }
 
 TEST(JoinMending, ACurveLeavingASlantedLegWithAJumpIsMendedOnTheGridWithinTheTolerance) {
@@ -81,11 +89,7 @@ TEST(JoinMending, ACurveLeavingASlantedLegWithAJumpIsMendedOnTheGridWithinTheTol
   ASSERT_EQ(counter.count(source).jumps, 1);
   Contour mended = source;
   EXPECT_EQ(mend_jumping_joins(mended, SampledContour(source), limits_for(1.25)), 1);
-  const OutlineFaults after = counter.count(mended);
-  EXPECT_EQ(after.jumps, 0);
-  EXPECT_EQ(after.kinks, 0);
-  EXPECT_EQ(after.inflections, 0);
-  EXPECT_EQ(after.corners_lost, 0);
+  expect_no_faults(counter.count(mended));
   // The join stays where the leg ends, the curve's handle exactly on the leg's line.
   const Cubic& curve = std::get<Cubic>(mended.segments[0]);
   const Line& leg = std::get<Line>(mended.segments.back());
@@ -132,11 +136,7 @@ TEST(JoinMending, ATightCurveBetweenTwoLinesIsRedrawnSeatedOnBoth) {
   // leg: the node goes 18 units up the curve, where its tangent line crosses both lines on the
   // grid, and the line to the corner goes, the second cubic reaching the corner along it.
   EXPECT_EQ(mend_jumping_joins(mended, SampledContour(source), limits_for(1.25)), 1);
-  const OutlineFaults after = counter.count(mended);
-  EXPECT_EQ(after.jumps, 0);
-  EXPECT_EQ(after.kinks, 0);
-  EXPECT_EQ(after.inflections, 0);
-  EXPECT_EQ(after.corners_lost, 0);
+  expect_no_faults(counter.count(mended));
   EXPECT_TRUE(all_on_grid(mended));
   EXPECT_LE(distance_between(SampledContour(mended), SampledContour(source)), 1.25);
   ASSERT_EQ(mended.segments.size(), 6u);
