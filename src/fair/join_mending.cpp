@@ -372,7 +372,8 @@ std::vector<std::pair<Vec2, Vec2>> grid_points_along(std::span<const Cubic> cubi
     }
   }
   const auto by_place = [](const Near& a, const Near& b) {
-    return a.point.x != b.point.x ? a.point.x < b.point.x : a.point.y != b.point.y ? a.point.y < b.point.y : a.off < b.off;
+    if (a.point.x != b.point.x) return a.point.x < b.point.x;
+    return a.point.y != b.point.y ? a.point.y < b.point.y : a.off < b.off;
   };
   std::sort(all.begin(), all.end(), by_place);
   std::vector<std::pair<Vec2, Vec2>> out;
@@ -413,7 +414,6 @@ std::optional<Contour> mend_curve_between_lines(const Contour& c, std::size_t k,
   const Contour w = lone ? split_at_middle(c, k) : c;
   n = w.segments.size();
   const bool flagged = w.nodes.size() == n;  // the nodes' flags, kept in step with the segments'
-
   const std::size_t j = (k + 1) % n, l = (k + 2) % n;
   if (!std::holds_alternative<Cubic>(w.segments[j]) || !std::holds_alternative<Line>(w.segments[l]) || l == h)
     return std::nullopt;
@@ -429,7 +429,8 @@ std::optional<Contour> mend_curve_between_lines(const Contour& c, std::size_t k,
   // The lines' ends a few of their steps either way along them (the first line keeps a step);
   // in steps from the first line's start and back from the second line's end.
   const int slide = limits.line_slide_steps;
-  const int join_steps = *steps_along(a1, *u, join), q0_steps = *steps_along(a2, *v * -1.0, q0);
+  const std::optional<int> join_steps = steps_along(a1, *u, join), q0_steps = steps_along(a2, *v * -1.0, q0);
+  if (!join_steps || !q0_steps) return std::nullopt;  // off the grid
   Cheapest found(limits.most_judged);
   for (const auto& [m, tangent] : grid_points_along(old))
     for (const Vec2 d : directions_near(tangent, limits.most_turn_rad, limits.longest_step)) {
@@ -437,9 +438,12 @@ std::optional<Contour> mend_curve_between_lines(const Contour& c, std::size_t k,
       if (!back || !ahead || *back > -1 || *ahead < 1) continue;
       const Vec2 near_first = m + d * *back, near_second = m + d * *ahead;
       if (distance(near_first, m) > reach || distance(near_second, m) > reach) continue;
-      const int s2 = *steps_along(a1, *u, near_first), r2 = *steps_along(a2, *v * -1.0, near_second);
-      const int s0_first = std::max(1, join_steps - slide), s0_last = std::min(join_steps + slide, s2 - 2);
-      const int r0_first = std::max(0, q0_steps - slide), r0_last = std::min(q0_steps + slide, r2 - 2);
+      const std::optional<int> on_first = steps_along(a1, *u, near_first);
+      const std::optional<int> on_second = steps_along(a2, *v * -1.0, near_second);
+      if (!on_first || !on_second) continue;
+      const int s2 = *on_first, r2 = *on_second;
+      const int s0_first = std::max(1, *join_steps - slide), s0_last = std::min(*join_steps + slide, s2 - 2);
+      const int r0_first = std::max(0, *q0_steps - slide), r0_last = std::min(*q0_steps + slide, r2 - 2);
       if (s0_first > s0_last || r0_first > r0_last) continue;
       // κ at M is linear in how far each cubic's other handle lies from M's along its line:
       // α·k1 from the first cubic (its P1 α steps behind P2), β·k2 from the second.
