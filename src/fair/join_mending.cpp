@@ -511,11 +511,12 @@ int mend_jumping_joins(Contour& rounded, const SampledContour& sampled_source, c
       done = mend_between_cubics(rounded, joins, k, sampled_source, limits);
     } else if (std::holds_alternative<Line>(in) && std::holds_alternative<Cubic>(out)) {
       done = mend_line_join(rounded, joins, k, sampled_source, limits);
-      if (!done) done = mend_curve_between_lines(rounded, k, sampled_source, limits);
+      if (!done && limits.curves_between_lines) done = mend_curve_between_lines(rounded, k, sampled_source, limits);
     } else if (std::holds_alternative<Cubic>(in) && std::holds_alternative<Line>(out)) {
       const Contour back = walked_back(rounded);
       std::optional<Contour> mended_back = mend_line_join(back, joins_of(back), (n - k) % n, sampled_source, limits);
-      if (!mended_back) mended_back = mend_curve_between_lines(back, (n - k) % n, sampled_source, limits);
+      if (!mended_back && limits.curves_between_lines)
+        mended_back = mend_curve_between_lines(back, (n - k) % n, sampled_source, limits);
       if (mended_back) done = walked_back(*mended_back);
     }
     if (!done) continue;

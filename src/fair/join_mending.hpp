@@ -33,6 +33,8 @@ struct JoinMendingLimits {
   double most_turn_rad = 0.2;    ///< how far a join's direction may turn from its tangent
   int far_handle_reach = 3;      ///< whole steps a far handle may move either way
   std::size_t most_judged = 400; ///< candidates per join measured against the source, cheapest first
+  /// Whether a curve between two lines may be redrawn seated on both (mend_curve_between_lines).
+  bool curves_between_lines = true;
 };
 
 /// `rounded`, a closed contour on the integer grid, with each smooth join that jumps or kinks
