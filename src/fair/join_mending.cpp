@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "fair/cubic_change.hpp"
+#include "fair/handle_steps.hpp"
 #include "fair/node_change.hpp"
 #include "fair/outline_faults.hpp"
 #include "fair/outline_nodes.hpp"
@@ -338,17 +339,6 @@ std::optional<int> steps_along(Vec2 origin, Vec2 step, Vec2 p) {
   return static_cast<int>(std::lround(dot(p - origin, step) / dot(step, step)));
 }
 
-// The whole steps t of primitive d from m to where m + t·d crosses the line through `origin`
-// along `step`, where that is a grid point; none where the lines are parallel or it is not.
-std::optional<int> crossing_steps(Vec2 m, Vec2 d, Vec2 origin, Vec2 step) {
-  const double across = cross(d, step);
-  if (across == 0.0) return std::nullopt;
-  const double t = cross(origin - m, step) / across;
-  const double whole = std::round(t);
-  if (std::abs(t - whole) > 1e-9) return std::nullopt;
-  return static_cast<int>(whole);
-}
-
 // The grid points within a unit of the curve the cubics draw, each with the curve's tangent
 // where it passes nearest (of 48 samples a cubic).
 std::vector<std::pair<Vec2, Vec2>> grid_points_along(std::span<const Cubic> cubics) {
@@ -434,14 +424,14 @@ std::optional<Contour> mend_curve_between_lines(const Contour& c, std::size_t k,
   Cheapest found(limits.most_judged);
   for (const auto& [m, tangent] : grid_points_along(old))
     for (const Vec2 d : directions_near(tangent, limits.most_turn_rad, limits.longest_step)) {
-      const std::optional<int> back = crossing_steps(m, d, a1, *u), ahead = crossing_steps(m, d, a2, *v);
-      if (!back || !ahead || *back > -1 || *ahead < 1) continue;
-      const Vec2 near_first = m + d * *back, near_second = m + d * *ahead;
+      // M's handles exactly on the lines: its in-handle on the first, its out-handle on the second.
+      const std::optional<double> back = whole_steps_to_line(m, d, -1.0, a1, *u);
+      const std::optional<double> ahead = whole_steps_to_line(m, d, 1.0, a2, *v);
+      if (!back || !ahead) continue;
+      const Vec2 near_first = m - d * *back, near_second = m + d * *ahead;
       if (distance(near_first, m) > reach || distance(near_second, m) > reach) continue;
-      const std::optional<int> on_first = steps_along(a1, *u, near_first);
-      const std::optional<int> on_second = steps_along(a2, *v * -1.0, near_second);
-      if (!on_first || !on_second) continue;
-      const int s2 = *on_first, r2 = *on_second;
+      const int s2 = static_cast<int>(whole_steps(a1, near_first, *u, 1.0));
+      const int r2 = static_cast<int>(whole_steps(a2, near_second, *v, -1.0));
       const int s0_first = std::max(1, *join_steps - slide), s0_last = std::min(*join_steps + slide, s2 - 2);
       const int r0_first = std::max(0, *q0_steps - slide), r0_last = std::min(*q0_steps + slide, r2 - 2);
       if (s0_first > s0_last || r0_first > r0_last) continue;
