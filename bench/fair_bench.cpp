@@ -2,6 +2,7 @@
 // itself: see the closing notes).
 #include <benchmark/benchmark.h>
 
+#include "fair/cubic_change.hpp"
 #include "fair/g3_run.hpp"
 #include "fair/glyph_fairing.hpp"
 #include "fair/initial_tangents.hpp"
@@ -78,6 +79,19 @@ void g2_hermite_quarter(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(g2_hermite_cubics(s, e));
 }
 BENCHMARK(g2_hermite_quarter);
+
+// A candidate cubic against the unrounded one it would replace, sampled once, as rounding
+// weighs every candidate: its handle moved `range(0)` tenths of a unit across the curve, within
+// an allowance of a unit (5: its control points are within; 20: the curves are within, though
+// not the handle; 80: past it at the middle).
+void moved_distance_of_candidate(benchmark::State& state) {
+  const Cubic unrounded{{{1069, 639}, {1069, 952}, {874, 1147}, {589, 1147}}};
+  const SampledCubic sampled(unrounded);
+  Cubic candidate = unrounded;
+  candidate.p[1].x -= 0.1 * double(state.range(0));
+  for (auto _ : state) benchmark::DoNotOptimize(moved_distance(candidate, sampled, 1.0));
+}
+BENCHMARK(moved_distance_of_candidate)->Arg(5)->Arg(20)->Arg(80)->ArgName("tenths_moved");
 
 void balanced_tangents_closed(benchmark::State& state) {
   std::vector<Vec2> pts;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <span>
 #include <vector>
@@ -15,18 +16,34 @@
 
 namespace gf {
 
-double moved_distance(const Cubic& a, const Cubic& b, double within) {
+namespace {
+
+constexpr int moved_samples = 24;  // points per cubic where a move past its control points' is measured
+
+std::vector<Vec2> samples_of(const Cubic& c) {
+  std::vector<Vec2> out(moved_samples + 1);
+  for (int k = 0; k <= moved_samples; ++k) out[k] = c.point_at(double(k) / moved_samples);
+  return out;
+}
+
+}  // namespace
+
+SampledCubic::SampledCubic(const Cubic& c) : cubic(c), points(samples_of(c)) {}
+
+double moved_distance(const Cubic& a, const SampledCubic& b, double within) {
   double d = 0.0;
-  for (int k = 0; k < 4; ++k) d = std::max(d, distance(a.p[k], b.p[k]));
+  for (int k = 0; k < 4; ++k) d = std::max(d, distance(a.p[k], b.cubic.p[k]));
   if (d <= within) return d;
-  constexpr int n = 24;
-  std::array<Vec2, n + 1> pa, pb;
-  for (int k = 0; k <= n; ++k) pa[k] = a.point_at(double(k) / n), pb[k] = b.point_at(double(k) / n);
-  // The middle, where a far move shows most, first.
-  const double middle = directed_hausdorff(std::span<const Vec2>(&pa[n / 2], 1), pb);
+  // The middle, where a far move shows most, first; most candidates past `within` are past
+  // there, and a's other points are not needed.
+  const Vec2 middle_point = a.point_at(0.5);
+  const double middle = directed_hausdorff(std::span<const Vec2>(&middle_point, 1), b.points,
+                                          std::numeric_limits<double>::infinity(), moved_samples / 2);
   if (middle > within) return std::min(d, middle);
-  const double there = directed_hausdorff(pa, pb, within);
-  return std::min(d, there > within ? there : std::max(there, directed_hausdorff(pb, pa, within)));
+  std::array<Vec2, moved_samples + 1> pa;
+  for (int k = 0; k <= moved_samples; ++k) pa[k] = a.point_at(double(k) / moved_samples);
+  const double there = directed_hausdorff(pa, b.points, within);
+  return std::min(d, there > within ? there : std::max(there, directed_hausdorff(b.points.points(), pa, within)));
 }
 
 namespace {

@@ -8,15 +8,25 @@
 
 #include "geom/bezier.hpp"
 #include "geom/critical_points.hpp"
+#include "geom/polyline_distance.hpp"
 
 namespace gf {
+
+/// A cubic with its points at t = k/24 (k = 0..24), sampled once for measuring many candidates
+/// against it (moved_distance).
+struct SampledCubic {
+  Cubic cubic;
+  BoxedPolyline points;
+  SampledCubic() = default;
+  explicit SampledCubic(const Cubic& c);
+};
 
 /// How far cubic a moved from cubic b: the largest move of a control point (a bound on the
 /// distance between the two curves, by the convex hull of their difference) when that is
 /// within `within`, else the two-sided distance between the curves themselves, which a handle
 /// slid along its own tangent moves far less than it moves the control point. Past `within`,
 /// only that it is past.
-double moved_distance(const Cubic& a, const Cubic& b, double within);
+double moved_distance(const Cubic& a, const SampledCubic& b, double within);
 
 /// A cubic's horizontal and vertical extrema farther along it from both ends than `end_share`
 /// of its arc length, ascending in t.

@@ -90,26 +90,27 @@ CubicJudge::CubicJudge(const std::vector<OutlineNode>& rounded, const std::vecto
   for (std::size_t i = 0; i < n; ++i) band_pieces_[i] = limits.band_piece(i);
   for (std::size_t i = 0; i < n; ++i) {
     if (!joins.is_cubic(i)) continue;
-    unrounded_[i] = along_lines(outline_cubic(ideal, i), rounded, i, joins);
+    unrounded_[i] = SampledCubic(along_lines(outline_cubic(ideal, i), rounded, i, joins));
     const double allowance = limits.allowance_at(i);
     allowed_[i] = std::max(allowance, moved_distance(outline_cubic(rounded, i), unrounded_[i], allowance));
     // κ turns count from 1 % of the outline's largest unrounded |κ|, as the check counts them.
-    hysteresis_ = std::max(hysteresis_, 0.01 * curvature_shape(unrounded_[i], 0.0).largest);
+    hysteresis_ = std::max(hysteresis_, 0.01 * curvature_shape(unrounded_[i].cubic, 0.0).largest);
   }
   for (std::size_t i = 0; i < n; ++i) joins_before_[i] = joins.joins_cubics(i);
   for (std::size_t i = 0; i < n; ++i)
     if (joins.is_cubic(i) && joins.meets_line(i) && joins.meets_line((i + 1) % n))
       lone_lines_[i] = std::array{ideal[(i + n - 1) % n].point, ideal[(i + 2) % n].point};
   for (std::size_t i = 0; i < n; ++i)
-    if (joins.is_cubic(i)) ideal_[i] = measure(i, unrounded_[i]);
+    if (joins.is_cubic(i)) ideal_[i] = measure(i, unrounded_[i].cubic), shape(ideal_[i], unrounded_[i].cubic);
   for (std::size_t k = 0; k < n; ++k) keeps_corner_[k] = corner_to_keep(ideal, closed_, k);
 }
 
 double CubicJudge::slid_distance(std::size_t i, const Cubic& c, double within) {
-  const std::vector<Vec2>& along = along_outline(i).points;
+  const Stretch& stretch = along_outline(i);
+  const std::vector<Vec2>& along = stretch.points;
   std::array<Vec2, slide_samples + 1> pc;
   for (int t = 0; t <= slide_samples; ++t) pc[t] = c.point_at(double(t) / slide_samples);
-  const double there = directed_hausdorff(pc, along, within);
+  const double there = directed_hausdorff(pc, stretch.boxed, within, stretch.own_first);
   if (there > within) return there;
   const auto nearest = [&](Vec2 p) {
     std::size_t best = 0;
@@ -131,8 +132,8 @@ const CubicJudge::Stretch& CubicJudge::along_outline(std::size_t i) {
     for (int t = along.points.empty() ? 0 : 1; t <= slide_samples; ++t)
       along.points.push_back(c.point_at(double(t) / slide_samples));
   };
-  const Cubic& own = unrounded_[i];
-  if (joins_before_[i]) add(unrounded_[(i + n - 1) % n]);
+  const Cubic& own = unrounded_[i].cubic;
+  if (joins_before_[i]) add(unrounded_[(i + n - 1) % n].cubic);
   else if (lone_lines_[i]) {
     const std::vector<Vec2> run = line_from(own.p[0], (*lone_lines_[i])[0]);
     along.points.assign(run.rbegin(), run.rend());
@@ -140,11 +141,12 @@ const CubicJudge::Stretch& CubicJudge::along_outline(std::size_t i) {
   along.own_first = along.points.empty() ? 0 : along.points.size() - 1;
   add(own);
   along.own_last = along.points.size() - 1;
-  if (joins_before_[(i + 1) % n]) add(unrounded_[(i + 1) % n]);
+  if (joins_before_[(i + 1) % n]) add(unrounded_[(i + 1) % n].cubic);
   else if (lone_lines_[i]) {
     const std::vector<Vec2> run = line_from(own.p[3], (*lone_lines_[i])[1]);
     along.points.insert(along.points.end(), run.begin() + 1, run.end());
   }
+  along.boxed = BoxedPolyline(along.points);
   return along;
 }
 
@@ -162,16 +164,19 @@ CubicTraits CubicJudge::measure(std::size_t i, const Cubic& c) {
   const EndCurvature start = end_curvature(c, SegmentEnd::start), end = end_curvature(c, SegmentEnd::end);
   double moved = moved_distance(c, unrounded_[i], allowed_[i]);
   if (moved > allowed_[i]) moved = std::min(moved, slid_distance(i, c, allowed_[i]));
-  return {start.curvature.value_or(0.0),
-          end.curvature.value_or(0.0),
-          start.curvature_derivative.value_or(0.0),
-          end.curvature_derivative.value_or(0.0),
-          moved,
-          moved <= allowed_[i] || (band_ && band_holds(i, c)),
-          curvature_shape(c, hysteresis_),
-          inner_axis_extrema_of(c),
-          overreach_length(c),
-          distance(c.p[0], c.p[3]) < fold_chord ? cubic_turning(c) : 0.0};
+  CubicTraits t;
+  t.k_start = start.curvature.value_or(0.0), t.k_end = end.curvature.value_or(0.0);
+  t.slope_start = start.curvature_derivative.value_or(0.0), t.slope_end = end.curvature_derivative.value_or(0.0);
+  t.moved = moved;
+  t.within = moved <= allowed_[i] || (band_ && band_holds(i, c));
+  return t;
+}
+
+void CubicJudge::shape(CubicTraits& t, const Cubic& c) const {
+  t.shape = curvature_shape(c, hysteresis_);
+  t.extrema = inner_axis_extrema_of(c);
+  t.overreach = overreach_length(c);
+  t.turning = distance(c.p[0], c.p[3]) < fold_chord ? cubic_turning(c) : 0.0;
 }
 
 }  // namespace gf

@@ -5,7 +5,9 @@
 
 #include <array>
 #include <cstddef>
-#include <map>
+#include <bit>
+#include <cstdint>
+#include <unordered_map>
 #include <optional>
 #include <vector>
 
@@ -102,10 +104,18 @@ class CubicJudge {
 
   /// The traits of `c` in the place of cubic i.
   const CubicTraits& traits(std::size_t i, const Cubic& c) {
-    const auto [it, fresh] = seen_[i].try_emplace(std::array{c.p[0].x, c.p[0].y, c.p[1].x, c.p[1].y,
-                                                             c.p[2].x, c.p[2].y, c.p[3].x, c.p[3].y});
-    if (fresh) it->second = measure(i, c);
-    return it->second;
+    Measured& m = measured(i, c);
+    if (!m.shaped) shape(m.traits, c), m.shaped = true;
+    return m.traits;
+  }
+  /// What a choice of handles weighs of `c` in the place of cubic i: its traits where it is
+  /// within, else only its ends' curvature and how far it moved (a state not within is never
+  /// joined to another, and most candidates of a tight turn are not: the choices of DejaVu
+  /// Sans's U+2765 measured three in four only so far).
+  const CubicTraits& weighed(std::size_t i, const Cubic& c) {
+    Measured& m = measured(i, c);
+    if (!m.shaped && m.traits.within) shape(m.traits, c), m.shaped = true;
+    return m.traits;
   }
 
  private:
@@ -125,6 +135,7 @@ class CubicJudge {
   // when first asked for (most cubics stay within their allowance).
   struct Stretch {
     std::vector<Vec2> points;
+    BoxedPolyline boxed;  ///< the same points, for the searches against them
     std::size_t own_first = 0, own_last = 0;
   };
   const Stretch& along_outline(std::size_t i);
@@ -135,15 +146,37 @@ class CubicJudge {
   // the outline hands them over; what c itself covers, the splice covers too).
   bool band_holds(std::size_t i, const Cubic& c);
 
+  // A candidate's traits, those of its shape only once asked for.
+  struct Measured {
+    CubicTraits traits;
+    bool shaped = false;
+  };
+  Measured& measured(std::size_t i, const Cubic& c) {
+    const auto [it, fresh] = seen_[i].try_emplace(std::array{c.p[0].x, c.p[0].y, c.p[1].x, c.p[1].y,
+                                                             c.p[2].x, c.p[2].y, c.p[3].x, c.p[3].y});
+    if (fresh) it->second.traits = measure(i, c);
+    return it->second;
+  }
+  // Its ends' curvature and how far it moved.
   CubicTraits measure(std::size_t i, const Cubic& c);
+  // The rest: its shape, extrema, overreach and turning.
+  void shape(CubicTraits& t, const Cubic& c) const;
   /// The hysteresis the turns at nodes count from (turn_peak_margin below hysteresis_).
   double node_hysteresis() const;
 
-  std::vector<Cubic> unrounded_;
+  std::vector<SampledCubic> unrounded_;
   std::vector<double> allowed_;
   double hysteresis_ = 0.0;
   std::vector<CubicTraits> ideal_;
-  std::vector<std::map<std::array<double, 8>, CubicTraits>> seen_;
+  // A candidate by its control points; a hash map keeps its entries in place as it grows.
+  struct ControlPointsHash {
+    std::size_t operator()(const std::array<double, 8>& key) const {
+      std::uint64_t h = 0;
+      for (const double v : key) h = (h ^ std::bit_cast<std::uint64_t>(v + 0.0)) * 0x9E3779B97F4A7C15ull;  // −0 as +0
+      return static_cast<std::size_t>(h ^ (h >> 29));
+    }
+  };
+  std::vector<std::unordered_map<std::array<double, 8>, Measured, ControlPointsHash>> seen_;
   bool inflection_handles_, node_turns_;
   double slope_jump_weight_, counted_jump_cost_;
   const ToleranceBand* band_;

@@ -45,7 +45,7 @@ class CandidateWeights {
     c.k_start.clear(), c.k_end.clear(), c.cost.clear(), c.traits.clear();
     for (const Vec2 out : c.outs)
       for (const Vec2 in : c.ins) {
-        const CubicTraits& t = judge_.traits(i_, Cubic{nodes_[i_].point, out, in, nodes_[j_].point});
+        const CubicTraits& t = judge_.weighed(i_, Cubic{nodes_[i_].point, out, in, nodes_[j_].point});
         c.k_start.push_back(t.k_start), c.k_end.push_back(t.k_end);
         c.traits.push_back(&t);
         c.cost.push_back(t.within ? cost(t, out, in) : infeasible);

@@ -28,54 +28,47 @@ double squared_distance_to_polyline(Vec2 p, std::span<const Vec2> polyline) {
   return best;
 }
 
-// An axis-aligned box, for a lower bound on the distance to everything inside it.
-struct Box {
-  Vec2 lo, hi;
-  static Box of(Vec2 a, Vec2 b) { return Box{a, a}.with(b); }
-  Box with(Vec2 p) const {
-    return {{std::min(lo.x, p.x), std::min(lo.y, p.y)}, {std::max(hi.x, p.x), std::max(hi.y, p.y)}};
-  }
-  double squared_distance(Vec2 p) const {
-    const double dx = std::max({lo.x - p.x, 0.0, p.x - hi.x});
-    const double dy = std::max({lo.y - p.y, 0.0, p.y - hi.y});
-    return dx * dx + dy * dy;
-  }
-};
-
 }  // namespace
 
-double directed_hausdorff(std::span<const Vec2> from, std::span<const Vec2> to_polyline, double stop_above) {
+PolylineBox PolylineBox::of(Vec2 a, Vec2 b) { return PolylineBox{a, a}.with(b); }
+
+PolylineBox PolylineBox::with(Vec2 p) const {
+  return {{std::min(lo.x, p.x), std::min(lo.y, p.y)}, {std::max(hi.x, p.x), std::max(hi.y, p.y)}};
+}
+
+double PolylineBox::squared_distance(Vec2 p) const {
+  const double dx = std::max({lo.x - p.x, 0.0, p.x - hi.x});
+  const double dy = std::max({lo.y - p.y, 0.0, p.y - hi.y});
+  return dx * dx + dy * dy;
+}
+
+namespace {
+
+// The boxes of segments 0..i (`before`) and i..end (`after`) of a polyline of at least two
+// points.
+void fill_boxes(std::span<const Vec2> polyline, std::span<PolylineBox> before, std::span<PolylineBox> after) {
+  const std::size_t segments = polyline.size() - 1;
+  before[0] = PolylineBox::of(polyline[0], polyline[1]);
+  for (std::size_t i = 1; i < segments; ++i) before[i] = before[i - 1].with(polyline[i + 1]);
+  after[segments - 1] = PolylineBox::of(polyline[segments - 1], polyline[segments]);
+  for (std::size_t i = segments - 1; i-- > 0;) after[i] = after[i + 1].with(polyline[i]);
+}
+
+// Exact, with an early exit (Taha & Hanbury 2015): a point with any segment nearer than the
+// worst so far cannot raise it. Segments are tried outwards from the one nearest the previous
+// point, so along two curves traced the same way the exit comes at once; a direction stops
+// where the box of every segment left that way is no nearer than the nearest found. Pieces
+// between extrema run monotone in x and y, where those boxes are tight.
+double boxed_search(std::span<const Vec2> from, std::span<const Vec2> to_polyline, std::span<const PolylineBox> before,
+                    std::span<const PolylineBox> after, double stop_above, std::size_t hint) {
   const double stop2 = stop_above * stop_above;
-  // A lone point (or polyline): every segment, without the boxes a search needs.
-  if (to_polyline.size() < 2 || from.size() == 1) {
-    double worst = 0.0;
-    for (const Vec2 p : from) worst = std::max(worst, squared_distance_to_polyline(p, to_polyline));
-    return std::sqrt(worst);
-  }
-  // Exact, with an early exit (Taha & Hanbury 2015): a point with any segment nearer than the
-  // worst so far cannot raise it. Segments are tried outwards from the one nearest the
-  // previous point, so along two curves traced the same way the exit comes at once; a
-  // direction stops where the box of every segment left that way is no nearer than the
-  // nearest found. Pieces between extrema run monotone in x and y, where those boxes are tight.
   const std::size_t segments = to_polyline.size() - 1;
-  // Boxes of segments 0..i and i..end; on the stack for the short polylines of the rounding's
-  // cubic checks (two calls per candidate), where two heap blocks cost as much as the search.
-  constexpr std::size_t on_stack = 32;
-  std::array<Box, 2 * on_stack> stack_boxes;
-  std::vector<Box> heap_boxes(segments > on_stack ? 2 * segments : 0);
-  Box* const boxes = segments > on_stack ? heap_boxes.data() : stack_boxes.data();
-  const std::span<Box> before(boxes, segments), after(boxes + segments, segments);
-  before[0] = Box::of(to_polyline[0], to_polyline[1]);
-  for (std::size_t i = 1; i < segments; ++i) before[i] = before[i - 1].with(to_polyline[i + 1]);
-  after[segments - 1] = Box::of(to_polyline[segments - 1], to_polyline[segments]);
-  for (std::size_t i = segments - 1; i-- > 0;) after[i] = after[i + 1].with(to_polyline[i]);
   double worst = 0.0;
-  std::size_t hint = 0;
   for (const Vec2 p : from) {
     double nearest = squared_distance_to_segment(p, to_polyline[hint], to_polyline[hint + 1]);
     std::size_t nearest_at = hint;
     // Segment i, unless everything from it on (`rest`) is no nearer; whether to go on.
-    const auto visit = [&](std::size_t i, const Box& rest) {
+    const auto visit = [&](std::size_t i, const PolylineBox& rest) {
       if (rest.squared_distance(p) >= nearest) return false;
       const double d = squared_distance_to_segment(p, to_polyline[i], to_polyline[i + 1]);
       if (d < nearest) nearest = d, nearest_at = i;
@@ -91,6 +84,47 @@ double directed_hausdorff(std::span<const Vec2> from, std::span<const Vec2> to_p
     if (worst > stop2) break;
   }
   return std::sqrt(worst);
+}
+
+// Every segment for each point, without the boxes a search needs: for a lone point or a
+// polyline of one point.
+double scanned(std::span<const Vec2> from, std::span<const Vec2> to_polyline) {
+  double worst = 0.0;
+  for (const Vec2 p : from) worst = std::max(worst, squared_distance_to_polyline(p, to_polyline));
+  return std::sqrt(worst);
+}
+
+}  // namespace
+
+double directed_hausdorff(std::span<const Vec2> from, std::span<const Vec2> to_polyline, double stop_above) {
+  if (to_polyline.size() < 2 || from.size() == 1) return scanned(from, to_polyline);
+  const std::size_t segments = to_polyline.size() - 1;
+  // On the stack for the short polylines of the rounding's cubic checks (two calls per
+  // candidate), where two heap blocks cost as much as the search.
+  constexpr std::size_t on_stack = 32;
+  std::array<PolylineBox, 2 * on_stack> stack_boxes;
+  std::vector<PolylineBox> heap_boxes(segments > on_stack ? 2 * segments : 0);
+  PolylineBox* const boxes = segments > on_stack ? heap_boxes.data() : stack_boxes.data();
+  const std::span<PolylineBox> before(boxes, segments), after(boxes + segments, segments);
+  fill_boxes(to_polyline, before, after);
+  return boxed_search(from, to_polyline, before, after, stop_above, 0);
+}
+
+BoxedPolyline::BoxedPolyline(std::vector<Vec2> points) : points_(std::move(points)) {
+  if (points_.size() < 2) return;
+  const std::size_t segments = points_.size() - 1;
+  boxes_.resize(2 * segments);
+  fill_boxes(points_, std::span(boxes_).first(segments), std::span(boxes_).subspan(segments));
+}
+
+double directed_hausdorff(std::span<const Vec2> from, const BoxedPolyline& to, double stop_above,
+                          std::size_t first_segment) {
+  const std::span<const Vec2> points = to.points();
+  if (points.size() < 2) return scanned(from, points);
+  const std::size_t segments = points.size() - 1;
+  const std::span<const PolylineBox> boxes = to.boxes();
+  return boxed_search(from, points, boxes.first(segments), boxes.subspan(segments), stop_above,
+                      std::min(first_segment, segments - 1));
 }
 
 PolylineGrid::PolylineGrid(std::vector<Vec2> polyline, double cell_size) : points_(std::move(polyline)), cell_(cell_size) {

@@ -19,6 +19,36 @@ namespace gf {
 double directed_hausdorff(std::span<const Vec2> from, std::span<const Vec2> to_polyline,
                           double stop_above = std::numeric_limits<double>::infinity());
 
+/// An axis-aligned box, for a lower bound on the distance to every segment inside it.
+struct PolylineBox {
+  Vec2 lo, hi;
+  static PolylineBox of(Vec2 a, Vec2 b);
+  PolylineBox with(Vec2 p) const;
+  double squared_distance(Vec2 p) const;
+};
+
+/// A polyline with the boxes directed_hausdorff's search bounds its segments by, built once
+/// for the many searches against one polyline (a cubic's samples against every candidate
+/// that may replace it).
+class BoxedPolyline {
+ public:
+  BoxedPolyline() = default;
+  explicit BoxedPolyline(std::vector<Vec2> points);
+  std::span<const Vec2> points() const { return points_; }
+  /// Those of segments 0..i, then those of segments i..end.
+  std::span<const PolylineBox> boxes() const { return boxes_; }
+
+ private:
+  std::vector<Vec2> points_;
+  std::vector<PolylineBox> boxes_;
+};
+
+/// directed_hausdorff against a polyline whose boxes are built, the search for from's first
+/// point starting at segment `first_segment` (where it likely lies nearest: the same answer,
+/// found sooner).
+double directed_hausdorff(std::span<const Vec2> from, const BoxedPolyline& to,
+                          double stop_above = std::numeric_limits<double>::infinity(), std::size_t first_segment = 0);
+
 /// A polyline bucketed on a uniform grid, for nearest-distance queries on long polylines
 /// (whole contours): a query looks at rings of cells outwards until no nearer segment can be.
 class PolylineGrid {

@@ -3,13 +3,50 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <random>
+#include <vector>
+
+#include "point_set_distance.hpp"
 
 namespace gf {
 namespace {
 
 int turns(const Cubic& c, double hysteresis) { return curvature_shape(c, hysteresis).turns; }
+
+TEST(MovedDistance, TheControlPointsBoundWithinElseTheCurvesDistance) {
+  // Within the allowance, the largest move of a control point; past it, the two-sided
+  // distance between the cubics' 25 points and polylines (the definition, brute force), or,
+  // past the allowance there too, some distance past it no larger than that.
+  std::mt19937 rng(4);
+  std::uniform_real_distribution<double> u(-40.0, 40.0), nudge(-3.0, 3.0);
+  const auto points = [](const Cubic& c) {
+    std::vector<Vec2> out;
+    for (int k = 0; k <= 24; ++k) out.push_back(c.point_at(k / 24.0));
+    return out;
+  };
+  for (int trial = 0; trial < 300; ++trial) {
+    Cubic b{{{0, 0}, {u(rng), u(rng)}, {u(rng), u(rng)}, {100, 0}}};
+    Cubic a = b;
+    for (Vec2& p : a.p) p = p + Vec2{nudge(rng), nudge(rng)};
+    if (trial % 3 == 0) a.p[1] = b.p[1] + (b.p[1] - b.p[0]) * 0.3;  // a handle slid along itself
+    double control = 0.0;
+    for (int k = 0; k < 4; ++k) control = std::max(control, distance(a.p[k], b.p[k]));
+    const std::vector<Vec2> pa = points(a), pb = points(b);
+    const double curves = std::max(test::directed_to_polyline(pa, pb), test::directed_to_polyline(pb, pa));
+    const SampledCubic sampled(b);
+    EXPECT_DOUBLE_EQ(moved_distance(a, sampled, control), control);
+    const double below_both = 0.5 * std::min(control, curves);
+    const double past = moved_distance(a, sampled, below_both);
+    EXPECT_GT(past, below_both);
+    EXPECT_LE(past, std::min(control, curves) * (1.0 + 1e-12) + 1e-12);
+    if (curves < control) {
+      EXPECT_NEAR(moved_distance(a, sampled, 0.5 * (curves + control)), curves, 1e-9);
+    }
+  }
+}
 
 TEST(CurvatureShape, ASymmetricArchTurnsOnceAtItsMiddle) {
   // Mirror-symmetric about t = ½, κ from −0.12 at the ends to −1.33 in the middle: one turn,

@@ -81,6 +81,31 @@ TEST(PolylineDistance, StopAboveIsExactBelowAndSaysPastAbove) {
   }
 }
 
+TEST(PolylineDistance, BoxesBuiltOnceGiveTheSameDistanceFromAnyFirstSegment) {
+  // Against a polyline whose boxes are built once, wherever the search for the first point
+  // starts: the definition below a stop, past it above one, and one point alone too.
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> offset(-3.0, 3.0);
+  for (int trial = 0; trial < 100; ++trial) {
+    const std::vector<Vec2> a = wobbly(rng, 30, {0, 0});
+    std::vector<Vec2> b = a;
+    for (Vec2& p : b) p = p + Vec2{offset(rng), offset(rng)};
+    if (trial % 2) b = wobbly(rng, 45, {offset(rng), offset(rng)});
+    const BoxedPolyline boxed(b);
+    const double exact = test::directed_to_polyline(a, b);
+    for (const std::size_t first : {std::size_t{0}, b.size() / 3, b.size() - 2, b.size() + 5}) {
+      EXPECT_NEAR(directed_hausdorff(a, boxed, 1.5 * exact, first), exact, 1e-12 * (1.0 + exact));
+      const double stopped = directed_hausdorff(a, boxed, 0.5 * exact, first);
+      EXPECT_GT(stopped, 0.5 * exact);
+      EXPECT_LE(stopped, exact * (1.0 + 1e-12));
+      const std::vector<Vec2> middle{a[a.size() / 2]};
+      const double alone = test::directed_to_polyline(middle, b);
+      EXPECT_NEAR(directed_hausdorff(middle, boxed, std::numeric_limits<double>::infinity(), first), alone,
+                  1e-12 * (1.0 + alone));
+    }
+  }
+}
+
 TEST(PolylineDistance, ByPieceIsTheHausdorffDistanceSharedOut) {
   // A curve of 3 pieces against a random other: the largest share is the two-sided distance
   // (brute force), and each piece's share bounds its own points' distance to the other.
