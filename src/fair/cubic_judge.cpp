@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "geom/curvature.hpp"
@@ -107,10 +108,10 @@ CubicJudge::CubicJudge(const std::vector<OutlineNode>& rounded, const std::vecto
 
 double CubicJudge::slid_distance(std::size_t i, const Cubic& c, double within) {
   const Stretch& stretch = along_outline(i);
-  const std::vector<Vec2>& along = stretch.points;
+  const std::span<const Vec2> along = stretch.points.points();
   std::array<Vec2, slide_samples + 1> pc;
   for (int t = 0; t <= slide_samples; ++t) pc[t] = c.point_at(double(t) / slide_samples);
-  const double there = directed_hausdorff(pc, stretch.boxed, within, stretch.own_first);
+  const double there = directed_hausdorff(pc, stretch.points, within, stretch.own_first);
   if (there > within) return there;
   const auto nearest = [&](Vec2 p) {
     std::size_t best = 0;
@@ -120,43 +121,44 @@ double CubicJudge::slid_distance(std::size_t i, const Cubic& c, double within) {
   };
   const std::size_t a = nearest(c.p[0]), b = nearest(c.p[3]);
   if (a >= b) return std::numeric_limits<double>::infinity();
-  const std::span<const Vec2> covered(along.data() + a, b - a + 1);
+  const std::span<const Vec2> covered = along.subspan(a, b - a + 1);
   return std::max(there, directed_hausdorff(covered, pc, within));
 }
 
 const CubicJudge::Stretch& CubicJudge::along_outline(std::size_t i) {
   Stretch& along = along_outline_[i];
-  if (!along.points.empty()) return along;
+  if (!along.points.points().empty()) return along;
   const std::size_t n = unrounded_.size();
+  std::vector<Vec2> points;
   const auto add = [&](const Cubic& c) {
-    for (int t = along.points.empty() ? 0 : 1; t <= slide_samples; ++t)
-      along.points.push_back(c.point_at(double(t) / slide_samples));
+    for (int t = points.empty() ? 0 : 1; t <= slide_samples; ++t) points.push_back(c.point_at(double(t) / slide_samples));
   };
   const Cubic& own = unrounded_[i].cubic;
   if (joins_before_[i]) add(unrounded_[(i + n - 1) % n].cubic);
   else if (lone_lines_[i]) {
     const std::vector<Vec2> run = line_from(own.p[0], (*lone_lines_[i])[0]);
-    along.points.assign(run.rbegin(), run.rend());
+    points.assign(run.rbegin(), run.rend());
   }
-  along.own_first = along.points.empty() ? 0 : along.points.size() - 1;
+  along.own_first = points.empty() ? 0 : points.size() - 1;
   add(own);
-  along.own_last = along.points.size() - 1;
+  along.own_last = points.size() - 1;
   if (joins_before_[(i + 1) % n]) add(unrounded_[(i + 1) % n].cubic);
   else if (lone_lines_[i]) {
     const std::vector<Vec2> run = line_from(own.p[3], (*lone_lines_[i])[1]);
-    along.points.insert(along.points.end(), run.begin() + 1, run.end());
+    points.insert(points.end(), run.begin() + 1, run.end());
   }
-  along.boxed = BoxedPolyline(along.points);
+  along.points = BoxedPolyline(std::move(points));
   return along;
 }
 
 bool CubicJudge::band_holds(std::size_t i, const Cubic& c) {
   const std::vector<Vec2> pc = band_samples(c);
   const Stretch& along = along_outline(i);
-  if (along.own_first == 0 && along.own_last + 1 == along.points.size()) return band_->holds(band_pieces_[i], pc);
-  std::vector<Vec2> spliced(along.points.begin(), along.points.begin() + static_cast<std::ptrdiff_t>(along.own_first));
+  const std::span<const Vec2> points = along.points.points();
+  if (along.own_first == 0 && along.own_last + 1 == points.size()) return band_->holds(band_pieces_[i], pc);
+  std::vector<Vec2> spliced(points.begin(), points.begin() + static_cast<std::ptrdiff_t>(along.own_first));
   spliced.insert(spliced.end(), pc.begin(), pc.end());
-  spliced.insert(spliced.end(), along.points.begin() + static_cast<std::ptrdiff_t>(along.own_last + 1), along.points.end());
+  spliced.insert(spliced.end(), points.begin() + static_cast<std::ptrdiff_t>(along.own_last + 1), points.end());
   return band_->holds_along(band_pieces_[i], pc, spliced);
 }
 

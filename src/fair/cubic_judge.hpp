@@ -4,11 +4,11 @@
 #pragma once
 
 #include <array>
-#include <cstddef>
 #include <bit>
+#include <cstddef>
 #include <cstdint>
-#include <unordered_map>
 #include <optional>
+#include <unordered_map>
 #include <vector>
 
 #include "fair/cubic_change.hpp"
@@ -134,8 +134,7 @@ class CubicJudge {
   // reaches 8 units farther up the line to the apex, its handles then long enough). Built
   // when first asked for (most cubics stay within their allowance).
   struct Stretch {
-    std::vector<Vec2> points;
-    BoxedPolyline boxed;  ///< the same points, for the searches against them
+    BoxedPolyline points;  ///< with their boxes, for the searches against them
     std::size_t own_first = 0, own_last = 0;
   };
   const Stretch& along_outline(std::size_t i);
