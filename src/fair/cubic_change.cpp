@@ -20,15 +20,18 @@ namespace {
 
 constexpr int moved_samples = 24;  // points per cubic where a move past its control points' is measured
 
-std::vector<Vec2> samples_of(const Cubic& c) {
-  std::vector<Vec2> out(moved_samples + 1);
+std::array<Vec2, moved_samples + 1> samples_of(const Cubic& c) {
+  std::array<Vec2, moved_samples + 1> out;
   for (int k = 0; k <= moved_samples; ++k) out[k] = c.point_at(double(k) / moved_samples);
   return out;
 }
 
 }  // namespace
 
-SampledCubic::SampledCubic(const Cubic& c) : cubic(c), points(samples_of(c)) {}
+SampledCubic::SampledCubic(const Cubic& c) : cubic(c) {
+  const auto samples = samples_of(c);
+  points = BoxedPolyline(std::vector<Vec2>(samples.begin(), samples.end()));
+}
 
 double moved_distance(const Cubic& a, const SampledCubic& b, double within) {
   double d = 0.0;
@@ -40,8 +43,7 @@ double moved_distance(const Cubic& a, const SampledCubic& b, double within) {
   const double middle = directed_hausdorff(std::span<const Vec2>(&middle_point, 1), b.points,
                                           std::numeric_limits<double>::infinity(), moved_samples / 2);
   if (middle > within) return std::min(d, middle);
-  std::array<Vec2, moved_samples + 1> pa;
-  for (int k = 0; k <= moved_samples; ++k) pa[k] = a.point_at(double(k) / moved_samples);
+  const auto pa = samples_of(a);
   const double there = directed_hausdorff(pa, b.points, within);
   return std::min(d, there > within ? there : std::max(there, directed_hausdorff(b.points.points(), pa, within)));
 }

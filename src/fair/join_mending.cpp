@@ -336,7 +336,7 @@ std::optional<Contour> mend_line_join(const Contour& c, const std::vector<Join>&
 // are exactly those: `step` is primitive); none otherwise.
 std::optional<int> steps_along(Vec2 origin, Vec2 step, Vec2 p) {
   if (cross(p - origin, step) != 0.0) return std::nullopt;
-  return static_cast<int>(std::lround(dot(p - origin, step) / dot(step, step)));
+  return static_cast<int>(whole_steps(origin, p, step, 1.0));
 }
 
 // The grid points within a unit of the curve the cubics draw, each with the curve's tangent
@@ -356,7 +356,7 @@ std::vector<std::pair<Vec2, Vec2>> grid_points_along(std::span<const Cubic> cubi
       if (norm(tangent) == 0.0) continue;
       for (int dx = -1; dx <= 1; ++dx)
         for (int dy = -1; dy <= 1; ++dy) {
-          const Vec2 g{std::round(p.x) + dx, std::round(p.y) + dy};
+          const Vec2 g = nearest_grid_point(p) + Vec2{double(dx), double(dy)};
           all.push_back({g, tangent, distance(g, p)});
         }
     }
