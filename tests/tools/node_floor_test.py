@@ -1,7 +1,11 @@
 #!/usr/bin/python3
 """node_floor.py against glyphs whose places are known by construction (DejaVu Sans subset):
 o and O, two closed bowls of four extrema each: 8; l and I, rectangles: 4 corners; D, a stem
-with two corners and two line-to-bowl joins and one extremum, outside and inside: 10.
+with two corners and two line-to-bowl joins and one extremum, outside and inside: 10. And its
+line quarters against the closed form: a cubic leaving a line with κ = 0 for an extremum has
+its second handle where the two tangents cross, so it bends there by (2/3)(d0 − a)/d3²,
+never past one_cubic_bound; Comic Neue's n's round stroke end, whose quarters bend more
+sharply, counts two, a flat turn from a line none.
 
 usage: node_floor_test.py DEJAVU_SUBSET.ttf"""
 import sys
@@ -9,7 +13,7 @@ import sys
 from fontTools.ttLib import TTFont
 
 from fairing_bars import glyph_contours
-from node_floor import required_places
+from node_floor import curvature, line_quarters, one_cubic_bound, required_places
 
 font = TTFont(sys.argv[1])
 cmap, glyphset = font.getBestCmap(), font.getGlyphSet()
@@ -18,5 +22,27 @@ bad = 0
 for ch, want in expected.items():
     got = required_places(glyph_contours(glyphset, cmap[ord(ch)], True))
     print(f"{ch}: {got} places (expected {want})")
+    bad += got != want
+
+# The closed form: from (0, 100) up a line, to (100, 200) along the level; V = (0, 200).
+bound = one_cubic_bound((0, 100), (0, 1), (100, 200), (1, 0))
+print(f"one-cubic bound {bound} (expected {2 / 3 * 100 / 100 ** 2})")
+bad += abs(bound - 2 / 3 * 100 / 100 ** 2) > 1e-15
+for a in (1, 25, 50, 99):
+    k = curvature(((0, 100), (0, 100 + a), (0, 200), (100, 200)), 1.0)
+    want = 2 / 3 * (100 - a) / 100 ** 2
+    print(f"first handle {a}: the extremum bends at {k:.6f} (expected {want:.6f}, at most {bound:.6f})")
+    bad += abs(k - want) > 1e-12 or k > bound
+bad += one_cubic_bound((0, 100), (0, 1), (-100, 50), (1, 0)) is not None  # no convex turn between
+
+# Comic Neue's n (1,000 units per em): its stem's round top between two lines, two quarters each
+# bending at κ 0.030 where the bound is 1/48 and 1/51; then a flat turn from a line into a corner.
+round_end = [((141, 306), (141, 464)), ((141, 464), (141, 481), (127, 494), (110, 494)),
+             ((110, 494), (93, 494), (78, 481), (78, 464)), ((78, 464), (78, 306)), ((78, 306), (141, 306))]
+flat_turn = [((0, 0), (0, 100)), ((0, 100), (0, 190), (10, 200), (100, 200)), ((100, 200), (100, 0)),
+             ((100, 0), (0, 0))]
+for name, contour, want in (("round stroke end", round_end, 2), ("flat turn", flat_turn, 0)):
+    got = line_quarters([contour])
+    print(f"{name}: {got} line quarters (expected {want})")
     bad += got != want
 sys.exit(1 if bad else 0)
