@@ -74,17 +74,23 @@ def required_places(contours):
     return len(distinct)
 
 
-def derivative(seg, t):
+def hodograph(seg):
+    """The derivative of a Bézier, a Bézier of one degree less."""
     n = len(seg) - 1
-    return point([(n * (b[0] - a[0]), n * (b[1] - a[1])) for a, b in zip(seg, seg[1:])], t)
+    return [(n * (b[0] - a[0]), n * (b[1] - a[1])) for a, b in zip(seg, seg[1:])]
+
+
+def signed_curvature(seg, t):
+    """κ of a quadratic or cubic at t, positive turning left."""
+    d1 = hodograph(seg)
+    d2 = hodograph(d1)
+    v = point(d1, t)
+    return cross(v, point(d2, t)) / norm(v) ** 3
 
 
 def curvature(seg, t):
     """|κ| of a quadratic or cubic at t."""
-    d1 = derivative(seg, t)
-    n = len(seg) - 1
-    d2 = derivative([(n * (b[0] - a[0]), n * (b[1] - a[1])) for a, b in zip(seg, seg[1:])], t) if n > 1 else (0, 0)
-    return abs(cross(d1, d2)) / norm(d1) ** 3
+    return abs(signed_curvature(seg, t))
 
 
 def one_cubic_bound(p0, t0, p3, t3):
@@ -117,18 +123,16 @@ def first_extremum(segs, i):
             return None
         extrema = set(derivative_roots(seg, 0) + derivative_roots(seg, 1))
         for t in sorted(extrema | {j / 16 for j in range(17)}):
-            d = derivative(seg, t)
+            d = point(hodograph(seg), t)
             if norm(d) == 0:
                 continue
-            n = len(seg) - 1
-            dd = derivative([(n * (b[0] - a[0]), n * (b[1] - a[1])) for a, b in zip(seg, seg[1:])], t)
-            bend = cross(d, dd)
+            bend = signed_curvature(seg, t)
             if side * bend < 0:
                 return None  # an inflection before any extremum
             side = side or bend
             on_axis = t in extrema or (t in (0.0, 1.0) and (d[0] == 0) != (d[1] == 0))
             if on_axis and math.dist(point(seg, t), start) > 1.0:
-                return point(seg, t), (d[0] / norm(d), d[1] / norm(d)), curvature(seg, t)
+                return point(seg, t), (d[0] / norm(d), d[1] / norm(d)), abs(bend)
     return None
 
 
