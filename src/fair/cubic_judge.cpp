@@ -101,8 +101,11 @@ CubicJudge::CubicJudge(const std::vector<OutlineNode>& rounded, const std::vecto
   for (std::size_t i = 0; i < n; ++i)
     if (joins.is_cubic(i) && joins.meets_line(i) && joins.meets_line((i + 1) % n))
       lone_lines_[i] = std::array{ideal[(i + n - 1) % n].point, ideal[(i + 2) % n].point};
-  for (std::size_t i = 0; i < n; ++i)
-    if (joins.is_cubic(i)) ideal_[i] = measure(i, unrounded_[i].cubic), shape(ideal_[i], unrounded_[i].cubic);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!joins.is_cubic(i)) continue;
+    ideal_[i] = measure(i, unrounded_[i].cubic);
+    shape(ideal_[i], unrounded_[i].cubic);
+  }
   for (std::size_t k = 0; k < n; ++k) keeps_corner_[k] = corner_to_keep(ideal, closed_, k);
 }
 
