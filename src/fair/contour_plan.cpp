@@ -113,30 +113,6 @@ void absorb_stub_lines(std::vector<Piece>& pieces, const Contour& contour, std::
 
 }  // namespace
 
-bool is_straight(const Cubic& c) {
-  const Vec2 d = c.p[3] - c.p[0];
-  const double len = norm(d);
-  if (len == 0.0) return false;
-  for (const Vec2 q : {c.p[1], c.p[2]}) {
-    const Vec2 r = q - c.p[0];
-    if (std::abs(cross(d, r)) > 1e-9 * len * len) return false;
-    const double along = dot(d, r) / (len * len);
-    if (along < 0.0 || along > 1.0) return false;
-  }
-  return true;
-}
-
-bool is_straight_segment(const Segment& s) {
-  return is_line(s) || std::visit([](const auto& b) { return is_straight(to_cubic(b)); }, s);
-}
-
-Contour with_straight_segments_as_lines(const Contour& contour) {
-  Contour out = contour;
-  for (Segment& s : out.segments)
-    if (!is_line(s) && is_straight_segment(s)) s = Line{start_point(s), end_point(s)};
-  return out;
-}
-
 ContourPlan plan_contour(const Contour& source, std::span<const std::size_t> smooth_nodes, const PlanOptions& options) {
   const Contour contour = with_cubics(source);
   const auto made_smooth = [&](std::size_t node) { return is_made_smooth(smooth_nodes, node); };

@@ -12,6 +12,7 @@
 
 #include "geom/contour.hpp"
 #include "geom/join.hpp"
+#include "geom/straight_segments.hpp"
 
 namespace gf {
 
@@ -62,13 +63,6 @@ inline constexpr double kink_limit_deg = JoinThresholds{}.kink_max_deg;
 /// kept one between cubics only from a degree past it: EB Garamond a–z A–Z 100 g2-jumps then,
 /// 97 now).
 inline constexpr double corner_floor_deg = kink_limit_deg + 0.5;
-
-/// A cubic whose control points lie on its chord, in order, is a line.
-bool is_straight(const Cubic& c);
-/// A line, or a quadratic or cubic that is_straight.
-bool is_straight_segment(const Segment& s);
-/// `contour` with each quadratic or cubic that is_straight written as its line.
-Contour with_straight_segments_as_lines(const Contour& contour);
 
 struct PlanOptions {
   double corner_angle_deg;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "geom/straight_segments.hpp"
+
 namespace gf {
 
 GlyphFairing fair_glyph(const Glyph& source, const FairSettings& requested, FairedContours& faired) {
@@ -14,6 +16,11 @@ GlyphFairing fair_glyph(const Glyph& source, const FairSettings& requested, Fair
     ContourFairing c = faired.fair(source.outline.contours[i], settings);
     const std::string contour = "contour " + std::to_string(i) + ": ";
     if (c.faired) {
+      // The writeback and rounding may leave a straight stretch in several cubics on one line
+      // (a guide's stem, its tangent crossing the vertical at each node, all rounded onto it):
+      // one cubic draws it, no point moved. Only now, once every fairing of the contour has
+      // been weighed and mended as it was.
+      c.contour = with_straight_runs_joined(c.contour);
       ++out.contours_faired;
       out.deviation = std::max(out.deviation, c.deviation);
       out.max_curvature_mismatch = std::max(out.max_curvature_mismatch, c.max_curvature_mismatch);

@@ -18,6 +18,7 @@
 #include "fair/plan_fairing.hpp"
 #include "geom/curvature.hpp"
 #include "geom/join.hpp"
+#include "geom/straight_segments.hpp"
 #include "io/source.hpp"
 #include "point_set_distance.hpp"
 #include "test_fonts.hpp"
@@ -1473,6 +1474,24 @@ TEST(ContourFairing, AGuideWithinTheBudgetServesThoughPastItsShare) {
   EXPECT_TRUE(f.result.runs_as_drawn.empty()) << f.result.runs_as_drawn.front();
   EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm), 0);
   EXPECT_EQ(kinks(f.result.glyph.outline), 0);
+}
+
+// EB Garamond's I: the guide of its cap serif's top runs level for 50 units, and the
+// writeback cut it where the tangent was level, each cut rounded onto y = 652: a smooth node
+// between two straight cubics on one line, which one cubic draws point for point. The faired
+// glyph has no such node.
+TEST(ContourFairing, NoSmoothNodeIsLeftBetweenTwoStraightPiecesOnOneLine) {
+  FairedGlyph f;
+  expect_faired(test::eb_garamond, "I", FairProfile::text, &f);
+  for (const Contour& c : f.result.glyph.outline.contours) {
+    const std::size_t n = c.segments.size();
+    for (std::size_t k = 0; k < n; ++k) {
+      const Segment &before = c.segments[(k + n - 1) % n], &after = c.segments[k];
+      if (!c.nodes[k].smooth.value_or(false) || !is_straight_segment(before) || !is_straight_segment(after)) continue;
+      const Vec2 a = start_point(before), b = start_point(after), e = end_point(after);
+      EXPECT_NE(cross(b - a, e - a), 0.0) << "node " << k << " at (" << b.x << ", " << b.y << ")";
+    }
+  }
 }
 
 // EB Garamond's G: its longest run, 3,643 units with its serifs, sampled a point every 3 units

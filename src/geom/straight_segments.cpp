@@ -1,0 +1,68 @@
+#include "geom/straight_segments.hpp"
+
+#include <cmath>
+#include <optional>
+
+namespace gf {
+
+bool is_straight(const Cubic& c) {
+  const Vec2 d = c.p[3] - c.p[0];
+  const double len = norm(d);
+  if (len == 0.0) return false;
+  for (const Vec2 q : {c.p[1], c.p[2]}) {
+    const Vec2 r = q - c.p[0];
+    if (std::abs(cross(d, r)) > 1e-9 * len * len) return false;
+    const double along = dot(d, r) / (len * len);
+    if (along < 0.0 || along > 1.0) return false;
+  }
+  return true;
+}
+
+bool is_straight_segment(const Segment& s) {
+  return is_line(s) || std::visit([](const auto& b) { return is_straight(to_cubic(b)); }, s);
+}
+
+Contour with_straight_segments_as_lines(const Contour& contour) {
+  Contour out = contour;
+  for (Segment& s : out.segments)
+    if (!is_line(s) && is_straight_segment(s)) s = Line{start_point(s), end_point(s)};
+  return out;
+}
+
+namespace {
+
+// The one segment `a` then `b` draw, where both are straight and b runs on along a's line.
+std::optional<Segment> joined(const Segment& a, const Segment& b) {
+  if (!is_straight_segment(a) || !is_straight_segment(b)) return std::nullopt;
+  const Vec2 p = start_point(a), q = end_point(b), d = end_point(a) - p, e = q - start_point(b);
+  if (!(dot(d, e) > 0.0)) return std::nullopt;
+  const Vec2 chord = q - p;
+  if (std::abs(cross(d, chord)) > 1e-9 * norm(d) * norm(chord)) return std::nullopt;
+  if (is_line(a) || is_line(b)) return Segment{Line{p, q}};
+  const auto as_cubic = [](const Segment& s) { return std::visit([](const auto& c) { return to_cubic(c); }, s); };
+  const Cubic first = as_cubic(a), second = as_cubic(b);
+  return Segment{Cubic{p, first.p[1], second.p[2], q}};
+}
+
+}  // namespace
+
+Contour with_straight_runs_joined(const Contour& contour) {
+  Contour out = contour;
+  // Node k joins segments k − 1 and k; a closed contour's node 0 stays.
+  for (std::size_t k = 1; k < out.segments.size();) {
+    if (!out.nodes[k].smooth.value_or(false)) {
+      ++k;
+      continue;
+    }
+    if (const std::optional<Segment> one = joined(out.segments[k - 1], out.segments[k])) {
+      out.segments[k - 1] = *one;
+      out.segments.erase(out.segments.begin() + static_cast<std::ptrdiff_t>(k));
+      out.nodes.erase(out.nodes.begin() + static_cast<std::ptrdiff_t>(k));
+      continue;
+    }
+    ++k;
+  }
+  return out;
+}
+
+}  // namespace gf
