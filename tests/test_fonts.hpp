@@ -22,7 +22,7 @@ inline const std::string carlito = fonts + "/Carlito/Carlito-Regular-subset.ttf"
 inline const std::string gentium_plus = fonts + "/GentiumPlus/GentiumPlus-Regular-subset.ttf";  // d X w M
 inline const std::string comic_neue = fonts + "/ComicNeue/ComicNeue-Regular-subset.otf";  // i, u
 inline const std::string linux_libertine = fonts + "/LinuxLibertine/LinLibertine_R-subset.otf";  // d, g, D, M, T, Z
-inline const std::string quicksand = fonts + "/Quicksand/Quicksand-Regular-subset.ttf";  // A W
+inline const std::string quicksand = fonts + "/Quicksand/Quicksand-Regular-subset.ttf";  // A W x
 inline const std::string linux_biolinum = fonts + "/LinuxBiolinum/LinBiolinum_R-subset.otf";  // f
 // dkg handwriting's T, renamed (its licence reserves the name)
 inline const std::string handwriting_probe = fonts + "/HandwritingProbe/GlyphfairProbeHandwriting-T.ttf";

@@ -182,11 +182,13 @@ std::vector<Cubic> cubics_at(const Contour& c, std::span<const std::size_t> indi
 // The cheapest of `found` whose changed cubics (`cubics`, indices into c's segments) gain
 // no extremum, inflection, fold, overreach, crowded handle or spike in total, and that keeps the
 // contour within the tolerance of the source. With `turning_together` the cubics redraw one
-// curve, and either may turn as far as they did together.
+// curve, and either may turn as far as they did together; `old_jump` (|Δκ| at a join the change
+// makes G2) counts as curvature variation the old cubics had.
 std::optional<Contour> cheapest_within(const Contour& c, Cheapest&& found, std::span<const std::size_t> cubics,
                                        const SampledContour& sampled_source, const JoinMendingLimits& limits,
-                                       bool turning_together = false) {
+                                       bool turning_together = false, double old_jump = 0.0) {
   ShapeTraits old = shape_traits(cubics_at(c, cubics));
+  old.variation += old_jump;
   if (turning_together) {
     old.turning = 0.0;
     for (const Cubic& b : cubics_at(c, cubics)) old.turning += cubic_turning(b);
@@ -472,6 +474,96 @@ std::optional<Contour> mend_curve_between_lines(const Contour& c, std::size_t k,
   return mended;
 }
 
+// The curve from a line into a smooth node E (line h, cubic k to E, then a cubic), whose join
+// with the line jumps, redrawn as two cubics: the first leaves the line with κ = 0 exactly, the
+// second reaches E along E's direction with the curvature the cubic after E has there (that
+// cubic's handle at E whole steps of E's direction, the join at its far end held as it was).
+// Their node M goes to any grid point within a unit of the curve, its direction near the
+// curve's tangent there, where its tangent line crosses the line at a grid point: M's in-handle
+// on the line, so κ = 0 where the first cubic leaves it whatever its lengths. The first cubic's
+// other handle is whole steps of the line, its start (the line's end) as near the join as that
+// handle leaves room for, anywhere back along the line: the cubic runs on along the line (its
+// first three points on it), so the outline hardly moves. The second cubic's handles are whole
+// steps of M's and E's directions, and κ at M matches from both sides. Quicksand's x: its
+// (−10, −13) leg, carried on, crosses the baseline extremum's level off the grid, so no cubic
+// from the leg into the extremum left it with κ = 0 (κ·UPM 13 against 0); the first cubic now
+// takes four of the leg's 16-unit steps.
+std::optional<Contour> mend_curve_from_line(const Contour& c, std::size_t k, const SampledContour& sampled_source,
+                                            const JoinMendingLimits& limits) {
+  std::size_t n = c.segments.size();
+  const std::size_t h = (k + n - 1) % n;
+  if (n < 4 || !std::holds_alternative<Line>(c.segments[h]) || !std::holds_alternative<Cubic>(c.segments[k]) ||
+      !std::holds_alternative<Cubic>(c.segments[(k + 1) % n]))
+    return std::nullopt;
+  if (join_fault(joins_of(c)[(k + 1) % n], {}, limits.units_per_em) != JoinFault::none) return std::nullopt;
+  const Contour w = split_at_middle(c, k);
+  n = w.segments.size();
+  const std::size_t j = (k + 1) % n, after = (k + 2) % n;
+  const Line& line = std::get<Line>(w.segments[h]);
+  const Cubic& next = std::get<Cubic>(w.segments[after]);
+  const Vec2 a1 = line.p[0], join = line.p[1], e = next.p[0];
+  const std::array<Cubic, 2> old{std::get<Cubic>(w.segments[k]), std::get<Cubic>(w.segments[j])};
+  const std::optional<Vec2> u = primitive_step(join - a1), de = primitive_step(e - old[1].p[2]);
+  const std::optional<int> join_steps = u ? steps_along(a1, *u, join) : std::nullopt;
+  if (!u || !de || !join_steps || next.p[1] == e) return std::nullopt;
+  const double upm = limits.units_per_em, reach = distance(join, e);
+  // The next cubic's handle at E, and its curvature there, in order of that curvature.
+  const FarEnd beyond_next = far_end(w, joins_of(w), (after + 1) % n, next.p[2], false, limits);
+  std::vector<std::pair<double, Vec2>> leaving_e;
+  for (const int steps : StepCounts(distance(e, next.p[1]), norm(*de), distance(e, next.p[3]))) {
+    const Vec2 handle = e + *de * steps;
+    if (beyond_next.beyond && jumps(end_curvature_of(handle, next.p[2], next.p[3]), *beyond_next.beyond, upm)) continue;
+    leaving_e.emplace_back(start_curvature(e, handle, next.p[2]), handle);
+  }
+  std::sort(leaving_e.begin(), leaving_e.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  Cheapest found(limits.most_judged);
+  for (const auto& [m, tangent] : grid_points_along(old)) {
+    if (m == e) continue;
+    const double chord = distance(m, e);
+    for (const Vec2 d : directions_near(tangent, limits.most_turn_rad, limits.longest_step)) {
+      const std::optional<double> back = whole_steps_to_line(m, d, -1.0, a1, *u);
+      if (!back) continue;
+      const Vec2 near_line = m - d * *back;
+      if (distance(near_line, m) > reach) continue;
+      const int s2 = static_cast<int>(whole_steps(a1, near_line, *u, 1.0));  // near_line's steps along the line
+      const int s0_last = std::min(*join_steps + limits.line_slide_steps, s2 - 2);
+      const double k1 = end_curvature_of(near_line - *u, near_line, m);  // κ at M per step of the first's P1
+      if (s0_last < 1 || k1 == 0.0) continue;
+      for (const int b : StepCounts(distance(old[1].p[0], old[1].p[1]), norm(d), chord))
+        for (const int a : StepCounts(distance(old[1].p[2], e), norm(*de), chord)) {
+          const Vec2 near_m = m + d * b, near_e = e - *de * a;
+          const double arriving = end_curvature_of(near_m, near_e, e), window = match_window(arriving, upm);
+          auto it = std::lower_bound(leaving_e.begin(), leaving_e.end(), arriving - window,
+                                     [](const auto& x, double k) { return x.first < k; });
+          for (; it != leaving_e.end() && it->first <= arriving + window; ++it) {
+            const auto& [k_e, handle_e] = *it;
+            if (jumps(arriving, k_e, upm)) continue;
+            const double km = start_curvature(m, near_m, near_e);
+            const int centre = static_cast<int>(std::round(km / k1));
+            for (int alpha = std::max(1, centre - 1); alpha <= centre + 1; ++alpha) {
+              const int s0 = std::min(s0_last, s2 - alpha - 1);
+              if (s0 < 1 || jumps(alpha * k1, km, upm)) continue;
+              const Vec2 p0 = a1 + *u * s0, p1 = near_line - *u * alpha;
+              Candidate cand;
+              cand.cost = distance(p0, join) + distance(p1, old[0].p[1]) + distance(near_line, old[0].p[2]) +
+                          distance(m, old[0].p[3]) + distance(near_m, old[1].p[1]) + distance(near_e, old[1].p[2]) +
+                          distance(handle_e, next.p[1]);
+              cand.add(h, 1, p0);
+              cand.add(k, 0, p0), cand.add(k, 1, p1), cand.add(k, 2, near_line), cand.add(k, 3, m);
+              cand.add(j, 0, m), cand.add(j, 1, near_m), cand.add(j, 2, near_e);
+              cand.add(after, 1, handle_e);
+              found.offer(cand);
+            }
+          }
+        }
+    }
+  }
+  // The jump the old curve left at the line counts as variation it had: the new one has none there.
+  const double old_jump = std::abs(start_curvature(join, old[0].p[1], old[0].p[2]));
+  const std::array<std::size_t, 3> cubics{k, j, after};
+  return cheapest_within(w, std::move(found), cubics, sampled_source, limits, true, old_jump);
+}
+
 // The closed contour walked the other way: its segment i is segment n − 1 − i reversed, and
 // its node i node (n − i) mod n.
 Contour walked_back(const Contour& c) {
@@ -502,11 +594,14 @@ int mend_jumping_joins(Contour& rounded, const SampledContour& sampled_source, c
     } else if (std::holds_alternative<Line>(in) && std::holds_alternative<Cubic>(out)) {
       done = mend_line_join(rounded, joins, k, sampled_source, limits);
       if (!done && limits.curves_between_lines) done = mend_curve_between_lines(rounded, k, sampled_source, limits);
+      if (!done && limits.curves_between_lines) done = mend_curve_from_line(rounded, k, sampled_source, limits);
     } else if (std::holds_alternative<Cubic>(in) && std::holds_alternative<Line>(out)) {
       const Contour back = walked_back(rounded);
       std::optional<Contour> mended_back = mend_line_join(back, joins_of(back), (n - k) % n, sampled_source, limits);
       if (!mended_back && limits.curves_between_lines)
         mended_back = mend_curve_between_lines(back, (n - k) % n, sampled_source, limits);
+      if (!mended_back && limits.curves_between_lines)
+        mended_back = mend_curve_from_line(back, (n - k) % n, sampled_source, limits);
       if (mended_back) done = walked_back(*mended_back);
     }
     if (!done) continue;

@@ -9,7 +9,9 @@
 // of the leg's steps long and its far node a unit over, turned to (−3, 7). Where no such move
 // mends a line join and the curve runs on to another line within two cubics, the curve is
 // redrawn as two cubics seated on both lines, their node anywhere along it (TeX Gyre Pagella's
-// W); its second line may go, the curve then reaching that line's far corner along it.
+// W); its second line may go, the curve then reaching that line's far corner along it. Where
+// the curve runs on into a smooth node between cubics instead (an extremum), the cubic from the
+// line is redrawn as two, the first running on along the line (Quicksand's x).
 #pragma once
 
 #include <cstddef>

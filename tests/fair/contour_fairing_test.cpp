@@ -1541,6 +1541,15 @@ TEST(ContourFairing, ACurveWhoseJoinRoundingSlidIsCutBesideItsLine) {
   expect_faired_g2_without_new_inflections(test::quicksand, "W");
 }
 
+TEST(ContourFairing, ACurveFromALegIntoAnExtremumOffTheLegsGridIsRedrawnG2) {
+  // Quicksand's x (1,000 units): the lower left leg, of grid step (−10, −13), carried on
+  // crosses the baseline extremum's level off the grid, and the one cubic from it into the
+  // extremum left the leg with κ·UPM 13 against 0 (stop 104's "Known limits"). Redrawn as two
+  // cubics, the first running on along the leg (join_mending's mend_curve_from_line), the glyph
+  // has no jump.
+  expect_faired_g2_without_new_inflections(test::quicksand, "x");
+}
+
 // A contour's plan faired as a text contour's last resort on the grid (fair_contour's
 // fair_planned): on its own outlines with stalled chains kept (RunBasis::own_with_jumps), the
 // runs that fail there kept as drawn, within the budgets of its first fairing.

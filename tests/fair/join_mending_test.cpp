@@ -10,6 +10,8 @@
 
 #include "fair/outline_faults.hpp"
 #include "geom/join.hpp"
+#include "io/source.hpp"
+#include "test_fonts.hpp"
 #include "test_shapes.hpp"
 
 namespace gf {
@@ -83,6 +85,17 @@ void expect_no_faults(const OutlineFaults& f) {
 
 JoinMendingLimits limits_for(double tolerance) { return {.tolerance_units = tolerance, .units_per_em = upm}; }
 
+// `rounded`, with one jump against `source` as the check counts it, mended in one join: no
+// fault left, on the grid, within 1.25 units of the source.
+void expect_the_jump_mended(const Contour& source, Contour& rounded) {
+  const FaultCounter counter(source, upm);
+  ASSERT_EQ(counter.count(rounded).jumps, 1);
+  EXPECT_EQ(mend_jumping_joins(rounded, SampledContour(source), limits_for(1.25)), 1);
+  expect_no_faults(counter.count(rounded));
+  EXPECT_TRUE(all_on_grid(rounded));
+  EXPECT_LE(distance_between(SampledContour(rounded), SampledContour(source)), 1.25);
+}
+
 TEST(JoinMending, ACurveLeavingASlantedLegWithAJumpIsMendedOnTheGridWithinTheTolerance) {
   const Contour source = noto_serif_w();
   const FaultCounter counter(source, upm);
@@ -128,17 +141,11 @@ TEST(JoinMending, AJoinEveryMendOfWhichStraysPastTheToleranceIsLeftAsItWas) {
 }
 
 TEST(JoinMending, ATightCurveBetweenTwoLinesIsRedrawnSeatedOnBoth) {
-  const Contour source = pagella_w_arm(false);
-  const FaultCounter counter(source, upm);
-  Contour mended = pagella_w_arm(true);
-  ASSERT_EQ(counter.count(mended).jumps, 1);
   // Two or three units from its node, no grid point gives the curve's handle a place on the
   // leg: the node goes 18 units up the curve, where its tangent line crosses both lines on the
   // grid, and the line to the corner goes, the second cubic reaching the corner along it.
-  EXPECT_EQ(mend_jumping_joins(mended, SampledContour(source), limits_for(1.25)), 1);
-  expect_no_faults(counter.count(mended));
-  EXPECT_TRUE(all_on_grid(mended));
-  EXPECT_LE(distance_between(SampledContour(mended), SampledContour(source)), 1.25);
+  Contour mended = pagella_w_arm(true);
+  expect_the_jump_mended(pagella_w_arm(false), mended);
   ASSERT_EQ(mended.segments.size(), 6u);
   ASSERT_EQ(mended.nodes.size(), 6u);
   const Line& leg = std::get<Line>(mended.segments[0]);
@@ -153,6 +160,41 @@ TEST(JoinMending, ATightCurveBetweenTwoLinesIsRedrawnSeatedOnBoth) {
   EXPECT_EQ(arriving.p[3], (Vec2{984, 662}));
   EXPECT_EQ(cross(arriving.p[1] - arriving.p[3], along_top), 0.0);
   EXPECT_EQ(cross(arriving.p[2] - arriving.p[3], along_top), 0.0);
+}
+
+// Quicksand's x (The Quicksand Project Authors, OFL; UPM 1000) as the fairing rounded it at
+// stop 104: its lower left leg, a line of step (−10, −13), runs into the foot's curve at
+// (92, 13), and the curve reaches the baseline extremum (65, −3) in one cubic, leaving the leg
+// with κ·UPM 13 against 0. The leg, carried on, crosses y = −3 off the grid.
+Contour quicksand_x_rounded() {
+  return closed({cubic({450, 27}, {450, 13}, {434, -5}, {420, -5}), cubic({420, -5}, {406, -5}, {392, 13}, {362, 52}),
+                 line({362, 52}, {242, 208}), line({242, 208}, {92, 13}), cubic({92, 13}, {82, 0}, {73, -3}, {65, -3}),
+                 cubic({65, -3}, {51, -3}, {36, 6}, {36, 24}), cubic({36, 24}, {36, 32}, {39, 39}, {43, 43}),
+                 line({43, 43}, {208, 253}), line({208, 253}, {47, 460}), cubic({47, 460}, {40, 469}, {33, 478}, {33, 487}),
+                 cubic({33, 487}, {33, 500}, {47, 516}, {65, 516}), cubic({65, 516}, {75, 516}, {83, 511}, {88, 503}),
+                 line({88, 503}, {245, 303}), line({245, 303}, {395, 503}),
+                 cubic({395, 503}, {398, 507}, {404, 515}, {420, 515}), cubic({420, 515}, {436, 515}, {448, 507}, {448, 490}),
+                 cubic({448, 490}, {448, 483}, {446, 476}, {441, 471}), line({441, 471}, {279, 258}),
+                 line({279, 258}, {443, 45}), cubic({443, 45}, {448, 37}, {450, 32}, {450, 27})});
+}
+
+TEST(JoinMending, ACurveFromALegIntoAnExtremumIsRedrawnAsTwoCubics) {
+  SourceOptions options;
+  options.selection.names.push_back("x");
+  Contour mended = quicksand_x_rounded();
+  expect_the_jump_mended(GlyphSource::open(test::quicksand, options).load(0)->outline.contours.at(0), mended);
+  // A node more: the leg, a cubic leaving it with its first three points on the leg's line
+  // (κ = 0 there exactly), a cubic on to the extremum, which stays where it was, level.
+  ASSERT_EQ(mended.segments.size(), 21u);
+  const Line& leg = std::get<Line>(mended.segments[3]);
+  const Cubic& leaving = std::get<Cubic>(mended.segments[4]);
+  const Cubic& arriving = std::get<Cubic>(mended.segments[5]);
+  const Vec2 along_leg{-10, -13};
+  EXPECT_EQ(leg.p[0], (Vec2{242, 208}));
+  EXPECT_EQ(leaving.p[0], leg.p[1]);
+  for (int i = 0; i < 3; ++i) EXPECT_EQ(cross(leaving.p[i] - leg.p[0], along_leg), 0.0) << i;
+  EXPECT_EQ(arriving.p[3], (Vec2{65, -3}));
+  EXPECT_EQ(arriving.p[2].y, -3.0);
 }
 
 }  // namespace
