@@ -503,7 +503,8 @@ std::optional<Contour> mend_curve_from_line(const Contour& c, std::size_t k, con
   const Cubic& next = std::get<Cubic>(w.segments[after]);
   const Vec2 a1 = line.p[0], join = line.p[1], e = next.p[0];
   const std::array<Cubic, 2> old{std::get<Cubic>(w.segments[k]), std::get<Cubic>(w.segments[j])};
-  const std::optional<Vec2> u = primitive_step(join - a1), de = primitive_step(e - old[1].p[2]);
+  // E's direction from the cubic as it was: the halves' handles lie off the grid.
+  const std::optional<Vec2> u = primitive_step(join - a1), de = primitive_step(e - std::get<Cubic>(c.segments[k]).p[2]);
   const std::optional<int> join_steps = u ? steps_along(a1, *u, join) : std::nullopt;
   if (!u || !de || !join_steps || next.p[1] == e) return std::nullopt;
   const double upm = limits.units_per_em, reach = distance(join, e);
