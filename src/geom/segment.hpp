@@ -26,6 +26,10 @@ inline int degree_of(const Segment& s) {
   return std::visit([](const auto& b) { return b.degree; }, s);
 }
 inline bool is_line(const Segment& s) { return std::holds_alternative<Line>(s); }
+/// The segment as the cubic that draws it (a line's and a quadratic's exact cubics).
+inline Cubic to_cubic(const Segment& s) {
+  return std::visit([](const auto& b) { return to_cubic(b); }, s);
+}
 inline PolynomialCurve polynomial_of(const Segment& s) {
   return std::visit([](const auto& b) { return b.polynomial(); }, s);
 }

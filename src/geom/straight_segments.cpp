@@ -19,7 +19,7 @@ bool is_straight(const Cubic& c) {
 }
 
 bool is_straight_segment(const Segment& s) {
-  return is_line(s) || std::visit([](const auto& b) { return is_straight(to_cubic(b)); }, s);
+  return is_line(s) || is_straight(to_cubic(s));
 }
 
 Contour with_straight_segments_as_lines(const Contour& contour) {
@@ -39,8 +39,7 @@ std::optional<Segment> joined(const Segment& a, const Segment& b) {
   const Vec2 chord = q - p;
   if (std::abs(cross(d, chord)) > 1e-9 * norm(d) * norm(chord)) return std::nullopt;
   if (is_line(a) || is_line(b)) return Segment{Line{p, q}};
-  const auto as_cubic = [](const Segment& s) { return std::visit([](const auto& c) { return to_cubic(c); }, s); };
-  const Cubic first = as_cubic(a), second = as_cubic(b);
+  const Cubic first = to_cubic(a), second = to_cubic(b);
   return Segment{Cubic{p, first.p[1], second.p[2], q}};
 }
 

@@ -29,7 +29,7 @@ double robust_max_curvature(std::span<const CurvatureProfile> profiles) {
 }
 
 void add_segment_path(cairo_t* cr, const PanelMap& map, const Segment& s) {
-  const Cubic c = std::visit([](const auto& b) { return to_cubic(b); }, s);
+  const Cubic c = to_cubic(s);
   const Vec2 p1 = map(c.p[1]), p2 = map(c.p[2]), p3 = map(c.p[3]);
   if (is_line(s)) cairo_line_to(cr, p3.x, p3.y);
   else cairo_curve_to(cr, p1.x, p1.y, p2.x, p2.y, p3.x, p3.y);
