@@ -534,13 +534,13 @@ std::optional<Contour> mend_curve_from_line(const Contour& c, std::size_t k, con
         for (const int a : StepCounts(distance(old[1].p[2], e), norm(*de), chord)) {
           const Vec2 near_m = m + d * b, near_e = e - *de * a;
           const double arriving = end_curvature_of(near_m, near_e, e), window = match_window(arriving, upm);
+          const double km = start_curvature(m, near_m, near_e);
+          const int centre = static_cast<int>(std::round(km / k1));
           auto it = std::lower_bound(leaving_e.begin(), leaving_e.end(), arriving - window,
                                      [](const auto& x, double k) { return x.first < k; });
           for (; it != leaving_e.end() && it->first <= arriving + window; ++it) {
             const auto& [k_e, handle_e] = *it;
             if (jumps(arriving, k_e, upm)) continue;
-            const double km = start_curvature(m, near_m, near_e);
-            const int centre = static_cast<int>(std::round(km / k1));
             for (int alpha = std::max(1, centre - 1); alpha <= centre + 1; ++alpha) {
               const int s0 = std::min(s0_last, s2 - alpha - 1);
               if (s0 < 1 || jumps(alpha * k1, km, upm)) continue;

@@ -35,7 +35,9 @@ struct JoinMendingLimits {
   double most_turn_rad = 0.2;    ///< how far a join's direction may turn from its tangent
   int far_handle_reach = 3;      ///< whole steps a far handle may move either way
   std::size_t most_judged = 400; ///< candidates per join measured against the source, cheapest first
-  /// Whether a curve between two lines may be redrawn seated on both (mend_curve_between_lines).
+  /// Whether a curve from a line may be redrawn as two new cubics: seated on both lines where it
+  /// runs on to another (mend_curve_between_lines), else into the node it reaches
+  /// (mend_curve_from_line).
   bool curves_between_lines = true;
 };
 

@@ -49,17 +49,15 @@ Contour with_straight_runs_joined(const Contour& contour) {
   Contour out = contour;
   // Node k joins segments k − 1 and k; a closed contour's node 0 stays.
   for (std::size_t k = 1; k < out.segments.size();) {
-    if (!out.nodes[k].smooth.value_or(false)) {
+    const std::optional<Segment> one =
+        out.nodes[k].smooth.value_or(false) ? joined(out.segments[k - 1], out.segments[k]) : std::nullopt;
+    if (!one) {
       ++k;
       continue;
     }
-    if (const std::optional<Segment> one = joined(out.segments[k - 1], out.segments[k])) {
-      out.segments[k - 1] = *one;
-      out.segments.erase(out.segments.begin() + static_cast<std::ptrdiff_t>(k));
-      out.nodes.erase(out.nodes.begin() + static_cast<std::ptrdiff_t>(k));
-      continue;
-    }
-    ++k;
+    out.segments[k - 1] = *one;
+    out.segments.erase(out.segments.begin() + static_cast<std::ptrdiff_t>(k));
+    out.nodes.erase(out.nodes.begin() + static_cast<std::ptrdiff_t>(k));
   }
   return out;
 }
