@@ -9,13 +9,13 @@ bool is_straight(const Cubic& c) {
   const Vec2 d = c.p[3] - c.p[0];
   const double len = norm(d);
   if (len == 0.0) return false;
-  for (const Vec2 q : {c.p[1], c.p[2]}) {
-    const Vec2 r = q - c.p[0];
-    if (std::abs(cross(d, r)) > 1e-9 * len * len) return false;
-    const double along = dot(d, r) / (len * len);
-    if (along < 0.0 || along > 1.0) return false;
-  }
-  return true;
+  for (const Vec2 q : {c.p[1], c.p[2]})
+    if (std::abs(cross(d, q - c.p[0])) > 1e-9 * len * len) return false;
+  // Along the chord the cubic moves with speed 3·B(t), B the quadratic Bernstein form of the
+  // steps a, b, c between its control points; B ≥ 0 on [0, 1] (it never runs back) iff a ≥ 0,
+  // c ≥ 0 and b ≥ −√(ac).
+  const double a = dot(d, c.p[1] - c.p[0]), b = dot(d, c.p[2] - c.p[1]), e = dot(d, c.p[3] - c.p[2]);
+  return a >= 0.0 && e >= 0.0 && (b >= 0.0 || b * b <= a * e);
 }
 
 bool is_straight_segment(const Segment& s) {
@@ -39,8 +39,10 @@ std::optional<Segment> joined(const Segment& a, const Segment& b) {
   const Vec2 chord = q - p;
   if (std::abs(cross(d, chord)) > 1e-9 * norm(d) * norm(chord)) return std::nullopt;
   if (is_line(a) || is_line(b)) return Segment{Line{p, q}};
-  const Cubic first = to_cubic(a), second = to_cubic(b);
-  return Segment{Cubic{p, first.p[1], second.p[2], q}};
+  // Each may reach far past its ends where its other step is short, so the two outer handles
+  // can run back though neither cubic does: (0, 130, 65, 100) and (100, 100.3, 99.7, 101).
+  const Cubic one{p, to_cubic(a).p[1], to_cubic(b).p[2], q};
+  return is_straight(one) ? Segment{one} : Segment{Line{p, q}};
 }
 
 }  // namespace

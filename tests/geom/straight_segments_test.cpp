@@ -35,6 +35,34 @@ Contour d_shape(Segment rest, bool smooth_at_40 = true) {
   return c;
 }
 
+// Where the cubic is along its chord at `t`, as a share of the chord.
+double along_chord(const Cubic& c, double t) {
+  const Vec2 d = c.p[3] - c.p[0];
+  return dot(d, c.point_at(t) - c.p[0]) / dot(d, d);
+}
+
+TEST(StraightCubic, IsALineWhereverItsHandlesLieOnTheChordsLineAsLongAsItNeverRunsBack) {
+  // Handles from 0.4 chords behind its start to 0.4 past its end, in twentieths: straight
+  // exactly when, sampled finely, it never runs back along the chord.
+  int straight = 0, bent = 0;
+  for (int i = -8; i <= 28; ++i)
+    for (int j = -8; j <= 28; ++j) {
+      const Cubic c{{{0, 0}, {0.05 * i, 0}, {0.05 * j, 0}, {1, 0}}};
+      bool monotone = true;
+      for (int k = 1; k <= 4000 && monotone; ++k)
+        monotone = along_chord(c, k / 4000.0) >= along_chord(c, (k - 1) / 4000.0) - 1e-15;
+      EXPECT_EQ(is_straight(c), monotone) << "handles at " << 0.05 * i << ", " << 0.05 * j;
+      ++(monotone ? straight : bent);
+    }
+  EXPECT_GT(straight, 0);
+  EXPECT_GT(bent, 0);
+  // Rounding's short stem piece: handles past each other and past the end, never running back.
+  EXPECT_TRUE(is_straight(Cubic{{{424, 73}, {424, 44}, {424, 47}, {424, 45}}}));
+  // A handle a hair off the line, or the chord a point.
+  EXPECT_FALSE(is_straight(Cubic{{{0, 0}, {10, 0.01}, {30, 0}, {40, 0}}}));
+  EXPECT_FALSE(is_straight(Cubic{{{0, 0}, {10, 0}, {-10, 0}, {0, 0}}}));
+}
+
 TEST(StraightRunsJoined, TwoStraightCubicsOnOneLineBecomeOneWithTheOuterHandles) {
   const Contour c = d_shape(Cubic{{{40, 0}, {55, 0}, {85, 0}, {100, 0}}});
   const Contour joined = with_straight_runs_joined(c);
@@ -59,6 +87,25 @@ TEST(StraightRunsJoined, AStraightCubicAndALineBecomeALine) {
   ASSERT_EQ(joined.segments.size(), c.segments.size() - 1);
   EXPECT_EQ(joined.segments[0], Segment{(Line{{{0, 0}, {100, 0}}})});
   EXPECT_LT(test::polyline_hausdorff(outline_points(c), outline_points(joined)), 1e-9);
+}
+
+TEST(StraightRunsJoined, StraightCubicsWhoseHandlesReachPastTheirEndsBecomeOne) {
+  // Rounding's pieces of a stem, each handle past the next's: one cubic, the outer handles kept.
+  const Contour stem = d_shape(Cubic{{{40, 0}, {70, 0}, {38, 0}, {100, 0}}});
+  const Contour joined = with_straight_runs_joined(stem);
+  ASSERT_EQ(joined.segments.size(), stem.segments.size() - 1);
+  EXPECT_EQ(joined.segments[0], Segment{(Cubic{{{0, 0}, {10, 0}, {38, 0}, {100, 0}}})});
+  EXPECT_LT(test::polyline_hausdorff(outline_points(stem), outline_points(joined)), 1e-9);
+  // A long first handle and a short second cubic whose handle reaches back: the outer handles
+  // (0, 130, 99.7, 101) would run back, so they become a line.
+  Contour far_reach = d_shape(Cubic{{{100, 0}, {100.3, 0}, {99.7, 0}, {101, 0}}});
+  far_reach.segments[0] = Cubic{{{0, 0}, {130, 0}, {65, 0}, {100, 0}}};
+  far_reach.segments[2] = Cubic{{{101, 0}, {160, 0}, {160, 100}, {100, 100}}};
+  ASSERT_TRUE(is_straight(std::get<Cubic>(far_reach.segments[0])));
+  ASSERT_TRUE(is_straight(std::get<Cubic>(far_reach.segments[1])));
+  const Contour as_line = with_straight_runs_joined(far_reach);
+  ASSERT_EQ(as_line.segments.size(), far_reach.segments.size() - 1);
+  EXPECT_EQ(as_line.segments[0], Segment{(Line{{{0, 0}, {101, 0}}})});
 }
 
 TEST(StraightRunsJoined, ANodeThatTurnsBendsOrIsACornerStays) {
