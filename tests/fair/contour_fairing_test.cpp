@@ -1475,6 +1475,17 @@ TEST(ContourFairing, AGuideWithinTheBudgetServesThoughPastItsShare) {
   EXPECT_EQ(kinks(f.result.glyph.outline), 0);
 }
 
+// Comic Neue's d (tolerance 1.25): rounding left its stem's last stretch, (385, 47) to
+// (385, 27), a straight cubic, and the round end left it in one cubic with κ·UPM 20.7; the
+// join mends from a line never saw it, their line being a cubic. Read as the line it is, the
+// end leaves the stem with κ = 0 and the whole d is G2.
+TEST(ContourFairing, ARoundEndLeavingAStemsStraightCubicIsMendedAsFromTheLine) {
+  FairedGlyph f;
+  expect_faired(test::comic_neue, "d", FairProfile::text, &f);
+  EXPECT_EQ(g2_jumps(f.result.glyph.outline, f.upm), 0);
+  EXPECT_EQ(kinks(f.result.glyph.outline), 0);
+}
+
 // EB Garamond's I: the guide of its cap serif's top runs level for 50 units, and the
 // writeback cut it where the tangent was level, each cut rounded onto y = 652: a smooth node
 // between two straight cubics on one line, which one cubic draws point for point. Comic Neue's n

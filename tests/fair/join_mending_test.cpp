@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -195,6 +196,46 @@ TEST(JoinMending, ACurveFromALegIntoAnExtremumIsRedrawnAsTwoCubics) {
   for (int i = 0; i < 3; ++i) EXPECT_EQ(cross(leaving.p[i] - leg.p[0], along_leg), 0.0) << i;
   EXPECT_EQ(arriving.p[3], (Vec2{65, -3}));
   EXPECT_EQ(arriving.p[2].y, -3.0);
+}
+
+// The same x begun at the foot's curve, so the join that jumps is the contour's first node:
+// the mend splits the curve after it and finds the leg as the contour's last segment (its
+// index taken before the split had been another segment's).
+TEST(JoinMending, AJumpAtTheContoursFirstNodeIsMendedAsAnyOther) {
+  SourceOptions options;
+  options.selection.names.push_back("x");
+  Contour mended = quicksand_x_rounded();
+  std::rotate(mended.segments.begin(), mended.segments.begin() + 4, mended.segments.end());
+  expect_the_jump_mended(GlyphSource::open(test::quicksand, options).load(0)->outline.contours.at(0), mended);
+  ASSERT_EQ(mended.segments.size(), 21u);
+  const Line& leg = std::get<Line>(mended.segments.back());
+  const Cubic& leaving = std::get<Cubic>(mended.segments[0]);
+  EXPECT_EQ(leg.p[0], (Vec2{242, 208}));
+  EXPECT_EQ(leaving.p[0], leg.p[1]);
+  for (int i = 0; i < 3; ++i) EXPECT_EQ(cross(leaving.p[i] - leg.p[0], Vec2{-10, -13}), 0.0) << i;
+}
+
+// The same x with the leg's last stretch, from (132, 65), a straight cubic, as rounding leaves
+// a stem (Comic Neue's d: (385, 47) to (385, 27) before its round end), and the node between it
+// and the rest of the leg smooth. The mends from a line read the two as one line: the curve
+// leaving the leg takes four of its steps, more than the straight cubic has.
+TEST(JoinMending, AStraightCubicBesideTheJumpIsALineToTheMends) {
+  SourceOptions options;
+  options.selection.names.push_back("x");
+  Contour mended = quicksand_x_rounded();
+  mended.segments[3] = line({242, 208}, {132, 65});
+  mended.segments.insert(mended.segments.begin() + 4, cubic({132, 65}, {122, 52}, {112, 39}, {92, 13}));
+  mended.nodes.insert(mended.nodes.begin() + 4, NodeFlags{false, true});
+  expect_the_jump_mended(GlyphSource::open(test::quicksand, options).load(0)->outline.contours.at(0), mended);
+  // As the x with its leg one line is mended: the leg, a cubic leaving it with its first three
+  // points on the leg's line (κ = 0 there exactly), a cubic on to the extremum.
+  ASSERT_EQ(mended.segments.size(), 21u);
+  const Line& leg = std::get<Line>(mended.segments[3]);
+  const Cubic& leaving = std::get<Cubic>(mended.segments[4]);
+  EXPECT_EQ(leg.p[0], (Vec2{242, 208}));
+  EXPECT_EQ(leaving.p[0], leg.p[1]);
+  for (int i = 0; i < 3; ++i) EXPECT_EQ(cross(leaving.p[i] - leg.p[0], Vec2{-10, -13}), 0.0) << i;
+  EXPECT_EQ(std::get<Cubic>(mended.segments[5]).p[3], (Vec2{65, -3}));
 }
 
 }  // namespace
