@@ -610,6 +610,7 @@ std::optional<std::pair<Contour, std::size_t>> with_lines_beside(const Contour& 
     if (b && is_straight(*b)) lined.segments[i] = Line{b->p[0], b->p[3]}, any = true;
   }
   if (!any) return std::nullopt;
+  if (lined.nodes.size() != n) return std::pair{std::move(lined), k};  // no flags to join by
   Contour joined = with_straight_runs_joined(lined);
   const Vec2 at = start_point(c.segments[k]);
   for (std::size_t i = 0; i < joined.segments.size(); ++i)
