@@ -488,13 +488,13 @@ std::optional<Contour> mend_curve_between_lines(const Contour& c, std::size_t k,
 // (−10, −13) leg, carried on, crosses the baseline extremum's level off the grid, so no cubic
 // from the leg into the extremum left it with κ = 0 (κ·UPM 13 against 0); the first cubic now
 // takes four of the leg's 16-unit steps.
-std::optional<Contour> mend_curve_from_line(const Contour& c, std::size_t k, const SampledContour& sampled_source,
-                                            const JoinMendingLimits& limits) {
+std::optional<Contour> mend_curve_from_line(const Contour& c, const std::vector<Join>& joins, std::size_t k,
+                                            const SampledContour& sampled_source, const JoinMendingLimits& limits) {
   std::size_t n = c.segments.size(), h = (k + n - 1) % n;
   if (n < 4 || !std::holds_alternative<Line>(c.segments[h]) || !std::holds_alternative<Cubic>(c.segments[k]) ||
       !std::holds_alternative<Cubic>(c.segments[(k + 1) % n]))
     return std::nullopt;
-  if (join_fault(joins_of(c)[(k + 1) % n], {}, limits.units_per_em) != JoinFault::none) return std::nullopt;
+  if (join_fault(joins[(k + 1) % n], {}, limits.units_per_em) != JoinFault::none) return std::nullopt;
   const Contour w = split_at_middle(c, k);
   n = w.segments.size(), h = (k + n - 1) % n;  // the line in w: the last where k = 0
   const std::size_t j = (k + 1) % n, after = (k + 2) % n;
@@ -587,7 +587,7 @@ std::optional<Contour> mend_join(const Contour& c, const std::vector<Join>& join
   if (std::holds_alternative<Line>(in) && std::holds_alternative<Cubic>(out)) {
     std::optional<Contour> done = mend_line_join(c, joins, k, sampled_source, limits);
     if (!done && limits.curves_between_lines) done = mend_curve_between_lines(c, k, sampled_source, limits);
-    if (!done && limits.curves_between_lines) done = mend_curve_from_line(c, k, sampled_source, limits);
+    if (!done && limits.curves_between_lines) done = mend_curve_from_line(c, joins, k, sampled_source, limits);
     return done;
   }
   if (std::holds_alternative<Cubic>(in) && std::holds_alternative<Line>(out)) {
@@ -633,19 +633,19 @@ int mend_jumping_joins(Contour& rounded, const SampledContour& sampled_source, c
     // (with_straight_runs_joined). Comic Neue's d: its stem's (385, 47) to (385, 27) a straight
     // cubic into its round end, κ·UPM 20.7 where the end leaves it, which only the mends from a
     // line reach.
-    std::size_t next = k + 1;
+    std::size_t mended_at = k;  // where the join is in the contour mended
     if (!done)
       if (const auto lined = with_lines_beside(rounded, k)) {
         const auto& [c, at] = *lined;
         done = mend_join(c, joins_of(c), at, sampled_source, limits);
-        next = at + 1;
+        mended_at = at;
       }
     if (!done) continue;
     rounded.nodes = std::move(done->nodes);
     rounded.segments = std::move(done->segments);
     joins = joins_of(rounded);
     ++mended;
-    k = next - 1;  // on from the join mended, wherever joining the lines moved it
+    k = mended_at;  // on from there
   }
   return mended;
 }
