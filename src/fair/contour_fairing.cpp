@@ -523,8 +523,8 @@ class MendedFaults {
 
 // The fairings again of a contour `out` whose first fairing (`first` its tries, `memo` its
 // runs) left `faults`, each kept where it has fewer (replaces_kept_fairing).
-void fair_again_while_faulty(ContourFairing& out, OutlineFaults& faults, const Contour& source, FairSettings settings,
-                             Tries first, RunFairings& memo, MendedFaults& count) {
+void refair_while_faulty(ContourFairing& out, OutlineFaults& faults, const Contour& source, FairSettings settings,
+                         Tries first, RunFairings& memo, MendedFaults& count) {
   // With the nodes' curvatures free the writeback's cubics are fewer and differently long, and
   // the grid matches a join's curvature at some that it missed before and misses others (Comic
   // Neue's V: two kinks where its arms' lines meet the serifs; Accanthis's M, a jump where a
@@ -535,24 +535,6 @@ void fair_again_while_faulty(ContourFairing& out, OutlineFaults& faults, const C
   // There each refairing is also tried with the curvatures free: a–z A–Z, g2-jumps EB
   // Garamond 31 → 26, Junicode 32 → 26, Quicksand 13 → 12 (and a lost corner fewer); no other
   // text font changed; whole DejaVu Sans 33.5 → 36.8 s.
-  // The spare nodes removed (fair/spare_nodes), a cubic rounds longer, and fewer nodes sit
-  // where the writeback put them for the grid: a first fairing that removed some and leaves
-  // jumps or kinks is faired again with them kept, kept where that leaves no more faults, and
-  // the fairings after it keep them too; so those start where stop 94's did (a mended fairing
-  // of more nodes replaces none of fewer: against a pruned first, Junicode's e and z kept a
-  // jump). a–z A–Z of 44 text fonts: g2-jumps 29, as at stop 94; with the spare nodes removed
-  // in every fairing 35 (Noto Serif's Y 0 → 1), and with the fairing again kept only where it
-  // has fewer faults 34.
-  if (settings.remove_spare_nodes && (!out.faired || faults.mendable())) {
-    settings.remove_spare_nodes = false;
-    Tries kept_tries;
-    ContourFairing again =
-        first.spare_nodes_removed > 0 ? fair_contour_once(source, settings, kept_tries, memo) : ContourFairing{};
-    if (again.faired) {
-      const OutlineFaults again_faults = count(again);
-      if (!out.faired || !fewer_faults(faults, again_faults)) out = std::move(again), faults = again_faults, first = kept_tries;
-    }
-  }
   bool refair = out.faired && first.made <= most_tries_faired_again;
   const bool freed = settings.free_node_curvatures && (!out.faired || first.freed_nodes > 0);
   settings.free_node_curvatures = false;
@@ -600,6 +582,57 @@ void fair_again_while_faulty(ContourFairing& out, OutlineFaults& faults, const C
     again_settings.chain_share = share;
     fair_again(again_settings, true);
   }
+}
+
+bool same_faults(const OutlineFaults& a, const OutlineFaults& b) {
+  return a.jumps == b.jumps && a.kinks == b.kinks && a.inflections == b.inflections && a.corners_lost == b.corners_lost;
+}
+
+// The fairings again of a contour `out` whose first fairing (`first` its tries, `memo` its
+// runs) left `faults`, with its spare nodes (fair/spare_nodes) kept and removed.
+//
+// The spare nodes removed, a cubic rounds longer, and fewer nodes sit where the writeback put
+// them for the grid: a first fairing that removed some and leaves jumps or kinks is faired
+// again with them kept, kept where that leaves no more faults, and the refairings after it
+// keep them too; so those start where stop 94's did (a mended fairing of more nodes replaces
+// none of fewer: against a pruned first, Junicode's e and z kept a jump). a–z A–Z of 44 text
+// fonts: g2-jumps 29, as at stop 94; with the spare nodes removed in every fairing 35 (Noto
+// Serif's Y 0 → 1), and with the fairing again kept only where it has fewer faults 34.
+//
+// Since stop 107, where jumps or kinks are left so, the refairings run again from the first
+// fairing with the spare nodes removed, and that is kept where it has fewer faults, or the
+// same and fewer nodes; the first fairing itself is kept so too. The grid matches some joins
+// of the longer cubics that it missed with the shorter (EB Garamond's G: a jump, 57 nodes,
+// against none and 45). Not for every contour left with faults: where only inflections are
+// left over the source's, the refairings again cost 5 s of whole DejaVu Sans's 52 and changed
+// no figure; nor with the spare nodes removed throughout, which mends most but loses jumps the
+// kept nodes mend (Accanthis, Linux Biolinum, URW P052).
+void fair_again_while_faulty(ContourFairing& out, OutlineFaults& faults, const Contour& source, FairSettings settings,
+                             Tries first, RunFairings& memo, MendedFaults& count) {
+  if (!settings.remove_spare_nodes || (out.faired && !faults.mendable())) {
+    refair_while_faulty(out, faults, source, settings, first, memo, count);
+    return;
+  }
+  ContourFairing pruned = out;
+  OutlineFaults pruned_faults = faults;
+  const Tries pruned_tries = first;
+  settings.remove_spare_nodes = false;
+  Tries kept_tries;
+  ContourFairing again =
+      first.spare_nodes_removed > 0 ? fair_contour_once(source, settings, kept_tries, memo) : ContourFairing{};
+  if (again.faired) {
+    const OutlineFaults again_faults = count(again);
+    if (!out.faired || !fewer_faults(faults, again_faults)) out = std::move(again), faults = again_faults, first = kept_tries;
+  }
+  refair_while_faulty(out, faults, source, settings, first, memo, count);
+  if (!pruned.faired) return;
+  if (faults.at_smooth_joins() > 0) {
+    settings.remove_spare_nodes = true;
+    refair_while_faulty(pruned, pruned_faults, source, settings, pruned_tries, memo, count);
+  }
+  if (fewer_faults(pruned_faults, faults) ||
+      (same_faults(pruned_faults, faults) && pruned.contour.segments.size() < out.contour.segments.size()))
+    out = std::move(pruned), faults = pruned_faults;
 }
 
 }  // namespace
