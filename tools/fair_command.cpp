@@ -25,7 +25,11 @@ namespace gf {
 
 namespace {
 
-constexpr std::size_t glyphs_in_flight = 256;  // glyphs in memory at a time
+// Glyphs in memory at a time. Glyphs are taken in order, so a slow glyph stops the other
+// threads once they run this many ahead of it: whole DejaVu Sans averages 17 ms a glyph, and
+// its U+2765 takes 9 s, against the 4 s 256 glyphs gave (52.4 s against 57.2–58.6; WenQuanYi
+// Zen Hei's U+4E00–52FF 113 MB against 107).
+constexpr std::size_t glyphs_in_flight = 1024;
 
 }  // namespace
 
