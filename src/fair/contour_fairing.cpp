@@ -584,10 +584,6 @@ void refair_while_faulty(ContourFairing& out, OutlineFaults& faults, const Conto
   }
 }
 
-bool same_faults(const OutlineFaults& a, const OutlineFaults& b) {
-  return a.jumps == b.jumps && a.kinks == b.kinks && a.inflections == b.inflections && a.corners_lost == b.corners_lost;
-}
-
 // The fairings again of a contour `out` whose first fairing (`first` its tries, `memo` its
 // runs) left `faults`, with its spare nodes (fair/spare_nodes) kept and removed.
 //
@@ -631,7 +627,7 @@ void fair_again_while_faulty(ContourFairing& out, OutlineFaults& faults, const C
     refair_while_faulty(pruned, pruned_faults, source, settings, pruned_tries, memo, count);
   }
   if (fewer_faults(pruned_faults, faults) ||
-      (same_faults(pruned_faults, faults) && pruned.contour.segments.size() < out.contour.segments.size()))
+      (pruned_faults == faults && pruned.contour.segments.size() < out.contour.segments.size()))
     out = std::move(pruned), faults = pruned_faults;
 }
 

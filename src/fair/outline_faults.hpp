@@ -28,6 +28,7 @@ struct OutlineFaults {
   /// What a fairing again is for: jumps or kinks at smooth joins, or inflections beyond the
   /// source's.
   bool mendable() const { return at_smooth_joins() > 0 || inflections > 0; }
+  bool operator==(const OutlineFaults&) const = default;
 };
 
 /// The faults of each faired version of one source contour, on an em of `units_per_em`. A
