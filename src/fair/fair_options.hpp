@@ -66,9 +66,9 @@ struct FairSettings {
   /// kept jumps there; halving from eight units leaves no cubic under four).
   double shortest_rounded_span_units = 8.0;
   // rounding_reserve_units, shortest_rounded_span_units, free_node_curvatures,
-  // split_beside_jumps and remove_spare_nodes are read by the budgets, the writeback and
-  // rounding, never by fair_run: a contour's fairings that differ only in them share their
-  // faired runs (fair/plan_fairing's RunFairings).
+  // split_beside_jumps, remove_spare_nodes and turn_inflection_nodes are read by the budgets,
+  // the writeback and rounding, never by fair_run: a contour's fairings that differ only in
+  // them share their faired runs (fair/plan_fairing's RunFairings).
   /// The writeback may give an extremum inside a chain another curvature than the faired
   /// path's where both spans beside it then fit as one cubic each (fair/node_curvatures):
   /// fewer nodes for the same budget. Text only: on handwriting the single cubics' curvature
@@ -88,6 +88,10 @@ struct FairSettings {
   /// with the spare nodes kept, 1.15–1.19× the nodes of the pruned G2 output, under the G3
   /// bar's 1.2×).
   bool remove_spare_nodes = false;
+  /// Spare nodes next to an inflection node removed also where that node's tangent turns a
+  /// little (SpareNodeLimits::turn_inflection_nodes). Set by fair_contour's last fairing again
+  /// only, never by the options: see there.
+  bool turn_inflection_nodes = false;
   /// Text: the kinks where curves meet lines kept as corners, as drawn, instead of the curves
   /// made tangential to the lines (fair_contour's last fairing again of a contour whose runs
   /// faired only on another basis than their own outlines).

@@ -18,6 +18,16 @@ namespace gf {
 struct SpareNodeLimits {
   double budget_units = 1.25;  ///< two-sided, from the source: what the outline may spend of the tolerance
   double units_per_em = 1000.0;
+  /// Where the window of cubics fitted again ends at an inflection node and no fit with it
+  /// as it stands is taken, the node's tangent may turn (up to 4°), the cubics beyond it
+  /// fitted again too, κ = 0 there on both sides.
+  bool turn_inflection_nodes = false;
+};
+
+/// How many spare nodes went, and how many of them only with an inflection node's tangent
+/// turned (0° among the turns: the cubics past it fitted again).
+struct SpareNodeRemoval {
+  int removed = 0, turned = 0;
 };
 
 /// Whether node k of `nodes` is spare: smooth, between two cubics, its tangent on neither axis,
@@ -29,9 +39,9 @@ bool is_spare_node(const std::vector<OutlineNode>& nodes, bool closed, std::size
 /// the outline with κ continuous at every node they touch and the curvature beyond them kept.
 /// Only where the cubics so changed gain no extremum, inflection, fold, overreach or crowded
 /// handle (fair/shape_traits), take on at most a quarter more curvature variation and 0.05/UPM,
-/// and the contour stays within the budget of `sampled_source`. Nodes and tangents stay where they are. Returns how many it
-/// removed.
-int remove_spare_nodes(std::vector<OutlineNode>& nodes, bool closed, const SampledContour& sampled_source,
-                       const SpareNodeLimits& limits);
+/// and the contour stays within the budget of `sampled_source`. Nodes stay where they are, and
+/// so do tangents, but an inflection node's where `limits` let it turn.
+SpareNodeRemoval remove_spare_nodes(std::vector<OutlineNode>& nodes, bool closed, const SampledContour& sampled_source,
+                                    const SpareNodeLimits& limits);
 
 }  // namespace gf

@@ -5,8 +5,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
+#include <utility>
 #include <vector>
 
 #include "geom/curvature.hpp"
@@ -52,7 +55,7 @@ TEST(SpareNodes, ACircleHalvedIsDrawnAgainOnItsExtrema) {
   std::vector<OutlineNode> nodes = nodes_of(circle(2));
   for (std::size_t k = 0; k < 8; ++k) EXPECT_EQ(is_spare_node(nodes, true, k, upm), k % 2 == 1) << k;
   const SampledContour source(to_contour(nodes, true));
-  EXPECT_EQ(remove_spare_nodes(nodes, true, source, {1.25, upm}), 4);
+  EXPECT_EQ(remove_spare_nodes(nodes, true, source, {1.25, upm}).removed, 4);
   ASSERT_EQ(nodes.size(), 4u);
   const std::vector<Cubic> whole = circle(1);
   for (std::size_t k = 0; k < 4; ++k) {
@@ -75,7 +78,7 @@ TEST(SpareNodes, ACircleOfEighthArcsKeepsItsNodes) {
   }
   const std::vector<OutlineNode> before = nodes;
   const SampledContour source(to_contour(nodes, true));
-  EXPECT_EQ(remove_spare_nodes(nodes, true, source, {1.25, upm}), 0);
+  EXPECT_EQ(remove_spare_nodes(nodes, true, source, {1.25, upm}).removed, 0);
   EXPECT_EQ(nodes, before);
 }
 
@@ -90,7 +93,7 @@ TEST(SpareNodes, ATightBudgetKeepsEveryNode) {
     q.in_handle = *q.in_handle * 1.0001, q.out_handle = *q.out_handle * 1.0001;
   }
   const SampledContour source(to_contour(shifted, true));  // 0.03 units out all round
-  EXPECT_EQ(remove_spare_nodes(nodes, true, source, {0.02, upm}), 0);
+  EXPECT_EQ(remove_spare_nodes(nodes, true, source, {0.02, upm}).removed, 0);
   EXPECT_EQ(nodes, before);
 }
 
@@ -118,7 +121,7 @@ TEST(SpareNodes, ABowlBetweenCornersKeepsItsCornersAndExtremum) {
   nodes.push_back(test::node(bowl.back().p[3], bowl.back().p[2], std::nullopt, false));
   ASSERT_EQ(nodes.size(), 5u);
   const SampledContour source(to_contour(nodes, true));
-  EXPECT_EQ(remove_spare_nodes(nodes, true, source, {1.25, upm}), 2);
+  EXPECT_EQ(remove_spare_nodes(nodes, true, source, {1.25, upm}).removed, 2);
   ASSERT_EQ(nodes.size(), 3u);
   EXPECT_FALSE(nodes[0].smooth);
   EXPECT_NEAR(distance(nodes[1].point, Vec2{radius, 0.0}), 0.0, 1e-9);
@@ -128,6 +131,66 @@ TEST(SpareNodes, ABowlBetweenCornersKeepsItsCornersAndExtremum) {
   for (std::size_t i = 0; i < 4; ++i) EXPECT_NEAR(distance(outline_cubic(nodes, 0).p[i], whole[0].p[i]), 0.0, 1e-6);
   // The same curve: only the samples' chords part them.
   EXPECT_LE(distance_between(SampledContour(to_contour(nodes, true)), source), 0.01);
+}
+
+// Junicode's 6 (OFL; UPM 1000) as its first fairing drew it before rounding: 11 nodes, a
+// corner at each end of its stroke's cut. Against its own outline, on the 0.75 units a halved
+// budget leaves, one spare node goes as the tangents stand, (92.8, 407.9) on the bowl's back.
+// A second, (238.5, 534.9) on the stroke's way up, goes only with the tangent turned at the
+// inflection node its window ends at, (376.1, 646.6): the cubics past it fitted again, κ = 0
+// kept there on both sides.
+TEST(SpareNodes, ATurnAtAnInflectionNodeFreesTheSpareNodeBesideIt) {
+  const std::vector<OutlineNode> six{
+      test::node({231.78969257502735, -8.0588124378379664}, Vec2{102.13527925222647, -8.0588124376890811}, Vec2{344.45389093017843, -8.0588124379673403}),
+      test::node({422.0081905820893, 190.59656415205313}, Vec2{422.00819058198073, 81.597549386903651}, Vec2{422.00819058218946, 291.10561068959248}),
+      test::node({270.97955378702665, 373.9526901245045}, Vec2{356.06483514858911, 373.95269012474347}, Vec2{232.6552619249311, 373.9526901243969}),
+      test::node({137, 307}, Vec2{191.95608897894286, 357.14466834115944}, Vec2{148.40615278796443, 376.86893729415283}, false),
+      test::node({238.46099377133424, 534.90379861228905}, Vec2{173.19034216927969, 458.75470507655064}, Vec2{297.51804746427086, 603.80369458738903}),
+      test::node({376.08741991057985, 646.63177962663701}, Vec2{367.28607089638626, 641.83417322730406}, Vec2{380.2092640056772, 648.87859265220857}),
+      test::node({383.64529134959133, 655.4002793253818}, Vec2{383.64529134951124, 650.75156766393422}, Vec2{383.64529134968484, 660.82924929229853}),
+      test::node({370.11926954351861, 673.49314006149643}, Vec2{378.95903253687487, 673.49314006120289}, Vec2{369.17715829768412, 673.4931400615277}),
+      test::node({367, 673}, Vec2{368.13302194208615, 673.34929654574307}, Vec2{236.21958705333324, 614.6537328667946}, false),
+      test::node({92.794346517936717, 407.8523596443751}, Vec2{139.2603043380953, 500.78427528481996}, Vec2{77.600797019582188, 377.46526064762429}),
+      test::node({48.9592701608927, 226.56968958348591}, Vec2{48.959270160865856, 311.62355827235154}, Vec2{48.959270160929279, 110.67758243452437}),
+  };
+  const SampledContour source(to_contour(six, true));
+  std::vector<OutlineNode> kept = six, turned = six;
+  const SpareNodeRemoval plain = remove_spare_nodes(kept, true, source, {0.75, upm});
+  EXPECT_EQ(plain.removed, 1);
+  EXPECT_EQ(plain.turned, 0);
+  const SpareNodeRemoval turning = remove_spare_nodes(turned, true, source, {0.75, upm, true});
+  EXPECT_EQ(turning.removed, 2);
+  EXPECT_EQ(turning.turned, 1);
+  ASSERT_EQ(turned.size(), 9u);
+  EXPECT_LE(distance_between(SampledContour(to_contour(turned, true)), source), 0.75);
+  int corners = 0, flat = 0;
+  for (std::size_t k = 0; k < turned.size(); ++k) {
+    const OutlineNode& q = turned[k];
+    if (!q.smooth) {
+      ++corners;
+      continue;
+    }
+    // G1: the handles on one line through the node; G2: κ the same either side.
+    const Vec2 in = q.point - *q.in_handle, out = *q.out_handle - q.point;
+    EXPECT_NEAR(cross(in, out) / (norm(in) * norm(out)), 0.0, 1e-9) << k;
+    const double before = end_kappa(outline_cubic(turned, (k + turned.size() - 1) % turned.size()));
+    const double after = start_kappa(outline_cubic(turned, k));
+    EXPECT_NEAR(before, after, 1e-9 * std::max(std::abs(before), 1.0 / upm)) << k;
+    if (std::abs(after) * upm < 0.05) ++flat;
+  }
+  EXPECT_EQ(corners, 2);
+  EXPECT_EQ(flat, 1);  // the inflection node, turned and still flat
+  const auto direction = [](const OutlineNode& q) { return angle_of(*q.out_handle - q.point); };
+  ASSERT_EQ(turned[4].point, six[5].point);
+  const double turn = std::abs(direction(turned[4]) - direction(six[5])) * 180.0 / std::numbers::pi;
+  EXPECT_GT(turn, 0.1);
+  EXPECT_LE(turn, 4.0 + 1e-9);  // the most it may turn
+  // Every other node's tangent as it was (its place in `six`: 4 and 9 went).
+  const std::array<std::pair<std::size_t, std::size_t>, 8> same{{{0, 0}, {1, 1}, {2, 2}, {3, 3}, {5, 6}, {6, 7}, {7, 8}, {8, 10}}};
+  for (const auto& [k, was] : same) {
+    ASSERT_EQ(turned[k].point, six[was].point) << k;
+    EXPECT_NEAR(direction(turned[k]), direction(six[was]), 1e-9) << k;
+  }
 }
 
 }  // namespace
