@@ -121,7 +121,7 @@ struct Tries {
   int freed_nodes = 0;
   /// Spare nodes the tries' fairings removed (fair/spare_nodes).
   int spare_nodes_removed = 0;
-  /// Of those, how many with an inflection node's tangent turned.
+  /// Of those, how many only with an inflection node's tangent turned (SpareNodeRemoval::turned).
   int spare_nodes_turned = 0;
 };
 
