@@ -102,8 +102,9 @@ struct Refit {
 
 // Window w's handles fitted again to its outline, κ `start` and `end` at its ends where given
 // and continuous inside, the pair across `spare` (where given) drawn as one cubic, and the
-// tangent turned where `turn` says. A merged or turned cubic's handles start from one cubic's
-// least-squares fit to its points, the others' from where they are.
+// tangent turned where `turn` says. The merged cubic's handles, and every cubic's in a window
+// with a turn, start from one cubic's least-squares fit to its points; the others' from where
+// they are.
 std::optional<Refit> refit(const std::vector<OutlineNode>& nodes, const Window& w, std::optional<std::size_t> spare,
                            std::optional<double> start, std::optional<double> end, std::optional<TangentTurn> turn) {
   const std::size_t n = nodes.size();
