@@ -89,8 +89,9 @@ struct FairSettings {
   /// bar's 1.2×).
   bool remove_spare_nodes = false;
   /// Spare nodes next to an inflection node removed also where that node's tangent turns a
-  /// little (SpareNodeLimits::turn_inflection_nodes). Set by fair_contour's last fairing again
-  /// only, never by the options: see there.
+  /// little (SpareNodeLimits::turn_inflection_nodes); a try that turns none is given up before
+  /// its rounding. Set only by fair_contour's fairing after the first, never by the options:
+  /// see there.
   bool turn_inflection_nodes = false;
   /// Text: the kinks where curves meet lines kept as corners, as drawn, instead of the curves
   /// made tangential to the lines (fair_contour's last fairing again of a contour whose runs
