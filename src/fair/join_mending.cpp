@@ -62,8 +62,10 @@ class StepCounts {
     }
     bool operator!=(const Iterator& o) const { return m != o.m; }
   };
-  Iterator begin() const { return {last_ >= 1 ? 1 : last_ + 1, first_long_, last_ + 1}; }
+  Iterator begin() const { return {first(), first_long_, last_ + 1}; }
   Iterator end() const { return {last_ + 1, first_long_, last_ + 1}; }
+  /// The fewest steps there are (past last() where there are none).
+  int first() const { return last_ >= 1 ? 1 : last_ + 1; }
   int last() const { return last_; }
 
  private:
@@ -516,6 +518,7 @@ std::optional<Contour> mend_curve_from_line(const Contour& c, const std::vector<
     leaving_e.emplace_back(start_curvature(e, handle, next.p[2]), handle);
   }
   std::sort(leaving_e.begin(), leaving_e.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  if (leaving_e.empty()) return std::nullopt;
   Cheapest found(limits.most_judged);
   for (const auto& [m, tangent] : grid_points_along(old)) {
     if (m == e) continue;
@@ -529,14 +532,29 @@ std::optional<Contour> mend_curve_from_line(const Contour& c, const std::vector<
       const int s0_last = std::min(*join_steps + limits.line_slide_steps, s2 - 2);
       const double k1 = end_curvature_of(near_line - *u, near_line, m);  // κ at M per step of the first's P1
       if (s0_last < 1 || k1 == 0.0) continue;
-      for (const int b : StepCounts(distance(old[1].p[0], old[1].p[1]), norm(d), chord))
-        for (const int a : StepCounts(distance(old[1].p[2], e), norm(*de), chord)) {
-          const Vec2 near_m = m + d * b, near_e = e - *de * a;
+      const StepCounts into_e(distance(old[1].p[2], e), norm(*de), chord);
+      if (into_e.first() > into_e.last()) continue;
+      for (const int b : StepCounts(distance(old[1].p[0], old[1].p[1]), norm(d), chord)) {
+        const Vec2 near_m = m + d * b;
+        // κ arriving at E runs as 1/a² over E's handle's whole steps a ((2/3)·(dₑ × (N − E)) /
+        // (a²|dₑ|³), N the handle at M), so between its values at the fewest and the most: where
+        // no curvature leaving E lies within a match window of those, none of the a matches.
+        const double fewest = end_curvature_of(near_m, e - *de * into_e.first(), e);
+        const double most = end_curvature_of(near_m, e - *de * into_e.last(), e);
+        const double margin = std::max(match_window(fewest, upm), match_window(most, upm)) +
+                              1e-9 * std::max(std::abs(fewest), std::abs(most));
+        if (std::max(fewest, most) + margin < leaving_e.front().first ||
+            std::min(fewest, most) - margin > leaving_e.back().first)
+          continue;
+        for (const int a : into_e) {
+          const Vec2 near_e = e - *de * a;
           const double arriving = end_curvature_of(near_m, near_e, e), window = match_window(arriving, upm);
-          const double km = start_curvature(m, near_m, near_e);
-          const int centre = static_cast<int>(std::round(km / k1));
           auto it = std::lower_bound(leaving_e.begin(), leaving_e.end(), arriving - window,
                                      [](const auto& x, double k) { return x.first < k; });
+          // Most steps a of a hopeless join meet no curvature leaving E: κ at M only where one does.
+          if (it == leaving_e.end() || it->first > arriving + window) continue;
+          const double km = start_curvature(m, near_m, near_e);
+          const int centre = static_cast<int>(std::round(km / k1));
           for (; it != leaving_e.end() && it->first <= arriving + window; ++it) {
             const auto& [k_e, handle_e] = *it;
             if (jumps(arriving, k_e, upm)) continue;
@@ -556,6 +574,7 @@ std::optional<Contour> mend_curve_from_line(const Contour& c, const std::vector<
             }
           }
         }
+      }
     }
   }
   // The jump the old curve left at the line counts as variation it had: the new one has none there.
