@@ -196,17 +196,22 @@ std::optional<std::vector<OutlineNode>> with_refits(const std::vector<OutlineNod
   return out;
 }
 
+// An outline with a spare node removed, and whether an inflection node's tangent turned for it.
+struct NodeRemoved {
+  std::vector<OutlineNode> nodes;
+  bool turned = false;
+};
+
 // The outline with spare node k removed, where the fit and the limits allow; where `limits`
-// let it, with the tangent turned at an inflection node the window ends at (`turned` says so).
-std::optional<std::vector<OutlineNode>> without_node(const std::vector<OutlineNode>& nodes, bool closed, std::size_t k,
-                                                     const SampledContour& sampled_source, const SpareNodeLimits& limits,
-                                                     bool& turned) {
-  turned = false;
+// let it, with the tangent turned at an inflection node the window ends at.
+std::optional<NodeRemoved> without_node(const std::vector<OutlineNode>& nodes, bool closed, std::size_t k,
+                                        const SampledContour& sampled_source, const SpareNodeLimits& limits) {
   const OutlineJoins joins{nodes, closed};
   const Window w = window_at(joins, k, limits.units_per_em);
   const std::optional<double> first = bound_before(joins, w.starts.front()), last = bound_after(joins, w.last_node);
   if (const std::optional<Refit> plain = refit(nodes, w, k, first, last, std::nullopt))
-    if (auto out = with_refits(nodes, closed, k, std::span(&*plain, 1), w.merged, sampled_source, limits)) return out;
+    if (auto out = with_refits(nodes, closed, k, std::span(&*plain, 1), w.merged, sampled_source, limits))
+      return NodeRemoved{std::move(*out), false};
   if (!limits.turn_inflection_nodes) return std::nullopt;
   // Turned, the inflection node keeps κ = 0 on both sides exactly, and the cubics past it are
   // fitted again to its new tangent.
@@ -223,10 +228,8 @@ std::optional<std::vector<OutlineNode>> without_node(const std::vector<OutlineNo
       std::optional<Refit> far = near ? refit(nodes, *b, std::nullopt, b_first, b_last, turn) : std::nullopt;
       if (!far) continue;
       const std::array<Refit, 2> refits{std::move(*near), std::move(*far)};
-      if (auto out = with_refits(nodes, closed, k, refits, w.merged, sampled_source, limits)) {
-        turned = true;
-        return out;
-      }
+      if (auto out = with_refits(nodes, closed, k, refits, w.merged, sampled_source, limits))
+        return NodeRemoved{std::move(*out), true};
     }
   }
   return std::nullopt;
@@ -240,10 +243,9 @@ SpareNodeRemoval remove_spare_nodes(std::vector<OutlineNode>& nodes, bool closed
   for (bool again = true; again;) {
     again = false;
     for (std::size_t k = 0; k < nodes.size();) {
-      bool turned = false;
       if (is_spare_node(nodes, closed, k, limits.units_per_em))
-        if (std::optional<std::vector<OutlineNode>> fewer = without_node(nodes, closed, k, sampled_source, limits, turned)) {
-          nodes = std::move(*fewer), ++removed.removed, removed.turned += turned ? 1 : 0, again = true;
+        if (std::optional<NodeRemoved> fewer = without_node(nodes, closed, k, sampled_source, limits)) {
+          nodes = std::move(fewer->nodes), ++removed.removed, removed.turned += fewer->turned ? 1 : 0, again = true;
           continue;
         }
       ++k;
