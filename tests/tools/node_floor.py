@@ -14,12 +14,14 @@ places (merged within one unit) of every kind but the inflections:
              break there);
   line end   both ends of every line.
 
-Inflections are left out (the faired outline has fewer than the source), so the count is a
-floor: a faired glyph that keeps the source's extrema, corners and lines has at least this
-many nodes. A scanned font's wobbles are extrema too, which fairing rightly drops; given
+Inflections are left out of the first count (the faired outline has fewer than the source), so
+it is a floor: a faired glyph that keeps the source's extrema, corners and lines has at least
+this many nodes. A scanned font's wobbles are extrema too, which fairing rightly drops; given
 --faired, the same count on the faired UFO says what its own extrema, corners and lines
-require. Prints a line per glyph and the total ratios to the source's nodes, the measure the
-bar uses.
+require. A second count adds the outline's own inflections (inflection_points: where κ changes
+sign along a smooth stretch), merged the same way: on the faired UFO, all the rule requires of
+that outline as it is. Prints a line per glyph and the total ratios to the source's nodes, the
+measure the bar uses.
 
 With G2 line joins (the text bars count a curvature jump where a curve meets a line) one more
 kind of place appears, the line quarter: a curve leaving a line tangentially and turning to its
@@ -53,9 +55,42 @@ def axis_parallel_at_node(seg, at_start):
     return (dx == 0) != (dy == 0)
 
 
-def required_places(contours):
-    """How many distinct places of the contours (closed, as glyph_contours gives them) need a node."""
-    places = []
+def inflection_points(contours):
+    """Where κ changes sign along the contours' smooth stretches between corners and lines (as
+    the bars count inflections): between two κ samples of opposite sign (64 a segment, |κ| under
+    1e-6 left out), their midpoint; a sign change across a smooth join, its node to within a
+    sample's span."""
+    points = []
+    for segs in contours:
+        samples = []  # (point, κ) along the contour, None at each corner
+        for i, seg in enumerate(segs):
+            angle = join_angle(segs[i - 1], seg)
+            if angle is None or angle > CORNER_DEG:
+                samples.append(None)
+            if len(seg) == 2:
+                samples.append(None)  # a line's ends have their nodes already
+                continue
+            for j in range(65):
+                t = j / 64
+                if norm(point(hodograph(seg), t)) > 0:
+                    samples.append((point(seg, t), signed_curvature(seg, t)))
+        if samples and samples[0] is not None:
+            samples += samples[:1]  # a closed smooth contour: round its seam too
+        last = None
+        for sample in samples:
+            if sample is None:
+                last = None
+            elif abs(sample[1]) >= 1e-6:
+                if last is not None and (last[1] > 0) != (sample[1] > 0):
+                    points.append(((last[0][0] + sample[0][0]) / 2, (last[0][1] + sample[0][1]) / 2))
+                last = sample
+    return points
+
+
+def required_places(contours, inflections=False):
+    """How many distinct places of the contours (closed, as glyph_contours gives them) need a node;
+    with `inflections`, their inflection points too (the writeback rule puts a node at each)."""
+    places = list(inflection_points(contours)) if inflections else []
     for segs in contours:
         for i, seg in enumerate(segs):
             before = segs[i - 1]
@@ -168,7 +203,8 @@ def main():
     glyphset = font.getGlyphSet()
     faired = UFOReader(args.faired).getGlyphSet() if args.faired else None
     chars = args.glyphs.split(",") if args.glyphs else [chr(c) for c in list(range(97, 123)) + list(range(65, 91))]
-    total_nodes = total_floor = total_quarters = total_faired = total_faired_quarters = 0
+    totals = {"nodes": 0, "floor": 0, "quarters": 0, "inflected": 0,
+              "faired": 0, "faired quarters": 0, "faired inflected": 0}
     for ch in chars:
         name = cmap.get(ord(ch))
         if name is None or (faired is not None and name not in faired):
@@ -176,32 +212,41 @@ def main():
         contours = glyph_contours(glyphset, name, True)
         nodes = sum(len(c) for c in contours)
         floor, quarters = required_places(contours), line_quarters(contours)
-        total_nodes += nodes
-        total_floor += floor
-        total_quarters += quarters
-        line = f"{ch:2s} nodes {nodes:3d}  floor {floor:3d}  {floor / max(nodes, 1):.2f}x  line quarters {quarters:2d}"
+        inflected = required_places(contours, inflections=True)
+        totals["nodes"] += nodes
+        totals["floor"] += floor
+        totals["quarters"] += quarters
+        totals["inflected"] += inflected
+        line = (f"{ch:2s} nodes {nodes:3d}  floor {floor:3d}  {floor / max(nodes, 1):.2f}x  line quarters {quarters:2d}"
+                f"  with inflections {inflected:3d}")
         if faired is not None:
             own_contours = glyph_contours(faired, name, True)
             own, own_quarters = required_places(own_contours), line_quarters(own_contours)
-            total_faired += own
-            total_faired_quarters += own_quarters
-            line += f"  faired floor {own:3d}  {own / max(nodes, 1):.2f}x  line quarters {own_quarters:2d}"
+            own_inflected = required_places(own_contours, inflections=True)
+            totals["faired"] += own
+            totals["faired quarters"] += own_quarters
+            totals["faired inflected"] += own_inflected
+            line += (f"  faired floor {own:3d}  {own / max(nodes, 1):.2f}x  line quarters {own_quarters:2d}"
+                     f"  with inflections {own_inflected:3d}")
         print(line)
+    total_nodes = max(totals["nodes"], 1)
 
     def verdict(ratio):
         return f"{ratio:.3f}x ({'within' if ratio <= 0.7 else 'over'} the handwriting bar of 0.7x)"
 
-    def with_quarters(places, quarters):
-        ratio = (places + quarters) / max(total_nodes, 1)
-        return (f"with G2 line joins {places + quarters} ({quarters} line quarters), {ratio:.3f}x "
-                f"({'within' if ratio <= 1.3 else 'over'} the text bar of 1.3x)")
+    def text_bar(places):
+        return f"{places / total_nodes:.3f}x ({'within' if places / total_nodes <= 1.3 else 'over'} the text bar of 1.3x)"
 
-    print(f"total: the source requires {total_floor} of its {total_nodes} nodes, "
-          f"{verdict(total_floor / max(total_nodes, 1))}; {with_quarters(total_floor, total_quarters)}")
+    def with_quarters(places, quarters, inflected):
+        return (f"with G2 line joins {places + quarters} ({quarters} line quarters), {text_bar(places + quarters)}; "
+                f"with the inflections' nodes too {inflected + quarters}, {text_bar(inflected + quarters)}")
+
+    print(f"total: the source requires {totals['floor']} of its {totals['nodes']} nodes, "
+          f"{verdict(totals['floor'] / total_nodes)}; "
+          f"{with_quarters(totals['floor'], totals['quarters'], totals['inflected'])}")
     if faired is not None:
-        print(f"total: the faired outline requires {total_faired}, {verdict(total_faired / max(total_nodes, 1))}; "
-              f"{with_quarters(total_faired, total_faired_quarters)}")
-
+        print(f"total: the faired outline requires {totals['faired']}, {verdict(totals['faired'] / total_nodes)}; "
+              f"{with_quarters(totals['faired'], totals['faired quarters'], totals['faired inflected'])}")
 
 if __name__ == "__main__":
     main()

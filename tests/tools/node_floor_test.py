@@ -1,7 +1,9 @@
 #!/usr/bin/python3
 """node_floor.py against glyphs whose places are known by construction (DejaVu Sans subset):
 o and O, two closed bowls of four extrema each: 8; l and I, rectangles: 4 corners; D, a stem
-with two corners and two line-to-bowl joins and one extremum, outside and inside: 10. And its
+with two corners and two line-to-bowl joins and one extremum, outside and inside: 10; none of
+them has an inflection. An S-shaped cubic inflects once, at its middle by symmetry, and so do its
+halves split there (de Casteljau), at the node between them. And its
 line quarters against the closed form: a cubic leaving a line with κ = 0 for an extremum has
 its second handle where the two tangents cross, so it bends there by (2/3)(d0 − a)/d3²,
 never past one_cubic_bound; Comic Neue's n's round stroke end, whose quarters bend more
@@ -13,7 +15,9 @@ import sys
 from fontTools.ttLib import TTFont
 
 from fairing_bars import glyph_contours
-from node_floor import curvature, line_quarters, one_cubic_bound, required_places
+import math
+
+from node_floor import curvature, inflection_points, line_quarters, one_cubic_bound, required_places
 
 font = TTFont(sys.argv[1])
 cmap, glyphset = font.getBestCmap(), font.getGlyphSet()
@@ -23,6 +27,18 @@ for ch, want in expected.items():
     got = required_places(glyph_contours(glyphset, cmap[ord(ch)], True))
     print(f"{ch}: {got} places (expected {want})")
     bad += got != want
+    inflected = required_places(glyph_contours(glyphset, cmap[ord(ch)], True), inflections=True)
+    print(f"{ch}: {inflected} places with inflections (expected {want})")
+    bad += inflected != want
+
+# An S from (0, 0) to (100, 0), symmetric about (50, 0), closed by a line; then its halves.
+s_curve = ((0, 0), (50, 100), (50, -100), (100, 0))
+halves = [((0, 0), (25, 50), (37.5, 25), (50, 0)), ((50, 0), (62.5, -25), (75, -50), (100, 0))]
+closing = ((100, 0), (0, 0))
+for name, contour in (("S cubic", [s_curve, closing]), ("S split at its inflection", halves + [closing])):
+    got = inflection_points([contour])
+    print(f"{name}: inflections at {got} (expected one at (50, 0))")
+    bad += len(got) != 1 or math.dist(got[0], (50, 0)) > 0.5
 
 # The closed form: from (0, 100) up a line, to (100, 200) along the level; V = (0, 200).
 bound = one_cubic_bound((0, 100), (0, 1), (100, 200), (1, 0))
