@@ -75,7 +75,10 @@ def inflection_points(contours):
                 if norm(point(hodograph(seg), t)) > 0:
                     samples.append((point(seg, t), signed_curvature(seg, t)))
         if samples and samples[0] is not None:
-            samples += samples[:1]  # a closed smooth contour: round its seam too
+            # The stretch that runs through the seam: on to the first sample with a sign (a
+            # faired node at an inflection has κ = 0 on both sides).
+            signed = next((k for k, x in enumerate(samples) if x is None or abs(x[1]) >= 1e-6), len(samples) - 1)
+            samples += samples[:signed + 1]
         last = None
         for sample in samples:
             if sample is None:
@@ -90,7 +93,7 @@ def inflection_points(contours):
 def required_places(contours, inflections=False):
     """How many distinct places of the contours (closed, as glyph_contours gives them) need a node;
     with `inflections`, their inflection points too (the writeback rule puts a node at each)."""
-    places = list(inflection_points(contours)) if inflections else []
+    places = inflection_points(contours) if inflections else []
     for segs in contours:
         for i, seg in enumerate(segs):
             before = segs[i - 1]
@@ -247,6 +250,7 @@ def main():
     if faired is not None:
         print(f"total: the faired outline requires {totals['faired']}, {verdict(totals['faired'] / total_nodes)}; "
               f"{with_quarters(totals['faired'], totals['faired quarters'], totals['faired inflected'])}")
+
 
 if __name__ == "__main__":
     main()

@@ -10,13 +10,12 @@ never past one_cubic_bound; Comic Neue's n's round stroke end, whose quarters be
 sharply, counts two, a flat turn from a line none.
 
 usage: node_floor_test.py DEJAVU_SUBSET.ttf"""
+import math
 import sys
 
 from fontTools.ttLib import TTFont
 
 from fairing_bars import glyph_contours
-import math
-
 from node_floor import curvature, inflection_points, line_quarters, one_cubic_bound, required_places
 
 font = TTFont(sys.argv[1])
@@ -35,7 +34,10 @@ for ch, want in expected.items():
 s_curve = ((0, 0), (50, 100), (50, -100), (100, 0))
 halves = [((0, 0), (25, 50), (37.5, 25), (50, 0)), ((50, 0), (62.5, -25), (75, -50), (100, 0))]
 closing = ((100, 0), (0, 0))
-for name, contour in (("S cubic", [s_curve, closing]), ("S split at its inflection", halves + [closing])):
+# Started at the inflection node, the stretch runs through the seam: one inflection still.
+seamed = [halves[1], closing, halves[0]]
+for name, contour in (("S cubic", [s_curve, closing]), ("S split at its inflection", halves + [closing]),
+                      ("S split, started at its inflection", seamed)):
     got = inflection_points([contour])
     print(f"{name}: inflections at {got} (expected one at (50, 0))")
     bad += len(got) != 1 or math.dist(got[0], (50, 0)) > 0.5
