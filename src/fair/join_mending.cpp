@@ -62,10 +62,10 @@ class StepCounts {
     }
     bool operator!=(const Iterator& o) const { return m != o.m; }
   };
-  Iterator begin() const { return {first(), first_long_, last_ + 1}; }
+  // One step first, where there is any (last_ ≥ 1); else begin() == end().
+  Iterator begin() const { return {1, first_long_, last_ + 1}; }
   Iterator end() const { return {last_ + 1, first_long_, last_ + 1}; }
-  /// The fewest steps there are (past last() where there are none).
-  int first() const { return last_ >= 1 ? 1 : last_ + 1; }
+  bool empty() const { return last_ < 1; }
   int last() const { return last_; }
 
  private:
@@ -533,13 +533,13 @@ std::optional<Contour> mend_curve_from_line(const Contour& c, const std::vector<
       const double k1 = end_curvature_of(near_line - *u, near_line, m);  // κ at M per step of the first's P1
       if (s0_last < 1 || k1 == 0.0) continue;
       const StepCounts into_e(distance(old[1].p[2], e), norm(*de), chord);
-      if (into_e.first() > into_e.last()) continue;
+      if (into_e.empty()) continue;
       for (const int b : StepCounts(distance(old[1].p[0], old[1].p[1]), norm(d), chord)) {
         const Vec2 near_m = m + d * b;
         // κ arriving at E runs as 1/a² over E's handle's whole steps a ((2/3)·(dₑ × (N − E)) /
         // (a²|dₑ|³), N the handle at M), so between its values at the fewest and the most: where
         // no curvature leaving E lies within a match window of those, none of the a matches.
-        const double fewest = end_curvature_of(near_m, e - *de * into_e.first(), e);
+        const double fewest = end_curvature_of(near_m, e - *de, e);  // one step, the fewest
         const double most = end_curvature_of(near_m, e - *de * into_e.last(), e);
         const double margin = std::max(match_window(fewest, upm), match_window(most, upm)) +
                               1e-9 * std::max(std::abs(fewest), std::abs(most));
