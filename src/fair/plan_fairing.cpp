@@ -131,6 +131,7 @@ namespace {
 // The settings as fair_run reads them: what only the writeback and rounding read set aside.
 FairSettings runs_settings(FairSettings s) {
   s.free_node_curvatures = false;
+  s.fit_spare_runs = true;
   s.rounding_reserve_units = 0.0;
   s.shortest_rounded_span_units = 0.0;
   return s;

@@ -22,12 +22,17 @@ struct SpareNodeLimits {
   /// as it stands is taken, the node's tangent may turn (up to 4°), the cubics beyond it
   /// fitted again too, κ = 0 there on both sides.
   bool turn_inflection_nodes = false;
+  /// Each run of cubics between inflection nodes, corners and lines fitted again whole first,
+  /// to the source, without its spare nodes (all, else each alone), the nodes inside it
+  /// sliding along their tangents.
+  bool fit_runs = true;
 };
 
 /// How many spare nodes went, and how many of them only with an inflection node's tangent
 /// turned (0° among the turns: the cubics past it fitted again).
 struct SpareNodeRemoval {
   int removed = 0, turned = 0;
+  int in_runs = 0;  ///< of those removed, how many with their run fitted again whole
 };
 
 /// Whether node k of `nodes` is spare: smooth, between two cubics, its tangent on neither axis,

@@ -33,18 +33,39 @@ struct CubicFrame {
   }
 };
 
+/// What a fit may move besides the handle lengths.
+struct G2FitFreedom {
+  /// Per node (node i starts frame i; an open chain's last node ends the last frame): whether
+  /// it may slide along its tangent, by at most `slide_reach` units. A horizontal or vertical
+  /// extremum so stays one. The points at a sliding node (its cubics' first or last) are not
+  /// fitted: the node goes where the others put it.
+  std::vector<bool> slides;
+  double slide_reach = 0.0;
+  /// Whether the last frame ends where the first starts, κ continuous there too (`start` and
+  /// `end` then bind nothing).
+  bool closed = false;
+  /// Where above 0, each round moves no unknown by more than this share of the mean chord,
+  /// over up to 200 rounds: with its nodes sliding a fit has far minima, and a full step can
+  /// land in one (EB Garamond's inner O: quarters with one handle a tenth of the other, 4 units
+  /// from the source, against 0.45 so).
+  double step_share = 0.0;
+};
+
 /// The frame of a cubic whose handles do not lie on its ends; none where one does.
 std::optional<CubicFrame> frame_of(const Cubic& c);
 
 /// The cubics on `frames` (a chain: each frame ends where the next starts) nearest
 /// `points[i]` (points cubic i should pass, in order, its ends included), with κ continuous
 /// at every inner join to 1e-9 of the larger side (or of 1/the chain's chord sum), and meeting
-/// `start`/`end` at the chain's ends where given. From the handle lengths `initial` (a, b per
-/// frame). None where a handle would leave (0.001 chord, 1.5 chord] or the curvature
-/// equations are not met after 40 rounds and a few least-norm Newton steps onto them.
+/// `start`/`end` at the chain's ends where given; its nodes slid as `freedom` lets them (a slide
+/// enters each point's offset linearly, and the curvature equations as a handle length does).
+/// From the handle lengths `initial` (a, b per frame). None where a handle would leave
+/// (0.001 chord, 1.5 chord] or a slide its reach, or the curvature equations are not met after
+/// the rounds and a few least-norm Newton steps onto them.
 std::optional<std::vector<Cubic>> fit_g2_handles(std::span<const CubicFrame> frames,
                                                  std::span<const std::vector<Vec2>> points,
                                                  std::span<const std::pair<double, double>> initial,
-                                                 std::optional<double> start, std::optional<double> end);
+                                                 std::optional<double> start, std::optional<double> end,
+                                                 const G2FitFreedom& freedom = {});
 
 }  // namespace gf

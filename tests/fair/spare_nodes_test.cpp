@@ -65,6 +65,36 @@ TEST(SpareNodes, ACircleHalvedIsDrawnAgainOnItsExtrema) {
   }
 }
 
+TEST(SpareNodes, ExtremaOffTheSourceSlideBackAsTheirQuartersBecomeOne) {
+  // The halved circle with each axis node (and its handles) 3 units along its tangent: no
+  // cubic through those nodes comes within the budget of the circle, so no spare node goes in
+  // its window. Fitted again whole to the source, the extrema sliding, the four cubics come
+  // back, their nodes on the circle's axes.
+  std::vector<OutlineNode> nodes = nodes_of(circle(2));
+  for (std::size_t k = 0; k < 8; k += 2) {
+    const Vec2 along = (*nodes[k].out_handle - nodes[k].point) / norm(*nodes[k].out_handle - nodes[k].point) * 3.0;
+    nodes[k].point = nodes[k].point + along;
+    nodes[k].in_handle = *nodes[k].in_handle + along, nodes[k].out_handle = *nodes[k].out_handle + along;
+  }
+  const SampledContour source(to_contour(nodes_of(circle(1)), true));
+  std::vector<OutlineNode> windows = nodes;
+  EXPECT_EQ(remove_spare_nodes(windows, true, source, {1.25, upm, false, false}).removed, 0);
+  const SpareNodeRemoval removal = remove_spare_nodes(nodes, true, source, {1.25, upm});
+  EXPECT_EQ(removal.removed, 4);
+  EXPECT_EQ(removal.in_runs, 4);
+  ASSERT_EQ(nodes.size(), 4u);
+  for (std::size_t k = 0; k < 4; ++k) {
+    const double a = static_cast<double>(k) * 0.5 * std::numbers::pi;
+    EXPECT_NEAR(distance(nodes[k].point, Vec2{radius * std::cos(a), radius * std::sin(a)}), 0.0, 1e-3) << k;
+    const Vec2 out = *nodes[k].out_handle - nodes[k].point, in = nodes[k].point - *nodes[k].in_handle;
+    EXPECT_NEAR(std::min(std::abs(out.x), std::abs(out.y)), 0.0, 1e-9) << k;  // still an extremum
+    EXPECT_NEAR(cross(in, out) / (norm(in) * norm(out)), 0.0, 1e-12) << k;
+    const double before = end_kappa(outline_cubic(nodes, (k + 3) % 4)), after = start_kappa(outline_cubic(nodes, k));
+    EXPECT_NEAR(before, after, 1e-9 * std::abs(after)) << k;
+  }
+  EXPECT_LE(distance_between(SampledContour(to_contour(nodes, true)), source), 0.01);
+}
+
 TEST(SpareNodes, ACircleOfEighthArcsKeepsItsNodes) {
   // Each eighth of the circle its own cubic: κ varies by 4e-6 of itself along them. One cubic
   // for a quarter varies by 2 % (κ·r 0.98 at its ends, 1.00 inside), past the variation the

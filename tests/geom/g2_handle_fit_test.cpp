@@ -1,6 +1,7 @@
 // Handle lengths of a chain of cubics with fixed nodes and tangents, fitted to points under
-// curvature continuity: a G2 chain's own points give it back; points whose curvature jumps
-// give a chain that does not; a frame that cannot bend as asked gives none.
+// curvature continuity: a G2 chain's own points give it back, also closed and from nodes slid
+// along their tangents; points whose curvature jumps give a chain that does not; a frame that
+// cannot bend as asked gives none.
 #include "geom/g2_handle_fit.hpp"
 
 #include <gtest/gtest.h>
@@ -74,6 +75,75 @@ TEST(G2HandleFit, CurvatureJumpingInThePointsIsContinuousInTheChain) {
   EXPECT_EQ(b.p[3], (Vec2{-150.0, -50.0}));
   EXPECT_NEAR(a.p[1].x, 100.0, 1e-12);
   EXPECT_NEAR(b.p[2].x, -150.0, 1e-12);
+}
+
+// The usual four-cubic circle stretched into an ellipse of half-axes 300 and 180: each node on
+// an axis joins two mirror images, so κ is continuous all round (a closed G2 chain).
+std::vector<Cubic> ellipse() {
+  const double h = (4.0 / 3.0) * std::tan(std::numbers::pi / 8.0);
+  const std::array<Vec2, 4> axis{Vec2{1.0, 0.0}, Vec2{0.0, 1.0}, Vec2{-1.0, 0.0}, Vec2{0.0, -1.0}};
+  const auto stretch = [](Vec2 p) { return Vec2{300.0 * p.x, 180.0 * p.y}; };
+  std::vector<Cubic> out;
+  for (std::size_t q = 0; q < 4; ++q) {
+    const Vec2 a = axis[q], b = axis[(q + 1) % 4];
+    out.push_back({stretch(a), stretch(a + b * h), stretch(b + a * h), stretch(b)});
+  }
+  return out;
+}
+
+TEST(G2HandleFit, AClosedChainComesBackFromNodesSlidAlongTheirTangents) {
+  // The ellipse's points, and frames whose nodes sit 4 units along their tangents from its:
+  // with the nodes free to slide and κ continuous round the seam too, the fit finds the
+  // ellipse itself, with full steps and with each round's step capped alike.
+  const std::vector<Cubic> chain = ellipse();
+  ASSERT_NEAR(end_kappa(chain[3]), start_kappa(chain[0]), 1e-12);
+  std::vector<CubicFrame> frames;
+  std::vector<std::vector<Vec2>> points;
+  std::vector<std::pair<double, double>> initial;
+  for (const Cubic& c : chain) {
+    CubicFrame f = *frame_of(c);
+    f.start = f.start + f.start_tangent * 4.0, f.end = f.end + f.end_tangent * 4.0;
+    frames.push_back(f), points.push_back(points_of(c, 50));
+    const double chord = distance(f.start, f.end);
+    initial.emplace_back(chord / 3.0, chord / 3.0);
+  }
+  for (const double step_share : {0.0, 0.01}) {
+    const G2FitFreedom freedom{{true, true, true, true}, 20.0, true, step_share};
+    const auto fit = fit_g2_handles(frames, points, initial, std::nullopt, std::nullopt, freedom);
+    ASSERT_TRUE(fit) << step_share;
+    for (std::size_t i = 0; i < 4; ++i) {
+      for (std::size_t k = 0; k < 4; ++k)
+        EXPECT_NEAR(distance((*fit)[i].p[k], chain[i].p[k]), 0.0, 1e-6) << step_share << " " << i << " " << k;
+      EXPECT_NEAR(end_kappa((*fit)[i]), start_kappa((*fit)[(i + 1) % 4]), 1e-9 * start_kappa((*fit)[(i + 1) % 4]));
+    }
+    // Fixed where they were, the nodes keep the fit off the ellipse.
+    const auto fixed = fit_g2_handles(frames, points, initial, std::nullopt, std::nullopt,
+                                      {{false, false, false, false}, 0.0, true, step_share});
+    ASSERT_TRUE(fixed);
+    EXPECT_NEAR(distance((*fixed)[0].p[0], chain[0].p[0]), 4.0, 1e-12);
+  }
+}
+
+TEST(G2HandleFit, ASlideBeyondItsReachGivesNone) {
+  // The same frames, the nodes 4 units off, but slides of at most 1 unit allowed: the rounds
+  // stop where a node reaches that, short of a G2 chain, and the fit gives none. Allowed 5
+  // units, it finds the ellipse.
+  const std::vector<Cubic> chain = ellipse();
+  std::vector<CubicFrame> frames;
+  std::vector<std::vector<Vec2>> points;
+  std::vector<std::pair<double, double>> initial;
+  for (const Cubic& c : chain) {
+    CubicFrame f = *frame_of(c);
+    f.start = f.start + f.start_tangent * 4.0, f.end = f.end + f.end_tangent * 4.0;
+    frames.push_back(f), points.push_back(points_of(c, 50));
+    initial.emplace_back(distance(c.p[0], c.p[1]), distance(c.p[2], c.p[3]));
+  }
+  EXPECT_FALSE(fit_g2_handles(frames, points, initial, std::nullopt, std::nullopt,
+                              {{true, true, true, true}, 1.0, true, 0.01}));
+  const auto fit = fit_g2_handles(frames, points, initial, std::nullopt, std::nullopt,
+                                  {{true, true, true, true}, 5.0, true, 0.01});
+  ASSERT_TRUE(fit);
+  EXPECT_NEAR(distance((*fit)[0].p[0], chain[0].p[0]), 0.0, 1e-6);
 }
 
 TEST(G2HandleFit, AFrameThatCannotBendAsAskedGivesNone) {
