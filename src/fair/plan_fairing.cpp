@@ -128,10 +128,14 @@ const FairedRun& FairedRuns::find_or_fair(const SmoothRun& run, const FairSettin
 
 namespace {
 
-// The settings as fair_run reads them: what only the writeback and rounding read set aside.
+// The settings as fair_run reads them: what only the writeback and rounding read set aside
+// (FairSettings says which).
 FairSettings runs_settings(FairSettings s) {
   s.free_node_curvatures = false;
-  s.fit_spare_runs = true;
+  s.split_beside_jumps = false;
+  s.remove_spare_nodes = false;
+  s.turn_inflection_nodes = false;
+  s.fit_spare_runs = false;
   s.rounding_reserve_units = 0.0;
   s.shortest_rounded_span_units = 0.0;
   return s;
