@@ -302,15 +302,14 @@ std::optional<std::vector<std::vector<Vec2>>> source_stretches(std::span<const V
   return out;
 }
 
-// The outline with the spare nodes of run r removed: the run's cubics between the nodes left
-// fitted again whole, to the source's points, under G2, the nodes inside it sliding along their
-// tangents. Where the limits allow. EB Garamond's O draws
-// its outer bowl in four cubics so, 0.58 units from the source; with its extrema where the
-// faired path put them, four G2 cubics come no nearer than 2.3.
+// The outline with the spare nodes of run r removed, where the limits allow: the run's cubics
+// between the nodes left fitted again whole, to the source's points, under G2, the nodes
+// inside it sliding along their tangents. EB Garamond's O draws its outer bowl in four cubics
+// so, 0.58 units from the source; with its extrema where the faired path put them, four G2
+// cubics come no nearer than 2.3.
 std::optional<std::vector<OutlineNode>> without_run_spares(const std::vector<OutlineNode>& nodes, bool closed,
                                                            const Run& r, const SampledContour& sampled_source,
                                                            const SpareNodeLimits& limits) {
-  const auto goes = [&](std::size_t k) { return is_spare_node(nodes, closed, k, limits.units_per_em); };
   const OutlineJoins joins{nodes, closed};
   const std::size_t n = nodes.size();
   // The run's nodes kept: its ends (a loop's first node too, should it be spare) and the inner
@@ -321,10 +320,10 @@ std::optional<std::vector<OutlineNode>> without_run_spares(const std::vector<Out
   for (std::size_t j = 1; j < r.count; ++j) {
     const std::size_t k = (r.first + j) % n;
     old_starts.push_back(k);
-    if (goes(k)) ++spares;
+    if (is_spare_node(nodes, closed, k, limits.units_per_em)) ++spares;
     else kept.push_back(k);
   }
-  if (r.loop && goes(r.first)) {
+  if (r.loop && is_spare_node(nodes, closed, r.first, limits.units_per_em)) {
     // Start the loop at a node that stays.
     if (kept.size() < 2) return std::nullopt;
     ++spares;
@@ -336,8 +335,6 @@ std::optional<std::vector<OutlineNode>> without_run_spares(const std::vector<Out
   if (r.loop) ends.push_back(kept.front());
   else ends.push_back(last);
 
-  std::vector<std::size_t> at = kept;
-  if (!r.loop) at.push_back(last);
   std::vector<CubicFrame> frames;
   G2FitFreedom freedom{{}, 0.0, r.loop};
   double shortest = std::numeric_limits<double>::infinity();
@@ -356,10 +353,11 @@ std::optional<std::vector<OutlineNode>> without_run_spares(const std::vector<Out
   freedom.step_share = fit_step_share;
   const std::optional<double> first = r.loop ? std::nullopt : bound_before(joins, r.first);
   const std::optional<double> end = r.loop ? std::nullopt : bound_after(joins, last);
-  // The source split at the nodes where they are: the points at a sliding node are not fitted
-  // (G2FitFreedom::slides), so those its slide passes do not hold it back.
+  // The source split at the nodes where they are. The points at a sliding node are not fitted
+  // (G2FitFreedom::slides), so the split does not hold it where it was.
   std::vector<Vec2> places;
-  for (const std::size_t k : at) places.push_back(nodes[k].point);
+  for (const std::size_t k : kept) places.push_back(nodes[k].point);
+  if (!r.loop) places.push_back(nodes[last].point);
   const std::optional<std::vector<std::vector<Vec2>>> points = source_stretches(places, r.loop, closed, sampled_source);
   if (!points) return std::nullopt;
   std::vector<std::pair<double, double>> initial;
@@ -415,9 +413,9 @@ SpareNodeRemoval remove_spare_nodes(std::vector<OutlineNode>& nodes, bool closed
   // Each spare node in its window first (without_node): what the runs fitted again whole
   // would take of them first may leave the rest none to go (Liberation Sans's o: its bowl in
   // six cubics, against four). Then each run fitted again whole without the spare nodes left
-  // in it. Not without each alone as well: a–z A–Z nodes Comic Neue 1.381× → 1.371×, EB
-  // Garamond 1.388× → 1.383×, Junicode 1.516× → 1.507× of the source's, but whole DejaVu
-  // Sans 60 s → 73 s.
+  // in it. Not without each spare node alone as well: a–z A–Z nodes Comic Neue 1.381× →
+  // 1.371×, EB Garamond 1.388× → 1.383×, Junicode 1.516× → 1.507× of the source's (before the
+  // points at sliding nodes went unfitted), but whole DejaVu Sans 60 s → 73 s.
   for (bool again = true; again;) {
     again = false;
     for (std::size_t k = 0; k < nodes.size();) {
@@ -434,12 +432,10 @@ SpareNodeRemoval remove_spare_nodes(std::vector<OutlineNode>& nodes, bool closed
       if (auto fewer = without_run_spares(nodes, closed, r, sampled_source, limits)) return fewer;
     return std::nullopt;
   };
-  while (limits.fit_runs)
-    if (std::optional<std::vector<OutlineNode>> fewer = fewer_in_a_run()) {
+  if (limits.fit_runs)
+    while (std::optional<std::vector<OutlineNode>> fewer = fewer_in_a_run()) {
       removed.in_runs += static_cast<int>(nodes.size() - fewer->size());
       nodes = std::move(*fewer);
-    } else {
-      break;
     }
   removed.removed += removed.in_runs;
   return removed;

@@ -22,8 +22,8 @@ struct SpareNodeLimits {
   /// as it stands is taken, the node's tangent may turn (up to 4°), the cubics beyond it
   /// fitted again too, κ = 0 there on both sides.
   bool turn_inflection_nodes = false;
-  /// Each run of cubics between inflection nodes, corners and lines fitted again whole first,
-  /// to the source, without its spare nodes (all, else each alone), the nodes inside it
+  /// After the windows, each run of cubics between inflection nodes, corners and lines that
+  /// keeps spare nodes fitted again whole to the source without them, the nodes inside it
   /// sliding along their tangents.
   bool fit_runs = true;
 };
@@ -44,8 +44,10 @@ bool is_spare_node(const std::vector<OutlineNode>& nodes, bool closed, std::size
 /// the outline with κ continuous at every node they touch and the curvature beyond them kept.
 /// Only where the cubics so changed gain no extremum, inflection, fold, overreach or crowded
 /// handle (fair/shape_traits), take on at most a quarter more curvature variation and 0.05/UPM,
-/// and the contour stays within the budget of `sampled_source`. Nodes stay where they are, and
-/// so do tangents, but an inflection node's where `limits` let it turn.
+/// and the contour stays within the budget of `sampled_source`. Then, where `limits` ask, each
+/// run of such cubics without its spare nodes left, fitted to the source under the same
+/// limits. Tangents stay, but an inflection node's where `limits` let it turn; nodes stay, but
+/// a run's inner ones slide along their tangents.
 SpareNodeRemoval remove_spare_nodes(std::vector<OutlineNode>& nodes, bool closed, const SampledContour& sampled_source,
                                     const SpareNodeLimits& limits);
 

@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <vector>
 
 #include "geom/curvature.hpp"
@@ -91,59 +92,56 @@ std::vector<Cubic> ellipse() {
   return out;
 }
 
-TEST(G2HandleFit, AClosedChainComesBackFromNodesSlidAlongTheirTangents) {
-  // The ellipse's points, and frames whose nodes sit 4 units along their tangents from its:
-  // with the nodes free to slide and κ continuous round the seam too, the fit finds the
-  // ellipse itself, with full steps and with each round's step capped alike.
-  const std::vector<Cubic> chain = ellipse();
-  ASSERT_NEAR(end_kappa(chain[3]), start_kappa(chain[0]), 1e-12);
+// The ellipse, its points, and frames whose nodes sit 4 units along their tangents from its,
+// the handles starting at a third of each chord.
+struct SlidEllipse {
+  std::vector<Cubic> chain = ellipse();
   std::vector<CubicFrame> frames;
   std::vector<std::vector<Vec2>> points;
   std::vector<std::pair<double, double>> initial;
-  for (const Cubic& c : chain) {
-    CubicFrame f = *frame_of(c);
-    f.start = f.start + f.start_tangent * 4.0, f.end = f.end + f.end_tangent * 4.0;
-    frames.push_back(f), points.push_back(points_of(c, 50));
-    const double chord = distance(f.start, f.end);
-    initial.emplace_back(chord / 3.0, chord / 3.0);
+  SlidEllipse() {
+    for (const Cubic& c : chain) {
+      CubicFrame f = *frame_of(c);
+      f.start = f.start + f.start_tangent * 4.0, f.end = f.end + f.end_tangent * 4.0;
+      frames.push_back(f), points.push_back(points_of(c, 50));
+      const double chord = distance(f.start, f.end);
+      initial.emplace_back(chord / 3.0, chord / 3.0);
+    }
   }
+  std::optional<std::vector<Cubic>> fit(const G2FitFreedom& freedom) const {
+    return fit_g2_handles(frames, points, initial, std::nullopt, std::nullopt, freedom);
+  }
+};
+
+TEST(G2HandleFit, AClosedChainComesBackFromNodesSlidAlongTheirTangents) {
+  // With the nodes free to slide and κ continuous round the seam too, the fit finds the
+  // ellipse itself, with full steps and with each round's step capped alike.
+  const SlidEllipse e;
+  ASSERT_NEAR(end_kappa(e.chain[3]), start_kappa(e.chain[0]), 1e-12);
   for (const double step_share : {0.0, 0.01}) {
-    const G2FitFreedom freedom{{true, true, true, true}, 20.0, true, step_share};
-    const auto fit = fit_g2_handles(frames, points, initial, std::nullopt, std::nullopt, freedom);
+    const auto fit = e.fit({{true, true, true, true}, 20.0, true, step_share});
     ASSERT_TRUE(fit) << step_share;
     for (std::size_t i = 0; i < 4; ++i) {
       for (std::size_t k = 0; k < 4; ++k)
-        EXPECT_NEAR(distance((*fit)[i].p[k], chain[i].p[k]), 0.0, 1e-6) << step_share << " " << i << " " << k;
+        EXPECT_NEAR(distance((*fit)[i].p[k], e.chain[i].p[k]), 0.0, 1e-6) << step_share << " " << i << " " << k;
       EXPECT_NEAR(end_kappa((*fit)[i]), start_kappa((*fit)[(i + 1) % 4]), 1e-9 * start_kappa((*fit)[(i + 1) % 4]));
     }
     // Fixed where they were, the nodes keep the fit off the ellipse.
-    const auto fixed = fit_g2_handles(frames, points, initial, std::nullopt, std::nullopt,
-                                      {{false, false, false, false}, 0.0, true, step_share});
+    const auto fixed = e.fit({{false, false, false, false}, 0.0, true, step_share});
     ASSERT_TRUE(fixed);
-    EXPECT_NEAR(distance((*fixed)[0].p[0], chain[0].p[0]), 4.0, 1e-12);
+    EXPECT_NEAR(distance((*fixed)[0].p[0], e.chain[0].p[0]), 4.0, 1e-12);
   }
 }
 
 TEST(G2HandleFit, ASlideBeyondItsReachGivesNone) {
-  // The same frames, the nodes 4 units off, but slides of at most 1 unit allowed: the rounds
-  // stop where a node reaches that, short of a G2 chain, and the fit gives none. Allowed 5
-  // units, it finds the ellipse.
-  const std::vector<Cubic> chain = ellipse();
-  std::vector<CubicFrame> frames;
-  std::vector<std::vector<Vec2>> points;
-  std::vector<std::pair<double, double>> initial;
-  for (const Cubic& c : chain) {
-    CubicFrame f = *frame_of(c);
-    f.start = f.start + f.start_tangent * 4.0, f.end = f.end + f.end_tangent * 4.0;
-    frames.push_back(f), points.push_back(points_of(c, 50));
-    initial.emplace_back(distance(c.p[0], c.p[1]), distance(c.p[2], c.p[3]));
-  }
-  EXPECT_FALSE(fit_g2_handles(frames, points, initial, std::nullopt, std::nullopt,
-                              {{true, true, true, true}, 1.0, true, 0.01}));
-  const auto fit = fit_g2_handles(frames, points, initial, std::nullopt, std::nullopt,
-                                  {{true, true, true, true}, 5.0, true, 0.01});
+  // Slides of at most 1 unit allowed against the nodes' 4 units off: the rounds stop where a
+  // node reaches that, short of a G2 chain, and the fit gives none. Allowed 5 units, it finds
+  // the ellipse.
+  const SlidEllipse e;
+  EXPECT_FALSE(e.fit({{true, true, true, true}, 1.0, true, 0.01}));
+  const auto fit = e.fit({{true, true, true, true}, 5.0, true, 0.01});
   ASSERT_TRUE(fit);
-  EXPECT_NEAR(distance((*fit)[0].p[0], chain[0].p[0]), 0.0, 1e-6);
+  EXPECT_NEAR(distance((*fit)[0].p[0], e.chain[0].p[0]), 0.0, 1e-6);
 }
 
 TEST(G2HandleFit, AFrameThatCannotBendAsAskedGivesNone) {
