@@ -66,9 +66,9 @@ struct FairSettings {
   /// kept jumps there; halving from eight units leaves no cubic under four).
   double shortest_rounded_span_units = 8.0;
   // rounding_reserve_units, shortest_rounded_span_units, free_node_curvatures,
-  // split_beside_jumps, remove_spare_nodes, turn_inflection_nodes and fit_spare_runs are read by the budgets,
-  // the writeback and rounding, never by fair_run: a contour's fairings that differ only in
-  // them share their faired runs (fair/plan_fairing's RunFairings).
+  // split_beside_jumps, remove_spare_nodes, turn_inflection_nodes and fit_spare_runs are read
+  // by the budgets, the writeback and rounding, never by fair_run: a contour's fairings that
+  // differ only in them share their faired runs (fair/plan_fairing's RunFairings).
   /// The writeback may give an extremum inside a chain another curvature than the faired
   /// path's where both spans beside it then fit as one cubic each (fair/node_curvatures):
   /// fewer nodes for the same budget. Text only: on handwriting the single cubics' curvature
@@ -93,9 +93,10 @@ struct FairSettings {
   /// its rounding. Set only by fair_contour's fairing after the first, never by the options:
   /// see there.
   bool turn_inflection_nodes = false;
-  /// With remove_spare_nodes, each run of cubics between inflections, corners and lines fitted
-  /// again whole without its spare nodes first (SpareNodeLimits::fit_runs). Cleared by
-  /// fair_contour's fairing again of a contour that this leaves with faults: see there.
+  /// With remove_spare_nodes, after the windows, each run of cubics between inflections,
+  /// corners and lines fitted again whole without its spare nodes (SpareNodeLimits::fit_runs).
+  /// Cleared by fair_contour's fairing again of a contour that this leaves with faults: see
+  /// there.
   bool fit_spare_runs = true;
   /// Text: the kinks where curves meet lines kept as corners, as drawn, instead of the curves
   /// made tangential to the lines (fair_contour's last fairing again of a contour whose runs

@@ -37,6 +37,12 @@ bool inflection_at(const std::vector<OutlineNode>& nodes, std::size_t k, double 
   return in * out <= 0.0 || std::min(std::abs(in), std::abs(out)) * units_per_em < flat_em;
 }
 
+// Whether node k couples the cubics either side into one run: smooth, between two cubics, no
+// inflection. A window or a run extends across it.
+bool couples(const OutlineJoins& joins, std::size_t k, double units_per_em) {
+  return joins.joins_cubics(k) && !inflection_at(joins.nodes, k, units_per_em);
+}
+
 // The curvature a window of cubics from node `first` must meet there: none at a corner or an
 // open contour's end, 0 after a line, else the arriving cubic's (outside the window).
 std::optional<double> bound_before(const OutlineJoins& joins, std::size_t first) {
@@ -68,11 +74,10 @@ Window window_at(const OutlineJoins& joins, std::size_t k, double units_per_em) 
   const std::size_t n = joins.size(), l = before(k, n), r = after(k, n);
   Window w{{l}, 0, r};
   // Across a smooth node between cubics that is no inflection, the cubic beyond joins in.
-  const auto extends = [&](std::size_t node) {
-    return joins.joins_cubics(node) && !inflection_at(joins.nodes, node, units_per_em);
-  };
-  if (before(l, n) != r && extends(l)) w.starts.insert(w.starts.begin(), before(l, n)), w.merged = 1;
-  if (after(r, n) != w.starts.front() && extends(r)) w.starts.push_back(r), w.last_node = after(r, n);
+  if (before(l, n) != r && couples(joins, l, units_per_em))
+    w.starts.insert(w.starts.begin(), before(l, n)), w.merged = 1;
+  if (after(r, n) != w.starts.front() && couples(joins, r, units_per_em))
+    w.starts.push_back(r), w.last_node = after(r, n);
   return w;
 }
 
@@ -162,16 +167,14 @@ std::optional<Window> window_beyond(const OutlineJoins& joins, const Window& w, 
   const auto in_w = [&](std::size_t s) {
     return s == k || std::find(w.starts.begin(), w.starts.end(), s) != w.starts.end();
   };
-  const auto extends = [&](std::size_t node) {
-    return joins.joins_cubics(node) && !inflection_at(joins.nodes, node, units_per_em);
-  };
   Window b;
   if (forward) {
     b.starts = {t}, b.last_node = after(t, n);
-    if (extends(b.last_node) && !in_w(b.last_node)) b.starts.push_back(b.last_node), b.last_node = after(b.last_node, n);
+    if (couples(joins, b.last_node, units_per_em) && !in_w(b.last_node))
+      b.starts.push_back(b.last_node), b.last_node = after(b.last_node, n);
   } else {
     b.starts = {before(t, n)}, b.last_node = t;
-    if (extends(b.starts.front()) && !in_w(before(b.starts.front(), n)))
+    if (couples(joins, b.starts.front(), units_per_em) && !in_w(before(b.starts.front(), n)))
       b.starts.insert(b.starts.begin(), before(b.starts.front(), n));
   }
   if (std::any_of(b.starts.begin(), b.starts.end(), in_w)) return std::nullopt;
@@ -249,17 +252,14 @@ struct Run {
 
 std::vector<Run> runs_of(const OutlineJoins& joins, double units_per_em) {
   const std::size_t n = joins.size();
-  const auto extends = [&](std::size_t node) {
-    return joins.joins_cubics(node) && !inflection_at(joins.nodes, node, units_per_em);
-  };
   std::vector<Run> out;
   bool any_end = false;
   for (std::size_t h = 0; h < n; ++h) {
-    if (extends(h)) continue;
+    if (couples(joins, h, units_per_em)) continue;
     any_end = true;
     if (!joins.is_cubic(h)) continue;
     Run r{h, 1, false};
-    for (std::size_t k = after(h, n); extends(k); k = after(k, n)) ++r.count;
+    for (std::size_t k = after(h, n); couples(joins, k, units_per_em); k = after(k, n)) ++r.count;
     out.push_back(r);
   }
   if (!any_end && joins.closed && n > 0) out.push_back({0, n, true});
@@ -427,9 +427,16 @@ SpareNodeRemoval remove_spare_nodes(std::vector<OutlineNode>& nodes, bool closed
       ++k;
     }
   }
+  // Each run once: a run fitted so keeps its ends where they are, and the curvature there, so
+  // one that did not fit still would not after another did. The runs found again after each
+  // removal (the nodes' indices shift), those whose first node was tried passed over.
+  std::vector<Vec2> tried;
   const auto fewer_in_a_run = [&]() -> std::optional<std::vector<OutlineNode>> {
-    for (const Run& r : runs_of(OutlineJoins{nodes, closed}, limits.units_per_em))
+    for (const Run& r : runs_of(OutlineJoins{nodes, closed}, limits.units_per_em)) {
+      if (std::find(tried.begin(), tried.end(), nodes[r.first].point) != tried.end()) continue;
+      tried.push_back(nodes[r.first].point);
       if (auto fewer = without_run_spares(nodes, closed, r, sampled_source, limits)) return fewer;
+    }
     return std::nullopt;
   };
   if (limits.fit_runs)

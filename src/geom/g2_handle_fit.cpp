@@ -23,28 +23,24 @@ constexpr double matched = 1e-9;        // κ continuous to this share of the la
 constexpr double longest_handle = 1.5;  // of the chord
 constexpr double shortest_handle = 1e-3;
 
-// Where each node's slide along its tangent sits in x (after the 2m handle lengths), if it
-// slides; node i starts cubic i.
-struct Slides {
-  std::vector<int> index;  // −1: fixed
-  int count = 0;
-  Slides(std::size_t nodes, const std::vector<bool>& slides) : index(nodes, -1) {
-    for (std::size_t i = 0; i < nodes && i < slides.size(); ++i)
-      if (slides[i]) index[i] = count++;
-  }
-};
-
-// The unknowns: a and b of each cubic, then the sliding nodes' slides.
+// The unknowns x: a and b of each cubic, then the slides of the nodes that slide (node i
+// starts cubic i).
 struct Unknowns {
   std::span<const CubicFrame> frames;
-  const Slides& slides;
   bool closed = false;
+  std::vector<int> slide_index;  // per node: where its slide sits among the slides, or −1
+  int slides = 0;
+  Unknowns(std::span<const CubicFrame> f, const G2FitFreedom& freedom)
+      : frames(f), closed(freedom.closed), slide_index(closed ? f.size() : f.size() + 1, -1) {
+    for (std::size_t i = 0; i < slide_index.size() && i < freedom.slides.size(); ++i)
+      if (freedom.slides[i]) slide_index[i] = slides++;
+  }
   int handles() const { return 2 * static_cast<int>(frames.size()); }
-  int size() const { return handles() + slides.count; }
+  int size() const { return handles() + slides; }
   std::size_t end_node(std::size_t i) const { return closed ? (i + 1) % frames.size() : i + 1; }
   // Column of node `node`'s slide, or −1.
   int slide_column(std::size_t node) const {
-    return slides.index[node] < 0 ? -1 : handles() + slides.index[node];
+    return slide_index[node] < 0 ? -1 : handles() + slide_index[node];
   }
   double slide(const Eigen::VectorXd& x, std::size_t node) const {
     const int c = slide_column(node);
@@ -137,8 +133,7 @@ std::optional<std::vector<Cubic>> fit_g2_handles(std::span<const CubicFrame> fra
                                                  std::optional<double> end, const G2FitFreedom& freedom) {
   const std::size_t m = frames.size();
   if (m == 0 || points.size() != m || initial.size() != m) return std::nullopt;
-  const Slides slides(freedom.closed ? m : m + 1, freedom.slides);
-  const Unknowns unknowns{frames, slides, freedom.closed};
+  const Unknowns unknowns(frames, freedom);
   const int n = unknowns.size();
   Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
   double chord_sum = 0.0;
