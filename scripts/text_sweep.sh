@@ -13,10 +13,10 @@
 #   fonts-quicksand fonts-oxygen fonts-cabin fonts-junicode fonts-stix fonts-vollkorn
 #   fonts-league-spartan fonts-adf-accanthis fonts-urw-base35
 #
-# usage: scripts/text_sweep.sh GLYPHFAIR OUTDIR
+# usage: scripts/text_sweep.sh GLYPHFAIR OUTDIR [PATTERN]   (PATTERN: only the fonts whose path matches)
 set -euo pipefail
-(($# == 2)) || { echo "usage: $0 GLYPHFAIR OUTDIR" >&2; exit 2; }
-bin=$(realpath "$1"); out=$2
+(($# == 2 || $# == 3)) || { echo "usage: $0 GLYPHFAIR OUTDIR [PATTERN]" >&2; exit 2; }
+bin=$(realpath "$1"); out=$2; pattern=${3:-.}
 here=$(cd "$(dirname "$0")/.." && pwd)
 mkdir -p "$out"
 s=/usr/share/fonts; g=/usr/share/texmf/fonts/opentype/public/tex-gyre
@@ -55,4 +55,4 @@ one() {
   echo "$verdict $name"
 }
 export -f one; export bin out here letters
-printf '%s\n' "${fonts[@]}" | xargs -P 2 -I{} bash -c 'one "$@"' _ {} | sort -k2
+printf '%s\n' "${fonts[@]}" | grep -E -- "$pattern" | xargs -P 2 -I{} bash -c 'one "$@"' _ {} | sort -k2

@@ -894,13 +894,16 @@ TEST(ContourFairing, TheCubicsBesideAJumpRoundingLeftAreSplitAndRoundedAgain) {
   // against −8.3. With the cubics beside each split where the tangent runs along a short grid
   // direction (fair/jump_splits), the new nodes' handles set κ finely and the glyph has none.
   // The oracle that the splits mend them: the same glyph faired without them still jumps. Since
-  // stop 111 the runs of cubics fitted again whole without their spare nodes (fair/spare_nodes)
-  // leave no such jump either, so the oracle fairs without those too.
+  // stop 111 the spare nodes' removal (fair/spare_nodes) mends those joins too, its runs
+  // fitted again whole, and since stop 112 its windows alone; so both fairings keep the spare
+  // nodes, and the splits are what makes the difference.
   FairedGlyph f;
   expect_faired_g2(test::eb_garamond, "W", &f);
-  FairSettings unsplit = f.settings;
+  FairSettings spared = f.settings;
+  spared.remove_spare_nodes = false;
+  EXPECT_EQ(g2_jumps(fair_glyph(f.source, spared).glyph.outline, f.upm), 0);
+  FairSettings unsplit = spared;
   unsplit.split_beside_jumps = false;
-  unsplit.fit_spare_runs = false;
   EXPECT_GT(g2_jumps(fair_glyph(f.source, unsplit).glyph.outline, f.upm), 0);
 }
 
