@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Two runs of scripts/text_sweep.sh compared: per font, the text bars that differ (old → new)
 and whether it passes; per glyph (with --glyphs), the nodes, inflections, g2-jumps and kinks
-that changed; then the totals of nodes, jumps and kinks over the fonts both runs measured.
+that changed; then the totals of nodes, jumps and kinks over the fonts both runs measured, and
+the fonts only one of them did (text_sweep.sh's ERROR lines).
 
 usage: scripts/sweep_diff.py OLD_DIR NEW_DIR [--glyphs]
 """
@@ -46,6 +47,9 @@ def main():
                 changes += [f"{k} {a[k]} → {b[k]}" for k in ("g2_jumps", "kinks") if a[k] != b[k]]
                 if changes:
                     print(f"    {glyph:10s} " + ", ".join(changes))
+    one_only = sorted({p.name for d in (args.old, args.new) for p in d.glob("*.json")} - set(fonts))
+    if one_only:
+        print("measured by one run only: " + ", ".join(n[:-5] for n in one_only))
     print(f"{len(fonts)} fonts: passing {passing[0]} → {passing[1]}; " +
           "; ".join(f"{k} {a} → {b}" for k, (a, b) in totals.items()))
 

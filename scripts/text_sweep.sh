@@ -1,9 +1,8 @@
 #!/usr/bin/env bash
 # The text bars of the fairing issue over 44 text fonts from Debian's packages, a–z A–Z:
 # each font faired by GLYPHFAIR (one glyph job each, two fonts at a time), then measured by
-# tests/tools/fairing_bars.py. Writes OUTDIR/NAME.ufo, NAME.bars.txt and NAME.json, and prints a
-# line per font (PASS/FAIL and the failing bars) and the totals. Compare two builds with
-# scripts/sweep_diff.py OLD NEW.
+# tests/tools/fairing_bars.py. Writes OUTDIR/NAME.ufo, NAME.err, NAME.bars.txt and NAME.json,
+# and prints a line per font. Compare two builds with scripts/sweep_diff.py OLD NEW.
 #
 # The fonts come from these packages (not installed by scripts/dev.sh):
 #   fonts-dejavu-core fonts-crosextra-caladea fonts-crosextra-carlito fonts-freefont-otf
@@ -46,9 +45,13 @@ fonts=(
 )
 letters=abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ
 
+# A line per font: PASS, FAIL (a bar failed, NAME.bars.txt says which) or ERROR (glyphfair
+# failed, NAME.err says why).
 one() {
   local font=$1 name; name=$(basename "${font%.*}")
-  "$bin" fair "$font" --text "$letters" --profile text --jobs 1 -o "$out/$name.ufo" 2>"$out/$name.err" || true
+  if ! "$bin" fair "$font" --text "$letters" --profile text --jobs 1 -o "$out/$name.ufo" 2>"$out/$name.err"; then
+    echo "ERROR $name"; return
+  fi
   local verdict=FAIL
   /usr/bin/python3 "$here/tests/tools/fairing_bars.py" "$font" "$out/$name.ufo" --profile text \
     --json "$out/$name.json" >"$out/$name.bars.txt" 2>&1 && verdict=PASS
