@@ -20,12 +20,12 @@ namespace gf {
 namespace {
 
 constexpr double flat_em = 0.05;       // κ·UPM under which a node counts as an inflection
-// Curvature variation the changed cubics may take on: three times theirs, and 0.05 per em. A
-// few cubics' variation is a small part of their glyph's, whose bar (text: at most 0.95 of the
-// source's, the median glyph) the fonts meet with room (0.51–0.92 of the source's). a–z A–Z of
-// 44 text fonts, against a quarter more: nodes 45,367 → 45,208, g2-jumps 5 → 2 (Junicode's B
-// and M: their fewer, longer cubics round G2). On the three fonts failing the nodes bar, twice
-// theirs took fewer nodes away, and five times no more than three.
+// Curvature variation the changed cubics may take on: three times theirs, and 0.05 per em.
+// A few cubics' variation is a small part of their glyph's, whose bar (text: at most 0.95 of
+// the source's, the median glyph) the fonts meet with room (0.51–0.92 of the source's). a–z
+// A–Z of 44 text fonts, against a quarter more: nodes 45,367 → 45,208, g2-jumps 5 → 2
+// (Junicode's B and M: their fewer, longer cubics round G2). On the three fonts failing the
+// nodes bar, twice theirs took fewer nodes away, and five times no more than three.
 constexpr double variation_share = 3.0, variation_em = 0.05;
 constexpr int samples_per_cubic = 32;  // of the outline they are fitted to
 // A run fitted again whole (without_run_spares): how far its nodes may slide, of the shortest

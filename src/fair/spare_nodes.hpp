@@ -43,11 +43,11 @@ bool is_spare_node(const std::vector<OutlineNode>& nodes, bool closed, std::size
 /// those of the cubic either side across a smooth node that is no inflection, fitted again to
 /// the outline with κ continuous at every node they touch and the curvature beyond them kept.
 /// Only where the cubics so changed gain no extremum, inflection, fold, overreach or crowded
-/// handle (fair/shape_traits), take on at most three times their curvature variation and 0.05/UPM,
-/// and the contour stays within the budget of `sampled_source`. Then, where `limits` ask, each
-/// run of such cubics without its spare nodes left, fitted to the source under the same
-/// limits. Tangents stay, but an inflection node's where `limits` let it turn; nodes stay, but
-/// a run's inner ones slide along their tangents.
+/// handle (fair/shape_traits), take on at most three times their curvature variation and
+/// 0.05/UPM, and the contour stays within the budget of `sampled_source`. Then, where `limits`
+/// ask, each run of such cubics without its spare nodes left, fitted to the source under the
+/// same limits. Tangents stay, but an inflection node's where `limits` let it turn; nodes stay,
+/// but a run's inner ones slide along their tangents.
 SpareNodeRemoval remove_spare_nodes(std::vector<OutlineNode>& nodes, bool closed, const SampledContour& sampled_source,
                                     const SpareNodeLimits& limits);
 
