@@ -152,10 +152,12 @@ std::pair<long, long> PolylineGrid::cell_of(Vec2 p) const {
   return {c, r};
 }
 
-PolylineGrid::Nearest PolylineGrid::nearest(Vec2 p) const {
+PolylineGrid::Nearest PolylineGrid::search(Vec2 p, double enough) const {
   if (points_.size() == 1) return {distance(p, points_[0]), 0};
   double best = std::numeric_limits<double>::infinity();  // squared
   std::size_t best_at = 0;
+  // Within `enough` once its root is: the square's rounding must not let a point past it stop.
+  const double enough_squared = enough < 0.0 ? -1.0 : enough * enough;
   const auto [pc, pr] = cell_of(p);
   // The query's own distance to the grid's box, so rings far outside start counting right.
   const long extent = std::max(columns_, rows_);
@@ -167,7 +169,9 @@ PolylineGrid::Nearest PolylineGrid::nearest(Vec2 p) const {
         if (std::max(std::abs(r - pr), std::abs(c - pc)) != ring) continue;
         for (const std::uint32_t i : cells_[static_cast<std::size_t>(r * columns_ + c)]) {
           const double d = squared_distance_to_segment(p, points_[i], points_[i + 1]);
-          if (d < best) best = d, best_at = i;
+          if (!(d < best)) continue;
+          best = d, best_at = i;
+          if (best <= enough_squared && std::sqrt(best) <= enough) return {std::sqrt(best), best_at};
         }
       }
     }
@@ -202,7 +206,7 @@ std::vector<double> distance_by_piece(const PolylineGrid& curve, std::span<const
   std::vector<double> d(piece_of.empty() ? 0 : *std::max_element(piece_of.begin(), piece_of.end()) + 1, 0.0);
   if (curve.points().empty() || other.points().empty()) return d;
   for (std::size_t k = 0; k < curve.points().size(); ++k)
-    d[piece_of[k]] = std::max(d[piece_of[k]], other.distance_to(curve.points()[k]));
+    d[piece_of[k]] = std::max(d[piece_of[k]], other.distance_past(curve.points()[k], d[piece_of[k]]));
   for (const NearestPiece& n : other_nearest) d[n.piece] = std::max(d[n.piece], n.distance);
   return d;
 }
@@ -214,7 +218,7 @@ std::vector<double> distance_by_piece(const PolylineGrid& curve, std::span<const
 
 double directed_hausdorff(std::span<const Vec2> from, const PolylineGrid& to) {
   double m = 0.0;
-  for (const Vec2 p : from) m = std::max(m, to.distance_to(p));
+  for (const Vec2 p : from) m = std::max(m, to.distance_past(p, m));
   return m;
 }
 
