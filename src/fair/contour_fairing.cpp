@@ -88,7 +88,7 @@ void fillet_leaning_lines(std::vector<OutlineNode>& nodes, bool closed, const Sa
   LeaningLineLimits limits;
   limits.max_move_units = leaning_move_share * settings.tolerance_units;
   if (fillet_leaning_line_ends(filleted, closed, limits) == 0) return;
-  if (distance_between(SampledContour(to_contour(filleted, closed)), sampled_source) > available) return;
+  if (!within_distance(SampledContour(to_contour(filleted, closed)), sampled_source, available)) return;
   nodes = std::move(filleted);
   merge_tiny_cubics(nodes, closed, tiny_cubic_chord);
 }
@@ -103,7 +103,7 @@ void drop_lobes_at_corners(std::vector<OutlineNode>& nodes, bool closed, const S
       tolerance_left_at(nodes, closed, sampled_source, settings.tolerance_units, settings.tolerance_units - available);
   std::vector<OutlineNode> dropped = nodes;
   if (drop_corner_end_lobes(dropped, closed, allowance) == 0) return;
-  if (distance_between(SampledContour(to_contour(dropped, closed)), sampled_source) > available) return;
+  if (!within_distance(SampledContour(to_contour(dropped, closed)), sampled_source, available)) return;
   nodes = std::move(dropped);
 }
 

@@ -210,7 +210,7 @@ std::optional<Contour> cheapest_within(const Contour& c, Cheapest&& found, std::
     const ShapeTraits now = shape_traits(cubics_at(t, cubics));
     if (worsens(now, old)) continue;
     if (varies_more(now, old, variation_share, variation_em, limits.units_per_em)) continue;
-    if (distance_between(SampledContour(t), sampled_source) <= limits.tolerance_units) return t;
+    if (within_distance(SampledContour(t), sampled_source, limits.tolerance_units)) return t;
   }
   return std::nullopt;
 }

@@ -150,7 +150,7 @@ std::optional<SplitOnGrid> split_and_settle(std::vector<std::size_t> at, bool cl
   for (const std::size_t k : at) {
     std::vector<OutlineNode> trial = out.nodes;
     if (split_line_at(trial, closed, k, limits)) {
-      if (distance_between(SampledContour(to_contour(trial, closed)), sampled_source) > available) continue;
+      if (!within_distance(SampledContour(to_contour(trial, closed)), sampled_source, available)) continue;
     } else if (kept == SplitKept::with_fewer_faults || !split_curve_beside_line(trial, closed, k)) {
       continue;
     }  // else the curve split, exactly: the float outline is where it was

@@ -48,6 +48,12 @@ double distance_between(const SampledContour& a, const SampledContour& b) {
   return std::max(directed_hausdorff(a.points(), b.grid), directed_hausdorff(b.points(), a.grid));
 }
 
+bool within_distance(const SampledContour& a, const SampledContour& b, double limit) {
+  if (a.points().empty() || b.points().empty()) return distance_between(a, b) <= limit;
+  return directed_hausdorff(a.points(), b.grid, limit) <= limit &&
+         directed_hausdorff(b.points(), a.grid, limit) <= limit;
+}
+
 std::vector<double> tolerance_left(std::span<const double> by_segment, double tolerance_units, double reserve) {
   std::vector<double> out;
   for (const double e : by_segment) out.push_back(0.95 * std::max(0.0, tolerance_units - reserve - e));

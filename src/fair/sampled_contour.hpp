@@ -35,6 +35,10 @@ struct SampledContour {
 /// and the other has (a contour faired to nothing).
 double distance_between(const SampledContour& a, const SampledContour& b);
 
+/// Whether distance_between(a, b) is at most `limit`: the same answer, sooner where it is not
+/// (each direction stops at its first point past the limit).
+bool within_distance(const SampledContour& a, const SampledContour& b, double limit);
+
 /// What the outline leaves of the tolerance at each cubic (its own distance `by_segment`), less
 /// `reserve`, with 5 % kept for sampling: what rounding, or the G3 cubics before it, may spend there.
 std::vector<double> tolerance_left(std::span<const double> by_segment, double tolerance_units, double reserve);

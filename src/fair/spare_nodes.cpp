@@ -207,7 +207,8 @@ std::optional<std::vector<OutlineNode>> with_refits(const std::vector<OutlineNod
     for (std::size_t j = 0; j < r.now.size(); ++j)
       out[r.starts[j]].out_handle = r.now[j].p[1], out[r.ends[j]].in_handle = r.now[j].p[2];
   out.erase(out.begin() + static_cast<std::ptrdiff_t>(k));
-  if (distance_between(SampledContour(to_contour(out, closed)), sampled_source) > limits.budget_units) return std::nullopt;
+  if (!within_distance(SampledContour(to_contour(out, closed)), sampled_source, limits.budget_units))
+    return std::nullopt;
   return out;
 }
 
@@ -407,7 +408,7 @@ std::optional<std::vector<OutlineNode>> without_run_spares(const std::vector<Out
   std::vector<OutlineNode> fewer;
   for (std::size_t k = 0; k < n; ++k)
     if (!drop[k]) fewer.push_back(out[k]);
-  if (distance_between(SampledContour(to_contour(fewer, closed)), sampled_source) > limits.budget_units)
+  if (!within_distance(SampledContour(to_contour(fewer, closed)), sampled_source, limits.budget_units))
     return std::nullopt;
   return fewer;
 }

@@ -216,9 +216,12 @@ std::vector<double> distance_by_piece(const PolylineGrid& curve, std::span<const
   return distance_by_piece(curve, piece_of, other, nearest_pieces(curve, piece_of, other.points()));
 }
 
-double directed_hausdorff(std::span<const Vec2> from, const PolylineGrid& to) {
+double directed_hausdorff(std::span<const Vec2> from, const PolylineGrid& to, double stop_above) {
   double m = 0.0;
-  for (const Vec2 p : from) m = std::max(m, to.distance_past(p, m));
+  for (const Vec2 p : from) {
+    m = std::max(m, to.distance_past(p, m));
+    if (m > stop_above) break;
+  }
   return m;
 }
 

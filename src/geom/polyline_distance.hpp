@@ -77,8 +77,10 @@ class PolylineGrid {
   std::vector<std::vector<std::uint32_t>> cells_;  ///< segment indices per cell
 };
 
-/// max over `from` of the distance to the polyline in `to`.
-double directed_hausdorff(std::span<const Vec2> from, const PolylineGrid& to);
+/// max over `from` of the distance to the polyline in `to`; past `stop_above`, only some
+/// distance past it.
+double directed_hausdorff(std::span<const Vec2> from, const PolylineGrid& to,
+                          double stop_above = std::numeric_limits<double>::infinity());
 
 /// For each of `points`, the piece of a curve sampled piece by piece (`piece_of[k]`: the piece
 /// whose stretch of polyline point k starts) that lies nearest it, and how far: the piece the
