@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "point_set_distance.hpp"
@@ -56,6 +57,18 @@ TEST(SampledContour, TheDistanceBetweenTightCurvesReadsAsTheBruteForceOne) {
   const Contour a = test::circle({0, 0}, 30.0), b = test::circle({0.9, 0.9}, 30.0, 0.3);
   const double truth = test::polyline_hausdorff(test::contour_points(a, 1000), test::contour_points(b, 1000));
   EXPECT_NEAR(distance_between(SampledContour(a), SampledContour(b)), truth, 0.005);
+}
+
+TEST(SampledContour, WithinADistanceAnswersAsTheDistanceDoes) {
+  const SampledContour a(test::circle({0, 0}, 30.0)), b(test::circle({0.9, 0.9}, 30.0, 0.3));
+  const double d = distance_between(a, b);
+  for (const double limit : {0.0, 0.5 * d, std::nextafter(d, 0.0), d, 1.01 * d, 100.0}) {
+    EXPECT_EQ(within_distance(a, b, limit), d <= limit) << limit;
+    EXPECT_EQ(within_distance(b, a, limit), d <= limit) << limit;
+  }
+  const SampledContour none(Contour{});
+  EXPECT_TRUE(within_distance(none, none, 0.0));
+  EXPECT_FALSE(within_distance(a, none, 1e9));
 }
 
 }  // namespace

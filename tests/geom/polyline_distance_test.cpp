@@ -78,6 +78,28 @@ TEST(PolylineDistance, StopAboveIsExactBelowAndSaysPastAbove) {
     EXPECT_NEAR(directed_hausdorff(a, b, 1.5 * exact), exact, 1e-12 * (1.0 + exact));
     EXPECT_GT(directed_hausdorff(a, b, 0.5 * exact), 0.5 * exact);
     EXPECT_LE(directed_hausdorff(a, b, 0.5 * exact), exact * (1.0 + 1e-12));  // never more than the truth
+    // The same promise against the grid.
+    const PolylineGrid grid(b, 4.0);
+    EXPECT_NEAR(directed_hausdorff(a, grid, 1.5 * exact), exact, 1e-12 * (1.0 + exact));
+    EXPECT_GT(directed_hausdorff(a, grid, 0.5 * exact), 0.5 * exact);
+    EXPECT_LE(directed_hausdorff(a, grid, 0.5 * exact), exact * (1.0 + 1e-12));
+  }
+}
+
+TEST(PolylineDistance, DistancePastIsExactPastTheFloorAndWithinItBelow) {
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<double> u(-20.0, 60.0), floor(0.0, 10.0);
+  for (int trial = 0; trial < 50; ++trial) {
+    const std::vector<Vec2> line = wobbly(rng, 30, {0, 0});
+    const PolylineGrid grid(line, 4.0);
+    for (int k = 0; k < 40; ++k) {
+      const Vec2 p{u(rng), u(rng)};
+      const double exact = grid.nearest(p).distance, f = floor(rng);
+      const double past = grid.distance_past(p, f);
+      if (exact > f) EXPECT_EQ(past, exact);  // bit for bit: the largest over many points is the same
+      else EXPECT_LE(past, f);
+      EXPECT_GE(past, exact);  // a segment's distance, never less than the nearest's
+    }
   }
 }
 
