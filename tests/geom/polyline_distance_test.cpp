@@ -88,13 +88,13 @@ TEST(PolylineDistance, StopAboveIsExactBelowAndSaysPastAbove) {
 
 TEST(PolylineDistance, DistancePastIsExactPastTheFloorAndWithinItBelow) {
   std::mt19937 rng(13);
-  std::uniform_real_distribution<double> u(-20.0, 60.0), floor(0.0, 10.0);
+  std::uniform_real_distribution<double> u(-20.0, 60.0), floors(0.0, 10.0);
   for (int trial = 0; trial < 50; ++trial) {
     const std::vector<Vec2> line = wobbly(rng, 30, {0, 0});
     const PolylineGrid grid(line, 4.0);
     for (int k = 0; k < 40; ++k) {
       const Vec2 p{u(rng), u(rng)};
-      const double exact = grid.nearest(p).distance, f = floor(rng);
+      const double exact = grid.nearest(p).distance, f = floors(rng);
       const double past = grid.distance_past(p, f);
       if (exact > f) EXPECT_EQ(past, exact);  // bit for bit: the largest over many points is the same
       else EXPECT_LE(past, f);
